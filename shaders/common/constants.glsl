@@ -1,0 +1,6 @@
+// Constants shared by several passes.
+const float PI = 3.14159265358979323846;
+
+// Material ids stored in the G-buffer (material.r * 255).
+const int MATERIAL_NONE = 0;    // nothing rendered: sky / space
+const int MATERIAL_GROUND = 1;  // solid planet surface

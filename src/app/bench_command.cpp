@@ -1,0 +1,154 @@
+// `planet bench`: scripted views, per-pass GPU and CPU timings.
+//
+// For each view: warm-up frames (not recorded), then N recorded frames. After
+// every frame the profiler waits for that frame's timer queries, so no sample
+// is dropped; GPU times are per pass from GL_TIMESTAMP pairs, CPU times the
+// wall time of each pass's command submission. Output: a table on stdout, a
+// CSV (one row per view and pass, plus a "frame" row), and a stacked bar plot
+// of the median GPU time per pass. Compare runs as ratios on the same machine.
+#include <algorithm>
+#include <cstdio>
+#include <iostream>
+#include <sstream>
+
+#include "app/commands.h"
+#include "app/session.h"
+#include "gl/context.h"
+#include "gl/debug.h"
+#include "render/plot.h"
+#include "render/renderer.h"
+#include "render/stats.h"
+#include "scene/toml_error.h"
+#include "util/file_util.h"
+#include "util/log.h"
+
+namespace planet {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+struct BenchRow {
+    std::string view, pass;
+    std::size_t frames = 0;
+    double gpuMedian = 0, gpuP95 = 0, cpuMedian = 0, cpuP95 = 0;
+};
+
+std::vector<View> benchViews(const std::vector<std::string>& inputs, const DataPaths& paths) {
+    std::vector<View> views;
+    const std::vector<std::string> sources = inputs.empty() ? std::vector<std::string>{paths.views().string()} : inputs;
+    for (const std::string& source : sources) {
+        if (fs::is_directory(source)) {
+            for (View& v : loadViews(source)) views.push_back(std::move(v));
+        } else {
+            std::vector<std::string> warnings;
+            views.push_back(loadView(source, &warnings));
+            for (const std::string& w : warnings) logWarning(w);
+        }
+    }
+    return views;
+}
+
+std::vector<BenchRow> measureView(Renderer& renderer, Session& session, glm::ivec2 size, const BenchOptions& o) {
+    Profiler& profiler = renderer.profiler();
+    profiler.setRecording(false);
+    for (int i = 0; i < o.warmup; ++i) {
+        renderer.render(session.scene, session.camera, size);
+        profiler.waitForResults();
+    }
+    profiler.clearRecordings();
+    profiler.setRecording(true);
+    for (int i = 0; i < o.frames; ++i) {
+        renderer.render(session.scene, session.camera, size);
+        profiler.waitForResults();
+    }
+    profiler.setRecording(false);
+
+    std::vector<BenchRow> rows;
+    std::vector<double> totalGpu(static_cast<std::size_t>(o.frames), 0.0), totalCpu = totalGpu;
+    for (const PassTimings& p : profiler.passes()) {
+        rows.push_back({session.view.name, p.name, p.recordedGpuMs.size(), percentile(p.recordedGpuMs, 50),
+                        percentile(p.recordedGpuMs, 95), percentile(p.recordedCpuMs, 50),
+                        percentile(p.recordedCpuMs, 95)});
+        for (std::size_t i = 0; i < totalGpu.size() && i < p.recordedGpuMs.size(); ++i) totalGpu[i] += p.recordedGpuMs[i];
+        for (std::size_t i = 0; i < totalCpu.size() && i < p.recordedCpuMs.size(); ++i) totalCpu[i] += p.recordedCpuMs[i];
+    }
+    rows.push_back({session.view.name, "frame", totalGpu.size(), percentile(totalGpu, 50), percentile(totalGpu, 95),
+                    percentile(totalCpu, 50), percentile(totalCpu, 95)});
+    return rows;
+}
+
+std::string csvText(const std::vector<BenchRow>& rows, const std::string& renderer, glm::ivec2 size) {
+    std::ostringstream csv;
+    csv << "renderer,width,height,view,pass,frames,gpu_median_ms,gpu_p95_ms,cpu_median_ms,cpu_p95_ms\n";
+    for (const BenchRow& r : rows) {
+        char line[512];
+        std::snprintf(line, sizeof line, "\"%s\",%d,%d,%s,%s,%zu,%.4f,%.4f,%.4f,%.4f\n", renderer.c_str(), size.x,
+                      size.y, r.view.c_str(), r.pass.c_str(), r.frames, r.gpuMedian, r.gpuP95, r.cpuMedian, r.cpuP95);
+        csv << line;
+    }
+    return csv.str();
+}
+
+void printTable(const std::vector<BenchRow>& rows) {
+    std::printf("%-12s %-12s %8s %12s %12s %12s %12s\n", "view", "pass", "frames", "gpu med ms", "gpu p95 ms",
+                "cpu med ms", "cpu p95 ms");
+    for (const BenchRow& r : rows)
+        std::printf("%-12s %-12s %8zu %12.3f %12.3f %12.3f %12.3f\n", r.view.c_str(), r.pass.c_str(), r.frames,
+                    r.gpuMedian, r.gpuP95, r.cpuMedian, r.cpuP95);
+}
+
+BarPlot gpuPlot(const std::vector<BenchRow>& rows, const std::string& renderer, glm::ivec2 size) {
+    BarPlot plot;
+    plot.title = "planet bench: median GPU time per pass, " + std::to_string(size.x) + "x" + std::to_string(size.y) +
+                 ", " + renderer;
+    plot.yLabel = "ms";
+    for (const BenchRow& r : rows) {
+        if (r.pass == "frame") continue;
+        if (plot.categories.empty() || plot.categories.back() != r.view) plot.categories.push_back(r.view);
+        auto it = std::find_if(plot.series.begin(), plot.series.end(), [&](const BarSeries& s) { return s.name == r.pass; });
+        if (it == plot.series.end()) it = plot.series.insert(plot.series.end(), BarSeries{r.pass, {}});
+        it->values.resize(plot.categories.size(), 0.0);
+        it->values.back() = r.gpuMedian;
+    }
+    for (BarSeries& s : plot.series) s.values.resize(plot.categories.size(), 0.0);
+    return plot;
+}
+
+}  // namespace
+
+int runBench(const BenchOptions& o) {
+    if (o.frames < 1 || o.frames > 100000) throw InputError("--frames must be in [1, 100000]");
+    if (o.warmup < 0 || o.warmup > 100000) throw InputError("--warmup must be in [0, 100000]");
+    const glm::ivec2 size = parseSize(o.common.size.empty() ? "1280x720" : o.common.size);
+    const DataPaths paths = findDataPaths(o.common.root);
+    Session session = loadSession(paths, o.common.preset, o.common.view);
+    const std::vector<View> views = benchViews(o.views, paths);
+
+    gl::HeadlessContext context(o.common.glDebug);
+    gl::DebugMessages messages;
+    if (o.common.glDebug) gl::installDebugOutput(&messages);
+    const std::string renderer = gl::rendererDescription();
+    std::printf("planet bench on %s via %s, %dx%d, %d frames after %d warm-up\n", renderer.c_str(),
+                context.platform().c_str(), size.x, size.y, o.frames, o.warmup);
+    Renderer frame(paths.shaders());
+
+    std::vector<BenchRow> rows;
+    for (const View& view : views) {
+        logInfo("bench view '" + view.name + "' (" + std::to_string(o.warmup + o.frames) + " frames)");
+        applyView(view, session);
+        for (BenchRow& r : measureView(frame, session, size, o)) rows.push_back(std::move(r));
+    }
+    printTable(rows);
+    if (!o.csv.empty()) {
+        writeFileAtomic(o.csv, csvText(rows, renderer, size));
+        std::printf("wrote %s\n", fs::absolute(o.csv).lexically_normal().c_str());
+    }
+    if (!o.plot.empty()) {
+        writePng(renderStackedBarPlot(gpuPlot(rows, renderer, size)), o.plot);
+        std::printf("wrote %s\n", fs::absolute(o.plot).lexically_normal().c_str());
+    }
+    return 0;
+}
+
+}  // namespace planet

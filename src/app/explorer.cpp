@@ -1,0 +1,286 @@
+// The explorer window (see explorer.h for the controls).
+//
+// Per frame: poll input -> camera controller -> Renderer::render (terrain,
+// lighting, tonemap) -> blit the display image to the window -> UI pass ->
+// swap. A minimised (0x0) window renders nothing and sleeps on events.
+#include "app/explorer.h"
+
+#include "gl/gl.h"  // before GLFW, so that GLFW does not pull in GL/gl.h
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+#include <imgui.h>
+#include <imgui_impl_glfw.h>
+#include <imgui_impl_opengl3.h>
+
+#include <chrono>
+#include <cstdlib>
+#include <iostream>
+#include <memory>
+
+#include "app/camera_controller.h"
+#include "app/panels.h"
+#include "app/session.h"
+#include "gl/context.h"
+#include "gl/debug.h"
+#include "render/image_io.h"
+#include "render/renderer.h"
+#include "scene/preset.h"
+#include "scene/toml_error.h"
+#include "util/log.h"
+
+namespace planet {
+
+namespace fs = std::filesystem;
+
+bool displayAvailable() {
+    const char* x11 = std::getenv("DISPLAY");
+    const char* wayland = std::getenv("WAYLAND_DISPLAY");
+    return (x11 && *x11) || (wayland && *wayland);
+}
+
+namespace {
+
+struct GlfwLibrary {
+    GlfwLibrary() {
+        glfwSetErrorCallback([](int code, const char* text) {
+            logError("GLFW error " + std::to_string(code) + ": " + text);
+        });
+        if (!glfwInit()) throw gl::ContextError("could not initialise GLFW (no usable display?)");
+    }
+    ~GlfwLibrary() { glfwTerminate(); }
+    GlfwLibrary(const GlfwLibrary&) = delete;
+    GlfwLibrary& operator=(const GlfwLibrary&) = delete;
+};
+
+struct WindowDeleter {
+    void operator()(GLFWwindow* w) const { glfwDestroyWindow(w); }
+};
+using WindowPtr = std::unique_ptr<GLFWwindow, WindowDeleter>;
+
+WindowPtr openWindow(glm::ivec2 size, bool debug) {
+    glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 4);
+    glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 5);
+    glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
+    glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
+    glfwWindowHint(GLFW_OPENGL_DEBUG_CONTEXT, debug ? GLFW_TRUE : GLFW_FALSE);
+    glfwWindowHint(GLFW_SRGB_CAPABLE, GLFW_FALSE);  // the tonemap pass writes encoded sRGB itself
+    WindowPtr window(glfwCreateWindow(size.x, size.y, "planet", nullptr, nullptr));
+    if (!window)
+        throw gl::ContextError("could not open a window with an OpenGL 4.5 core context; this display's driver "
+                               "does not offer one (see the GLFW error above)");
+    glfwMakeContextCurrent(window.get());
+    gl::requireGL45();
+    glfwSwapInterval(1);
+    return window;
+}
+
+struct ImGuiLayer {
+    explicit ImGuiLayer(GLFWwindow* window) {
+        IMGUI_CHECKVERSION();
+        ImGui::CreateContext();
+        ImGui::GetIO().IniFilename = nullptr;  // no imgui.ini written into the working folder
+        ImGui::StyleColorsDark();
+        ImGui_ImplGlfw_InitForOpenGL(window, true);
+        ImGui_ImplOpenGL3_Init("#version 450 core");
+    }
+    ~ImGuiLayer() {
+        ImGui_ImplOpenGL3_Shutdown();
+        ImGui_ImplGlfw_Shutdown();
+        ImGui::DestroyContext();
+    }
+    ImGuiLayer(const ImGuiLayer&) = delete;
+    ImGuiLayer& operator=(const ImGuiLayer&) = delete;
+};
+
+// Input gathered between frames; GLFW reports scroll through a callback.
+struct PendingInput {
+    double scroll = 0.0;
+    glm::dvec2 lastCursor{0.0};
+    bool haveCursor = false;
+    std::vector<int> keys;  // presses since the last frame
+};
+
+ControlInput pollControls(GLFWwindow* window, PendingInput& pending) {
+    ControlInput in;
+    const ImGuiIO& io = ImGui::GetIO();
+    glm::dvec2 cursor;
+    glfwGetCursorPos(window, &cursor.x, &cursor.y);
+    const glm::dvec2 delta = pending.haveCursor ? cursor - pending.lastCursor : glm::dvec2(0.0);
+    pending.lastCursor = cursor;
+    pending.haveCursor = true;
+    if (!io.WantCaptureKeyboard) {
+        auto down = [&](int key) { return glfwGetKey(window, key) == GLFW_PRESS; };
+        in.forward = down(GLFW_KEY_W);
+        in.back = down(GLFW_KEY_S);
+        in.left = down(GLFW_KEY_A);
+        in.right = down(GLFW_KEY_D);
+        in.up = down(GLFW_KEY_E);
+        in.down = down(GLFW_KEY_Q);
+        in.fast = down(GLFW_KEY_LEFT_SHIFT) || down(GLFW_KEY_RIGHT_SHIFT);
+        in.slow = down(GLFW_KEY_LEFT_CONTROL) || down(GLFW_KEY_RIGHT_CONTROL);
+    }
+    if (!io.WantCaptureMouse) {
+        if (glfwGetMouseButton(window, GLFW_MOUSE_BUTTON_RIGHT) == GLFW_PRESS) {
+            in.lookDx = delta.x;
+            in.lookDy = delta.y;
+        }
+        if (glfwGetMouseButton(window, GLFW_MOUSE_BUTTON_LEFT) == GLFW_PRESS) {
+            in.orbitDx = delta.x;
+            in.orbitDy = delta.y;
+        }
+        in.scroll = pending.scroll;
+    }
+    pending.scroll = 0.0;
+    return in;
+}
+
+class Explorer {
+public:
+    Explorer(const ExploreOptions& options, GLFWwindow* window, const DataPaths& paths, Session session)
+        : options_(options), window_(window), session_(std::move(session)), renderer_(paths.shaders()),
+          rendererName_(gl::rendererDescription()), presetPath_(session_.presetPath.string()) {
+        glfwSetWindowUserPointer(window_, &pending_);
+        glfwSetScrollCallback(window_, [](GLFWwindow* w, double, double dy) {
+            static_cast<PendingInput*>(glfwGetWindowUserPointer(w))->scroll += dy;
+        });
+        glfwSetKeyCallback(window_, [](GLFWwindow* w, int key, int, int action, int) {
+            if (action == GLFW_PRESS) static_cast<PendingInput*>(glfwGetWindowUserPointer(w))->keys.push_back(key);
+        });
+    }
+
+    void run();
+
+private:
+    void handleKeys();
+    void drawUi();
+    void savePreset();
+    void pollShaders();
+
+    const ExploreOptions& options_;
+    GLFWwindow* window_;
+    Session session_;
+    Renderer renderer_;
+    CameraController controller_;
+    std::string rendererName_;
+    std::string presetPath_;
+    std::string status_;
+    bool showUi_ = true;
+    bool screenshotRequested_ = false;
+    PendingInput pending_;
+    std::chrono::steady_clock::time_point lastShaderPoll_{};
+};
+
+void Explorer::handleKeys() {
+    const bool typing = ImGui::GetIO().WantCaptureKeyboard;
+    for (int key : pending_.keys) {
+        if (key == GLFW_KEY_ESCAPE) glfwSetWindowShouldClose(window_, GLFW_TRUE);
+        if (key == GLFW_KEY_F1) showUi_ = !showUi_;
+        if (key == GLFW_KEY_F5) renderer_.reloadShaders(true);
+        if (key == GLFW_KEY_F12) screenshotRequested_ = true;
+        if (typing) continue;
+        if (key == GLFW_KEY_TAB)
+            controller_.mode = controller_.mode == CameraMode::Fly ? CameraMode::Orbit : CameraMode::Fly;
+        const int index = key - GLFW_KEY_1;
+        if (index >= 0 && index < 9 && index < static_cast<int>(session_.views.size()))
+            applyView(session_.views[static_cast<std::size_t>(index)], session_);
+    }
+    pending_.keys.clear();
+}
+
+void Explorer::pollShaders() {
+    const auto now = std::chrono::steady_clock::now();
+    if (now - lastShaderPoll_ < std::chrono::milliseconds(500)) return;
+    lastShaderPoll_ = now;
+    if (renderer_.reloadShaders()) logInfo("shaders reloaded");
+}
+
+void Explorer::savePreset() {
+    try {
+        planet::savePreset(session_.scene, presetPath_, session_.presetName, "saved from the explorer");
+        status_ = "saved " + presetPath_;
+    } catch (const std::exception& e) {
+        status_ = std::string("not saved: ") + e.what();
+    }
+    logInfo(status_);
+}
+
+void Explorer::drawUi() {
+    ImGui_ImplOpenGL3_NewFrame();
+    ImGui_ImplGlfw_NewFrame();
+    ImGui::NewFrame();
+    if (showUi_) {
+        drawProfilerPanel(renderer_.profiler(), rendererName_);
+        drawSceneParams(session_.scene);
+        const CameraPanelResult r = drawCameraPanel(session_.camera, controller_, session_.scene.planetRadiusM(),
+                                                    session_.views, presetPath_, status_);
+        if (r.jumpToView >= 0) applyView(session_.views[static_cast<std::size_t>(r.jumpToView)], session_);
+        if (r.savePreset) savePreset();
+    }
+    drawShaderErrors(renderer_.shaderErrors());
+    ImGui::Render();
+    ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+}
+
+void Explorer::run() {
+    auto last = std::chrono::steady_clock::now();
+    for (int frame = 0; !glfwWindowShouldClose(window_); ++frame) {
+        glfwPollEvents();
+        glm::ivec2 size;
+        glfwGetFramebufferSize(window_, &size.x, &size.y);
+        if (size.x <= 0 || size.y <= 0) {  // minimised: nothing to draw, wait for the window to come back
+            glfwWaitEventsTimeout(0.25);
+            last = std::chrono::steady_clock::now();
+            continue;
+        }
+        const auto now = std::chrono::steady_clock::now();
+        const double dt = std::chrono::duration<double>(now - last).count();
+        last = now;
+
+        pollShaders();
+        handleKeys();
+        controller_.update(session_.camera, pollControls(window_, pending_), dt, session_.scene.planetRadiusM());
+        renderer_.render(session_.scene, session_.camera, size, [&] {
+            glBlitNamedFramebuffer(renderer_.targets().ldrFramebuffer(), 0, 0, 0, size.x, size.y, 0, 0, size.x,
+                                   size.y, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+            glBindFramebuffer(GL_FRAMEBUFFER, 0);
+            glViewport(0, 0, size.x, size.y);
+            drawUi();
+        });
+        const bool lastFrame = options_.frames > 0 && frame + 1 >= options_.frames;
+        if (screenshotRequested_ || (lastFrame && !options_.screenshot.empty())) {
+            const std::string path = options_.screenshot.empty() ? "out/screenshot.png" : options_.screenshot;
+            writePng(readFramebufferRGBA8(0, size.x, size.y), path);
+            std::cout << "wrote " << fs::absolute(path).lexically_normal().string() << std::endl;
+            screenshotRequested_ = false;
+        }
+        glfwSwapBuffers(window_);
+        if (lastFrame) break;
+    }
+}
+
+}  // namespace
+
+int runExplore(const ExploreOptions& options) {
+    if (options.frames < 0) throw InputError("--frames must be >= 0");
+    if (!displayAvailable()) {
+        std::cout << "No display found (DISPLAY and WAYLAND_DISPLAY are unset): rendering a still instead."
+                  << std::endl;
+        renderStill(options.common, {options.headlessOut}, std::nullopt, "1280x720");
+        return 0;
+    }
+    const DataPaths paths = findDataPaths(options.common.root);
+    Session session = loadSession(paths, options.common.preset, options.common.view);
+    const glm::ivec2 size = parseSize(options.common.size.empty() ? "1280x720" : options.common.size);
+
+    GlfwLibrary glfw;
+    WindowPtr window = openWindow(size, options.common.glDebug);
+    gl::DebugMessages messages;
+    if (options.common.glDebug) gl::installDebugOutput(&messages);
+    logInfo("OpenGL: " + gl::rendererDescription());
+    Explorer explorer(options, window.get(), paths, std::move(session));  // installs callbacks before ImGui chains them
+    ImGuiLayer imgui(window.get());
+    explorer.run();
+    return 0;
+}
+
+}  // namespace planet

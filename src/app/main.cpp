@@ -1,0 +1,76 @@
+// planet: command-line front end (CLI11). See README.md for every command.
+#include <CLI/CLI.hpp>
+
+#include <iostream>
+
+#include "app/commands.h"
+#include "gl/context.h"
+#include "gl/shader_source.h"
+#include "scene/toml_error.h"
+#include "util/file_util.h"
+
+namespace {
+
+void addCommon(CLI::App& cmd, planet::CommonOptions& o, const char* defaultSize) {
+    cmd.add_option("--root", o.root, "Data folder holding shaders/ and assets/ (default: PLANET_ROOT or the source tree)");
+    cmd.add_option("--preset", o.preset, "Preset name under assets/presets/ or a path to a .toml file")
+        ->capture_default_str();
+    cmd.add_option("--view", o.view, "View bookmark name under assets/views/ (ground, beach, clouds, orbit, space, ...)")
+        ->capture_default_str();
+    cmd.add_option("--size", o.size, std::string("Image size WIDTHxHEIGHT (default ") + defaultSize + ")");
+    cmd.add_flag("--gl-debug", o.glDebug, "Route KHR_debug driver messages to the log (synchronous)");
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    CLI::App app{"planet " PLANET_VERSION ": real-time procedural planets on OpenGL 4.5.\n"
+                 "Run with no command to open the explorer (or render a still when there is no display)."};
+    app.set_version_flag("--version", std::string("planet ") + PLANET_VERSION);
+
+    planet::ExploreOptions explore;
+    CLI::App* exploreCmd = app.add_subcommand("explore", "Interactive window: fly from the ground to space, tune "
+                                                         "parameters, see per-pass frame time (the default)");
+    addCommon(*exploreCmd, explore.common, "1280x720");
+    exploreCmd->add_option("--frames", explore.frames, "Quit after this many frames (0: run until closed)");
+    exploreCmd->add_option("--screenshot", explore.screenshot, "Write a PNG of the window, panels included, at the end");
+    exploreCmd->add_option("--headless-out", explore.headlessOut, "Where the still goes when there is no display")
+        ->capture_default_str();
+
+    planet::RenderOptions render;
+    CLI::App* renderCmd = app.add_subcommand("render", "Render a still headlessly (EGL) to PNG and/or OpenEXR");
+    addCommon(*renderCmd, render.common, "1280x720");
+    renderCmd->add_option("--out,-o", render.outputs,
+                          "Output file(s): .png = tone-mapped sRGB, .exr = linear HDR radiance (half RGBA)")
+        ->required();
+    renderCmd->add_option("--exposure", render.exposure, "Override the preset's exposure");
+
+    planet::BenchOptions bench;
+    CLI::App* benchCmd = app.add_subcommand("bench", "Time each pass over scripted views; table, CSV and plot");
+    addCommon(*benchCmd, bench.common, "1280x720");
+    benchCmd->add_option("--views", bench.views, "View files or folders of them (default: assets/views)");
+    benchCmd->add_option("--frames", bench.frames, "Recorded frames per view")->capture_default_str();
+    benchCmd->add_option("--warmup", bench.warmup, "Unrecorded frames per view before recording")->capture_default_str();
+    benchCmd->add_option("--csv", bench.csv, "CSV output (empty: none)")->capture_default_str();
+    benchCmd->add_option("--plot", bench.plot, "Plot PNG output (empty: none)")->capture_default_str();
+
+    app.require_subcommand(0, 1);
+    CLI11_PARSE(app, argc, argv);
+
+    try {
+        if (renderCmd->parsed()) return planet::runRender(render);
+        if (benchCmd->parsed()) return planet::runBench(bench);
+        return planet::runExplore(explore);
+    } catch (const planet::InputError& e) {
+        std::cerr << "planet: error: " << e.what() << "\n";
+    } catch (const planet::FileError& e) {
+        std::cerr << "planet: error: " << e.what() << "\n";
+    } catch (const planet::gl::ContextError& e) {
+        std::cerr << "planet: error: " << e.what() << "\n";
+    } catch (const planet::gl::ShaderError& e) {
+        std::cerr << "planet: shader error: " << e.what() << "\n";
+    } catch (const std::exception& e) {
+        std::cerr << "planet: unexpected error: " << e.what() << "\n";
+    }
+    return 1;
+}

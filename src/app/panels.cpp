@@ -1,0 +1,167 @@
+#include "app/panels.h"
+
+#include <imgui.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include "scene/scene_params.h"
+
+namespace planet {
+
+namespace {
+
+void statsRow(const char* name, const RollingStats& gpu, const RollingStats& cpu) {
+    ImGui::TableNextRow();
+    ImGui::TableNextColumn();
+    ImGui::TextUnformatted(name);
+    for (const RollingStats* s : {&gpu, &cpu}) {
+        for (double v : {s->min(), s->median(), s->max()}) {
+            ImGui::TableNextColumn();
+            if (std::isnan(v)) ImGui::TextDisabled("-");
+            else ImGui::Text("%.3f", v);
+        }
+    }
+}
+
+void historyGraph(const char* label, const RollingStats& stats) {
+    const std::vector<double> history = stats.history();
+    std::vector<float> values(history.begin(), history.end());
+    const float top = values.empty() ? 1.0f : *std::max_element(values.begin(), values.end()) * 1.2f;
+    char overlay[64];
+    std::snprintf(overlay, sizeof overlay, "%s  median %.2f ms", label, stats.median());
+    ImGui::PlotLines("##graph", values.data(), static_cast<int>(values.size()), 0, overlay, 0.0f, std::max(top, 0.1f),
+                     ImVec2(-1.0f, 70.0f));
+}
+
+bool paramWidget(const ParamSpec& spec, Scene& scene) {
+    const std::string label = spec.key + (spec.unit.empty() ? "" : " [" + spec.unit + "]");
+    const ParamRef ref = spec.field(scene);
+    bool changed = false;
+    if (auto* d = std::get_if<double*>(&ref)) {
+        const float speed = static_cast<float>((spec.max - spec.min) * 1e-3);
+        changed = ImGui::DragScalar(label.c_str(), ImGuiDataType_Double, *d, speed, &spec.min, &spec.max, "%.6g",
+                                    ImGuiSliderFlags_AlwaysClamp);
+    } else if (auto* i = std::get_if<int*>(&ref)) {
+        changed = ImGui::SliderInt(label.c_str(), *i, static_cast<int>(spec.min), static_cast<int>(spec.max));
+    } else if (auto* v = std::get_if<glm::dvec3*>(&ref)) {
+        if (spec.min == 0.0 && spec.max == 1.0) {
+            float c[3] = {float((**v).x), float((**v).y), float((**v).z)};
+            changed = ImGui::ColorEdit3(label.c_str(), c, ImGuiColorEditFlags_Float);
+            if (changed) **v = glm::clamp(glm::dvec3(c[0], c[1], c[2]), 0.0, 1.0);
+        } else {
+            const float speed = static_cast<float>((spec.max - spec.min) * 1e-3);
+            changed = ImGui::DragScalarN(label.c_str(), ImGuiDataType_Double, &(**v).x, 3, speed, &spec.min,
+                                         &spec.max, "%.5g", ImGuiSliderFlags_AlwaysClamp);
+        }
+    } else if (auto* b = std::get_if<bool*>(&ref)) {
+        changed = ImGui::Checkbox(label.c_str(), *b);
+    }
+    if (ImGui::IsItemHovered() && !spec.help.empty()) ImGui::SetTooltip("%s", spec.help.c_str());
+    return changed;
+}
+
+}  // namespace
+
+void drawProfilerPanel(const Profiler& profiler, const std::string& renderer) {
+    ImGui::SetNextWindowPos(ImVec2(10, 10), ImGuiCond_FirstUseEver);
+    ImGui::SetNextWindowSize(ImVec2(430, 0), ImGuiCond_FirstUseEver);
+    if (!ImGui::Begin("Frame time")) return ImGui::End();
+    const double cpu = profiler.frameCpuMs().median();
+    ImGui::Text("%.1f FPS   frame CPU %.2f ms   GPU %.2f ms", ImGui::GetIO().Framerate, cpu,
+                profiler.frameGpuMs().median());
+    ImGui::TextDisabled("%s", renderer.c_str());
+    historyGraph("GPU", profiler.frameGpuMs());
+    if (ImGui::BeginTable("passes", 7, ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingFixedFit)) {
+        for (const char* h : {"pass", "GPU min", "med", "max", "CPU min", "med", "max"}) ImGui::TableSetupColumn(h);
+        ImGui::TableHeadersRow();
+        for (const PassTimings& p : profiler.passes()) statsRow(p.name.c_str(), p.gpuMs, p.cpuMs);
+        statsRow("frame", profiler.frameGpuMs(), profiler.frameCpuMs());
+        ImGui::EndTable();
+    }
+    if (profiler.droppedFrames() > 0)
+        ImGui::TextDisabled("%lld frames without GPU timings (GPU too far behind)", profiler.droppedFrames());
+    ImGui::End();
+}
+
+bool drawSceneParams(Scene& scene) {
+    ImGui::SetNextWindowPos(ImVec2(10, 330), ImGuiCond_FirstUseEver);
+    ImGui::SetNextWindowSize(ImVec2(430, 0), ImGuiCond_FirstUseEver);
+    bool changed = false;
+    if (!ImGui::Begin("Scene")) {
+        ImGui::End();
+        return false;
+    }
+    std::string section;
+    bool open = false;
+    for (const ParamSpec& spec : sceneParams()) {
+        if (spec.section != section) {
+            section = spec.section;
+            open = ImGui::CollapsingHeader(section.c_str(), ImGuiTreeNodeFlags_DefaultOpen);
+        }
+        if (!open) continue;
+        ImGui::PushID(spec.path().c_str());
+        changed = paramWidget(spec, scene) || changed;
+        ImGui::PopID();
+    }
+    ImGui::End();
+    return changed;
+}
+
+CameraPanelResult drawCameraPanel(const Camera& camera, CameraController& controller, double planetRadiusM,
+                                  const std::vector<View>& views, std::string& presetPath, const std::string& status) {
+    CameraPanelResult result;
+    const ImVec2 display = ImGui::GetIO().DisplaySize;
+    ImGui::SetNextWindowPos(ImVec2(display.x - 330, 10), ImGuiCond_FirstUseEver);
+    ImGui::SetNextWindowSize(ImVec2(320, 0), ImGuiCond_FirstUseEver);
+    if (!ImGui::Begin("Camera")) {
+        ImGui::End();
+        return result;
+    }
+    const double altitude = camera.altitude(planetRadiusM);
+    const glm::dvec3 up = glm::normalize(camera.position);
+    ImGui::Text("altitude %.3f %s", altitude >= 1e4 ? altitude / 1e3 : altitude, altitude >= 1e4 ? "km" : "m");
+    ImGui::Text("lat %.4f  lon %.4f", glm::degrees(std::asin(glm::clamp(up.z, -1.0, 1.0))),
+                glm::degrees(std::atan2(up.y, up.x)));
+    int mode = controller.mode == CameraMode::Fly ? 0 : 1;
+    if (ImGui::RadioButton("fly", mode == 0)) controller.mode = CameraMode::Fly;
+    ImGui::SameLine();
+    if (ImGui::RadioButton("orbit", mode == 1)) controller.mode = CameraMode::Orbit;
+    ImGui::SameLine();
+    ImGui::TextDisabled("(Tab)");
+    float speed = static_cast<float>(controller.speedScale);
+    if (ImGui::SliderFloat("speed", &speed, 1e-3f, 1e3f, "%.3g", ImGuiSliderFlags_Logarithmic))
+        controller.speedScale = speed;
+    ImGui::Separator();
+    ImGui::TextUnformatted("Views (keys 1-9)");
+    for (std::size_t i = 0; i < views.size(); ++i) {
+        if (i % 4 != 0) ImGui::SameLine();
+        if (ImGui::Button(views[i].name.c_str())) result.jumpToView = static_cast<int>(i);
+        if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", views[i].description.c_str());
+    }
+    ImGui::Separator();
+    char buffer[512];
+    std::snprintf(buffer, sizeof buffer, "%s", presetPath.c_str());
+    if (ImGui::InputText("##preset", buffer, sizeof buffer)) presetPath = buffer;
+    ImGui::SameLine();
+    result.savePreset = ImGui::Button("Save preset");
+    if (!status.empty()) ImGui::TextWrapped("%s", status.c_str());
+    ImGui::End();
+    return result;
+}
+
+void drawShaderErrors(const std::vector<std::string>& errors) {
+    if (errors.empty()) return;
+    const ImVec2 display = ImGui::GetIO().DisplaySize;
+    ImGui::SetNextWindowPos(ImVec2(display.x * 0.5f, display.y - 10), ImGuiCond_Always, ImVec2(0.5f, 1.0f));
+    ImGui::SetNextWindowSize(ImVec2(display.x * 0.8f, 0), ImGuiCond_Always);
+    ImGui::PushStyleColor(ImGuiCol_WindowBg, ImVec4(0.35f, 0.02f, 0.02f, 0.92f));
+    ImGui::Begin("Shader error (last good program still in use)", nullptr,
+                 ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoSavedSettings);
+    for (const std::string& e : errors) ImGui::TextWrapped("%s", e.c_str());
+    ImGui::End();
+    ImGui::PopStyleColor();
+}
+
+}  // namespace planet

@@ -1,0 +1,32 @@
+// Dear ImGui panels of the explorer. Each function draws one window from the
+// state it is given and reports what the user changed; none owns state.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "app/camera_controller.h"
+#include "app/views.h"
+#include "render/profiler.h"
+#include "scene/scene.h"
+
+namespace planet {
+
+// Frame time: FPS, frame GPU/CPU graph, and a per-pass min/median/max table.
+void drawProfilerPanel(const Profiler& profiler, const std::string& renderer);
+
+// One widget per row of the parameter table, grouped by section. Returns true
+// when a value changed (already clamped to its valid range).
+bool drawSceneParams(Scene& scene);
+
+struct CameraPanelResult {
+    int jumpToView = -1;   // index into views, or -1
+    bool savePreset = false;
+};
+CameraPanelResult drawCameraPanel(const Camera& camera, CameraController& controller, double planetRadiusM,
+                                  const std::vector<View>& views, std::string& presetPath, const std::string& status);
+
+// Shader compile errors from hot reload, in a red window; nothing when empty.
+void drawShaderErrors(const std::vector<std::string>& errors);
+
+}  // namespace planet

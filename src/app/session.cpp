@@ -1,0 +1,59 @@
+#include "app/session.h"
+
+#include <cstdlib>
+#include <regex>
+
+#include "scene/preset.h"
+#include "scene/toml_error.h"
+#include "util/log.h"
+
+namespace planet {
+
+namespace fs = std::filesystem;
+
+DataPaths findDataPaths(const std::string& rootOption) {
+    fs::path root = rootOption;
+    if (root.empty()) {
+        const char* env = std::getenv("PLANET_ROOT");
+        root = env && *env ? fs::path(env) : fs::path(PLANET_SOURCE_DIR);
+    }
+    DataPaths paths{root};
+    if (!fs::is_directory(paths.shaders()) || !fs::is_directory(paths.assets())) {
+        InputError e("data folder '" + root.string() + "' has no shaders/ and assets/ (set --root or PLANET_ROOT)");
+        throw e;
+    }
+    return paths;
+}
+
+void applyView(const View& view, Session& session) {
+    session.view = view;
+    applyViewSun(view, session.scene);
+    session.camera = cameraAtGeographic(view.latitude_deg, view.longitude_deg, view.altitude_m, view.heading_deg,
+                                        view.pitch_deg, view.fov_deg, session.scene.planetRadiusM());
+    const std::string fix = sanitizeCamera(session.camera, session.scene.planetRadiusM());
+    if (!fix.empty()) logWarning("view '" + view.name + "': " + fix);
+}
+
+Session loadSession(const DataPaths& paths, const std::string& preset, const std::string& viewName) {
+    Session s;
+    s.presetPath = resolvePreset(preset, paths.assets());
+    PresetLoad load = loadPreset(s.presetPath);
+    for (const std::string& w : load.warnings) logWarning(w);
+    s.scene = load.scene;
+    s.presetName = s.presetPath.stem().string();
+    s.views = loadViews(paths.views());
+    applyView(findView(s.views, viewName), s);
+    return s;
+}
+
+glm::ivec2 parseSize(const std::string& text) {
+    static const std::regex re(R"(^\s*(\d{1,5})\s*[xX]\s*(\d{1,5})\s*$)");
+    std::smatch m;
+    if (std::regex_match(text, m, re)) {
+        const glm::ivec2 size(std::stoi(m[1]), std::stoi(m[2]));
+        if (size.x >= 1 && size.y >= 1 && size.x <= 16384 && size.y <= 16384) return size;
+    }
+    throw InputError("--size '" + text + "': expected WIDTHxHEIGHT with each side in [1, 16384], e.g. 640x360");
+}
+
+}  // namespace planet

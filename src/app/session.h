@@ -1,0 +1,48 @@
+// What every command starts from: where the data lives, the preset, the view.
+//
+// The data root (holding shaders/ and assets/) is, in order: --root, the
+// PLANET_ROOT environment variable, the source folder the binary was built from.
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "app/camera.h"
+#include "app/views.h"
+#include "scene/scene.h"
+
+namespace planet {
+
+struct DataPaths {
+    std::filesystem::path root;
+    std::filesystem::path shaders() const { return root / "shaders"; }
+    std::filesystem::path assets() const { return root / "assets"; }
+    std::filesystem::path views() const { return root / "assets" / "views"; }
+};
+
+// Throws InputError when the folder has no shaders/ and assets/.
+DataPaths findDataPaths(const std::string& rootOption);
+
+struct Session {
+    Scene scene;
+    std::string presetName;
+    std::filesystem::path presetPath;
+    std::vector<View> views;
+    View view;
+    Camera camera;
+};
+
+// Loads the preset (warnings go to the log) and the view bookmarks, picks the
+// view, places the sun and the camera. Throws InputError naming file, line, field.
+Session loadSession(const DataPaths& paths, const std::string& preset, const std::string& viewName);
+
+// Puts the camera (and the sun, when the view places it) where a view says.
+void applyView(const View& view, Session& session);
+
+// "640x360" -> {640, 360}; throws InputError for anything else or sides outside [1, 16384].
+glm::ivec2 parseSize(const std::string& text);
+
+}  // namespace planet

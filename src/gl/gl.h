@@ -1,0 +1,5 @@
+// The one place that includes the GL API (libepoxy resolves entry points for
+// whichever context is current: GLX/EGL).
+#pragma once
+
+#include <epoxy/gl.h>

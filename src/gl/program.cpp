@@ -1,0 +1,91 @@
+#include "gl/program.h"
+
+#include <system_error>
+
+namespace planet::gl {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+GLenum stageEnum(const std::string& stage) {
+    if (stage == "vert") return GL_VERTEX_SHADER;
+    if (stage == "tesc") return GL_TESS_CONTROL_SHADER;
+    if (stage == "tese") return GL_TESS_EVALUATION_SHADER;
+    if (stage == "geom") return GL_GEOMETRY_SHADER;
+    if (stage == "frag") return GL_FRAGMENT_SHADER;
+    if (stage == "comp") return GL_COMPUTE_SHADER;
+    return 0;
+}
+
+std::string infoLog(GLuint object, bool isProgram) {
+    GLint length = 0;
+    isProgram ? glGetProgramiv(object, GL_INFO_LOG_LENGTH, &length) : glGetShaderiv(object, GL_INFO_LOG_LENGTH, &length);
+    std::string log(static_cast<std::size_t>(std::max(length, 1)), '\0');
+    isProgram ? glGetProgramInfoLog(object, length, nullptr, log.data())
+              : glGetShaderInfoLog(object, length, nullptr, log.data());
+    log.resize(log.find('\0') == std::string::npos ? log.size() : log.find('\0'));
+    return log;
+}
+
+Shader compileStage(const ShaderSources& sources, const std::string& file, std::vector<std::string>& files) {
+    const GLenum stage = stageEnum(shaderStageName(file));
+    if (stage == 0) throw ShaderError(file + ": unknown shader stage (use .vert .tesc .tese .geom .frag .comp)");
+    const ExpandedShader expanded = expandShader(sources.root, file, sources.preamble);
+    files.insert(files.end(), expanded.files.begin(), expanded.files.end());
+    Shader shader(stage);
+    const char* text = expanded.text.c_str();
+    glShaderSource(shader.id(), 1, &text, nullptr);
+    glCompileShader(shader.id());
+    GLint ok = GL_FALSE;
+    glGetShaderiv(shader.id(), GL_COMPILE_STATUS, &ok);
+    if (!ok) throw ShaderError("compiling " + file + ":\n" + translateShaderLog(infoLog(shader.id(), false), expanded.files));
+    shader.label(file);
+    return shader;
+}
+
+}  // namespace
+
+Program buildProgram(const ShaderSources& sources, const ProgramDesc& desc) {
+    Program program;
+    std::vector<Shader> shaders;
+    for (const std::string& file : desc.stages) shaders.push_back(compileStage(sources, file, program.files));
+    for (const Shader& s : shaders) glAttachShader(program.id(), s.id());
+    glLinkProgram(program.id());
+    for (const Shader& s : shaders) glDetachShader(program.id(), s.id());
+    GLint ok = GL_FALSE;
+    glGetProgramiv(program.id(), GL_LINK_STATUS, &ok);
+    if (!ok) throw ShaderError("linking program '" + desc.name + "':\n" + infoLog(program.id(), true));
+    program.object.label(desc.name);
+    return program;
+}
+
+HotProgram::HotProgram(const ShaderSources& sources, ProgramDesc desc)
+    : sources_(sources), desc_(std::move(desc)), program_(buildProgram(sources_, desc_)), builtFrom_(newestTime()) {}
+
+fs::file_time_type HotProgram::newestTime() const {
+    auto newest = fs::file_time_type::min();  // file_clock's epoch is in the future on libstdc++
+    for (const std::string& f : program_.files) {
+        std::error_code ec;
+        const auto t = fs::last_write_time(sources_.root / f, ec);
+        if (!ec && t > newest) newest = t;
+    }
+    return newest;
+}
+
+bool HotProgram::reloadIfChanged(bool force) {
+    const auto newest = newestTime();
+    if (!force && newest == builtFrom_) return false;
+    builtFrom_ = newest;  // a broken edit is reported once, not every poll
+    try {
+        program_ = buildProgram(sources_, desc_);
+        builtFrom_ = newestTime();
+        error_.clear();
+        return true;
+    } catch (const ShaderError& e) {
+        error_ = e.what();
+        return false;
+    }
+}
+
+}  // namespace planet::gl

@@ -1,0 +1,37 @@
+// Reading frames back from GL and writing them to disk.
+//
+// PNG: the display-ready RGBA8 image (tone-mapped sRGB bytes), via stb.
+// OpenEXR: linear HDR radiance as half-float RGBA, via OpenEXR 3; the exposure
+// used for display is stored in the header ("planetExposure") so a viewer can
+// reproduce the PNG. Both are written atomically (writeFileAtomic): an
+// interrupted run never leaves a half-written image.
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <vector>
+
+#include "gl/handle.h"
+
+namespace planet {
+
+struct ImageRGBA8 {
+    int width = 0, height = 0;
+    std::vector<std::uint8_t> pixels;  // row 0 = top
+};
+
+struct ImageRGBAF {
+    int width = 0, height = 0;
+    std::vector<float> pixels;  // row 0 = top, 4 floats per pixel
+};
+
+ImageRGBA8 readTextureRGBA8(const gl::Texture& texture, int width, int height);
+ImageRGBAF readTextureRGBAF(const gl::Texture& texture, int width, int height);
+// Colour of a framebuffer (0: the window's back buffer).
+ImageRGBA8 readFramebufferRGBA8(GLuint framebuffer, int width, int height);
+
+void writePng(const ImageRGBA8& image, const std::filesystem::path& path);
+void writeExr(const ImageRGBAF& image, const std::filesystem::path& path, double exposure);
+ImageRGBAF readExr(const std::filesystem::path& path);  // throws FileError on a missing or corrupt file
+
+}  // namespace planet

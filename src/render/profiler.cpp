@@ -1,0 +1,106 @@
+#include "render/profiler.h"
+
+namespace planet {
+
+namespace {
+double msSince(std::chrono::steady_clock::time_point start) {
+    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+}
+}  // namespace
+
+Profiler::Scope::Scope(Profiler& profiler, int pass)
+    : profiler_(profiler), pass_(pass), start_(std::chrono::steady_clock::now()) {
+    FrameSlot& slot = profiler_.slots_[static_cast<std::size_t>(profiler_.current_)];
+    if (slot.used == slot.samples.size()) slot.samples.emplace_back();
+    slot.samples[slot.used].pass = pass;
+    glQueryCounter(slot.samples[slot.used].begin.id(), GL_TIMESTAMP);
+}
+
+Profiler::Scope::~Scope() {
+    FrameSlot& slot = profiler_.slots_[static_cast<std::size_t>(profiler_.current_)];
+    glQueryCounter(slot.samples[slot.used].end.id(), GL_TIMESTAMP);
+    slot.used++;
+    profiler_.addCpu(pass_, msSince(start_));
+}
+
+Profiler::Profiler() = default;
+
+int Profiler::passIndex(std::string_view name) {
+    for (std::size_t i = 0; i < passes_.size(); ++i)
+        if (passes_[i].name == name) return static_cast<int>(i);
+    passes_.emplace_back();
+    passes_.back().name = std::string(name);
+    return static_cast<int>(passes_.size()) - 1;
+}
+
+Profiler::Scope Profiler::pass(std::string_view name) { return Scope(*this, passIndex(name)); }
+
+void Profiler::addCpu(int pass, double ms) {
+    PassTimings& p = passes_[static_cast<std::size_t>(pass)];
+    p.cpuMs.push(ms);
+    if (recording_) p.recordedCpuMs.push_back(ms);
+}
+
+void Profiler::beginFrame() {
+    // Read every older frame whose results are in, oldest first.
+    for (int i = 1; i <= kFramesInFlight; ++i) {
+        FrameSlot& slot = slots_[static_cast<std::size_t>((current_ + i) % kFramesInFlight)];
+        if (slot.pending) collect(slot, false);
+    }
+    current_ = static_cast<int>(frameIndex_ % kFramesInFlight);
+    FrameSlot& slot = slots_[static_cast<std::size_t>(current_)];
+    if (slot.pending) {  // the GPU is kFramesInFlight frames behind: drop, never wait
+        slot.pending = false;
+        droppedFrames_++;
+    }
+    slot.used = 0;
+    inFrame_ = true;
+    frameStart_ = std::chrono::steady_clock::now();
+}
+
+void Profiler::endFrame() {
+    if (!inFrame_) return;
+    inFrame_ = false;
+    FrameSlot& slot = slots_[static_cast<std::size_t>(current_)];
+    slot.pending = slot.used > 0;
+    frameCpuMs_.push(msSince(frameStart_));
+    frameIndex_++;
+}
+
+void Profiler::collect(FrameSlot& slot, bool block) {
+    if (!slot.pending || slot.used == 0) return;
+    if (!block) {
+        GLint available = GL_FALSE;
+        glGetQueryObjectiv(slot.samples[slot.used - 1].end.id(), GL_QUERY_RESULT_AVAILABLE, &available);
+        if (!available) return;  // later queries finish later: if the last is ready, all are
+    }
+    double frameMs = 0.0;
+    for (std::size_t i = 0; i < slot.used; ++i) {
+        GLuint64 t0 = 0, t1 = 0;
+        glGetQueryObjectui64v(slot.samples[i].begin.id(), GL_QUERY_RESULT, &t0);
+        glGetQueryObjectui64v(slot.samples[i].end.id(), GL_QUERY_RESULT, &t1);
+        const double ms = t1 > t0 ? static_cast<double>(t1 - t0) * 1e-6 : 0.0;
+        PassTimings& p = passes_[static_cast<std::size_t>(slot.samples[i].pass)];
+        p.gpuMs.push(ms);
+        if (recording_) p.recordedGpuMs.push_back(ms);
+        frameMs += ms;
+    }
+    frameGpuMs_.push(frameMs);
+    slot.pending = false;
+}
+
+void Profiler::waitForResults() {
+    for (int i = 1; i <= kFramesInFlight; ++i)
+        collect(slots_[static_cast<std::size_t>((current_ + i) % kFramesInFlight)], true);
+}
+
+void Profiler::setRecording(bool on) { recording_ = on; }
+
+void Profiler::clearRecordings() {
+    for (PassTimings& p : passes_) {
+        p.recordedGpuMs.clear();
+        p.recordedCpuMs.clear();
+    }
+}
+
+}  // namespace planet

@@ -1,0 +1,90 @@
+#include "render/renderer.h"
+
+#include "gl/debug.h"
+#include "render/frame_uniforms.h"
+
+namespace planet {
+
+std::string shaderPreamble() {
+    return "#version 450 core\n";
+}
+
+Renderer::Renderer(const std::filesystem::path& shaderRoot)
+    : sources_{shaderRoot, shaderPreamble()},
+      terrain_(sources_),
+      lighting_(sources_, "lighting", "render/lighting.frag"),
+      tonemap_(sources_, "tonemap", "render/tonemap.frag") {
+    glNamedBufferStorage(frameUniforms_.id(), sizeof(FrameUniforms), nullptr, GL_DYNAMIC_STORAGE_BIT);
+    frameUniforms_.label("FrameUniforms");
+    emptyVertexArray_.label("fullscreen triangle");
+}
+
+void Renderer::render(const Scene& scene, const Camera& camera, glm::ivec2 size,
+                      const std::function<void()>& present) {
+    if (size.x <= 0 || size.y <= 0) return;
+    targets_.resize(size);
+    profiler_.beginFrame();
+
+    const FrameUniforms uniforms = makeFrameUniforms(scene, camera, size);
+    glNamedBufferSubData(frameUniforms_.id(), 0, sizeof uniforms, &uniforms);
+    glBindBufferBase(GL_UNIFORM_BUFFER, 0, frameUniforms_.id());
+    glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE);  // reversed-Z needs [0, 1] clip depth
+    glViewport(0, 0, size.x, size.y);
+    glBindVertexArray(emptyVertexArray_.id());
+    glDisable(GL_BLEND);
+
+    {
+        gl::DebugGroup group("terrain");
+        auto timing = profiler_.pass("terrain");
+        const GLuint fb = targets_.gbuffer().framebuffer.id();
+        const float zero[4] = {0, 0, 0, 0};
+        for (GLint i = 0; i < 3; ++i) glClearNamedFramebufferfv(fb, GL_COLOR, i, zero);
+        const float farDepth = 0.0f;  // reversed-Z: 0 is infinitely far
+        glClearNamedFramebufferfv(fb, GL_DEPTH, 0, &farDepth);
+        glBindFramebuffer(GL_FRAMEBUFFER, fb);
+        terrain_.draw(scene.planet);
+    }
+    {
+        gl::DebugGroup group("lighting");
+        auto timing = profiler_.pass("lighting");
+        glBindFramebuffer(GL_FRAMEBUFFER, targets_.hdrFramebuffer());
+        const GBuffer& g = targets_.gbuffer();
+        const GLuint inputs[] = {g.normal.id(), g.albedo.id(), g.material.id()};
+        glBindTextures(0, 3, inputs);
+        lighting_.draw();
+    }
+    {
+        gl::DebugGroup group("tonemap");
+        auto timing = profiler_.pass("tonemap");
+        glBindFramebuffer(GL_FRAMEBUFFER, targets_.ldrFramebuffer());
+        const GLuint input = targets_.hdr().id();
+        glBindTextures(0, 1, &input);
+        tonemap_.draw();
+    }
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    if (present) {
+        gl::DebugGroup group("ui");
+        auto timing = profiler_.pass("ui");
+        present();
+    }
+    profiler_.endFrame();
+}
+
+std::vector<gl::HotProgram*> Renderer::programs() {
+    return {&terrain_.program(), &lighting_.program(), &tonemap_.program()};
+}
+
+bool Renderer::reloadShaders(bool force) {
+    bool any = false;
+    for (gl::HotProgram* p : programs()) any = p->reloadIfChanged(force) || any;
+    return any;
+}
+
+std::vector<std::string> Renderer::shaderErrors() {
+    std::vector<std::string> errors;
+    for (gl::HotProgram* p : programs())
+        if (!p->error().empty()) errors.push_back(p->error());
+    return errors;
+}
+
+}  // namespace planet

@@ -1,0 +1,66 @@
+// The frame: a short list of named passes, each in its own debug group and
+// profiler scope, with data flowing one way (STYLE habit 6).
+//
+//   pass        reads                         writes
+//   terrain     frame uniforms, planet        G-buffer (normal, albedo, material, depth)
+//   lighting    G-buffer, sun                 HDR radiance
+//   tonemap     HDR radiance, exposure        LDR (display-ready sRGB)
+//
+//   ui          LDR                           the window (explorer only: blit + panels)
+//
+// `planet render` reads HDR or LDR back instead of presenting. Later issues add the ocean, surface
+// light and sky+cloud passes between terrain and tonemap.
+#pragma once
+
+#include <filesystem>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "app/camera.h"
+#include "gl/handle.h"
+#include "gl/program.h"
+#include "render/fullscreen_pass.h"
+#include "render/profiler.h"
+#include "render/render_targets.h"
+#include "scene/scene.h"
+#include "terrain/placeholder_sphere.h"
+
+namespace planet {
+
+// The #version line and shared #defines every shader starts with.
+std::string shaderPreamble();
+
+class Renderer {
+public:
+    explicit Renderer(const std::filesystem::path& shaderRoot);  // throws gl::ShaderError
+
+    // Renders one frame into targets(). `present`, when given, runs last as the
+    // "ui" pass (the explorer blits LDR to its window and draws panels there),
+    // so the profiler's frame covers everything. A size with a zero side
+    // (minimised window) renders nothing and keeps the previous targets.
+    void render(const Scene& scene, const Camera& camera, glm::ivec2 size,
+                const std::function<void()>& present = {});
+
+    const RenderTargets& targets() const { return targets_; }
+    Profiler& profiler() { return profiler_; }
+
+    // Hot reload: rebuilds programs whose files changed. Broken edits keep the
+    // last good program; shaderErrors() then lists the messages (empty when all is well).
+    bool reloadShaders(bool force = false);
+    std::vector<std::string> shaderErrors();
+
+private:
+    std::vector<gl::HotProgram*> programs();
+
+    gl::ShaderSources sources_;
+    PlaceholderSphere terrain_;
+    FullscreenPass lighting_;
+    FullscreenPass tonemap_;
+    gl::Buffer frameUniforms_;
+    gl::VertexArray emptyVertexArray_;
+    RenderTargets targets_;
+    Profiler profiler_;
+};
+
+}  // namespace planet

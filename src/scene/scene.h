@@ -1,0 +1,51 @@
+// Scene: every parameter a frame depends on, as plain per-feature structs.
+//
+// Each phenomenon owns its parameter struct (default member initialisers carry
+// the Earth defaults, comments carry unit and valid range). Presets map onto
+// these one to one through the table in scene_params.cpp, which is also what
+// the explorer's panels and the preset writer walk, so a parameter added there
+// is loadable, validated, tunable and savable at once.
+//
+// World frame: planet centre at the origin, +Z through the north pole,
+// longitude 0 along +X, longitude 90 E along +Y. Lengths in metres unless a
+// field name says otherwise.
+#pragma once
+
+#include <glm/glm.hpp>
+
+namespace planet {
+
+struct PlanetParams {
+    double radius_km = 6360.0;                     // km, [1, 100000]
+    glm::dvec3 albedo = {0.09, 0.12, 0.06};        // placeholder ground reflectance, [0, 1]
+};
+
+struct SunParams {
+    double latitude_deg = 20.0;                    // subsolar point latitude, deg, [-90, 90]
+    double longitude_deg = 30.0;                   // subsolar point longitude, deg, [-180, 180]
+    // Solar irradiance at the top of the atmosphere for R, G, B (680, 550, 440 nm),
+    // W m^-2 nm^-1 (Bruneton's demo values), [0, 100].
+    glm::dvec3 irradiance = {1.474, 1.8504, 1.91198};
+    double angular_radius_rad = 0.004675;          // rad, [0.0001, 0.1]
+};
+
+struct RenderParams {
+    // Tone mapping: display = 1 - exp(-exposure * radiance), then sRGB (Bruneton's
+    // demo operator). Dimensionless, [0.001, 1000].
+    double exposure = 10.0;
+};
+
+struct Scene {
+    PlanetParams planet;
+    SunParams sun;
+    RenderParams render;
+
+    double planetRadiusM() const { return planet.radius_km * 1000.0; }
+    // Unit vector from the planet centre towards the sun, world frame.
+    glm::dvec3 sunDirection() const;
+};
+
+// Unit vector in the world frame for a geographic latitude/longitude (degrees).
+glm::dvec3 directionFromLatLon(double latitudeDeg, double longitudeDeg);
+
+}  // namespace planet

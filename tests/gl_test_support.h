@@ -1,0 +1,43 @@
+// Shared pieces for tests that need GL: one headless EGL context per test
+// suite (Mesa surfaceless on CI), and the repository's data paths.
+#pragma once
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <memory>
+
+#include "app/session.h"
+#include "gl/context.h"
+#include "gl/debug.h"
+#include "render/image_io.h"
+
+namespace planet::test {
+
+inline DataPaths repoPaths() { return DataPaths{PLANET_SOURCE_DIR}; }
+
+class GLTest : public ::testing::Test {
+protected:
+    static void SetUpTestSuite() {
+        // No skip: a missing GL context is a failure, CI must be able to run these.
+        context_ = std::make_unique<gl::HeadlessContext>(true);
+        gl::installDebugOutput(&messages_);
+    }
+    static void TearDownTestSuite() { context_.reset(); }
+    void TearDown() override { EXPECT_EQ(messages_.errors, 0) << "GL errors reported through KHR_debug"; }
+
+    static inline std::unique_ptr<gl::HeadlessContext> context_;
+    static inline gl::DebugMessages messages_;
+};
+
+inline bool allFinite(const ImageRGBAF& image) {
+    for (float v : image.pixels)
+        if (!std::isfinite(v)) return false;
+    return true;
+}
+
+inline const float* pixelAt(const ImageRGBAF& image, int x, int y) {
+    return &image.pixels[(static_cast<std::size_t>(y) * image.width + x) * 4];
+}
+
+}  // namespace planet::test

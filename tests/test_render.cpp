@@ -1,0 +1,131 @@
+// Headless renders of the placeholder planet through the whole frame
+// (terrain -> lighting -> tonemap), checked for what they must show.
+#include <cmath>
+
+#include "app/session.h"
+#include "gl_test_support.h"
+#include "render/renderer.h"
+#include "shaders_ray_sphere_double.h"
+
+using namespace planet;
+
+namespace {
+
+constexpr glm::ivec2 kSize{160, 90};
+
+class RenderTest : public test::GLTest {
+protected:
+    void SetUp() override { renderer = std::make_unique<Renderer>(test::repoPaths().shaders()); }
+    Session session(const std::string& preset, const std::string& view) {
+        return loadSession(test::repoPaths(), preset, view);
+    }
+    ImageRGBAF renderHdr(const Session& s, glm::ivec2 size = kSize) {
+        renderer->render(s.scene, s.camera, size);
+        return readTextureRGBAF(renderer->targets().hdr(), size.x, size.y);
+    }
+    std::unique_ptr<Renderer> renderer;
+};
+
+float luminance(const float* p) { return 0.2126f * p[0] + 0.7152f * p[1] + 0.0722f * p[2]; }
+
+}  // namespace
+
+TEST_F(RenderTest, SpaceViewShowsPlanetInTheCentreAndDarkSpaceAround) {
+    const Session s = session("earth", "space");
+    const ImageRGBAF hdr = renderHdr(s);
+    ASSERT_TRUE(test::allFinite(hdr));
+    // The whole planet is in view: all four corners are space (zero radiance).
+    for (auto [x, y] : {std::pair{0, 0}, {kSize.x - 1, 0}, {0, kSize.y - 1}, {kSize.x - 1, kSize.y - 1}})
+        EXPECT_EQ(luminance(test::pixelAt(hdr, x, y)), 0.0f) << x << "," << y;
+    // The centre pixel is covered by the planet (G-buffer material = ground, depth in (0, 1)).
+    float depth = 0.0f;
+    glGetTextureSubImage(renderer->targets().gbuffer().depth.id(), 0, kSize.x / 2, kSize.y / 2, 0, 1, 1, 1,
+                         GL_DEPTH_COMPONENT, GL_FLOAT, sizeof depth, &depth);
+    EXPECT_GT(depth, 0.0f);
+    EXPECT_LT(depth, 1.0f);
+}
+
+TEST_F(RenderTest, OrbitViewIsLitBelowAndSpaceAbove) {
+    const Session s = session("earth", "orbit");
+    const ImageRGBAF hdr = renderHdr(s);
+    ASSERT_TRUE(test::allFinite(hdr));
+    EXPECT_GT(luminance(test::pixelAt(hdr, kSize.x / 2, kSize.y - 1)), 1e-3f);  // ground below: lit
+    EXPECT_EQ(luminance(test::pixelAt(hdr, kSize.x / 2, 0)), 0.0f);               // space above the horizon
+}
+
+TEST_F(RenderTest, GroundDepthMatchesCpuRaySphereDistance) {
+    // From 2 m above the ground, the G-buffer depth of a pixel below the
+    // horizon must decode to the distance the double-precision ray-sphere
+    // intersection gives along that pixel's ray (GPU vs CPU reference).
+    const Session s = session("earth", "ground");
+    renderer->render(s.scene, s.camera, kSize);
+    const int x = kSize.x / 2, y = 2;  // near the bottom edge (GL row 2), looking down at the ground
+    float depth = 0.0f;
+    glGetTextureSubImage(renderer->targets().gbuffer().depth.id(), 0, x, y, 0, 1, 1, 1, GL_DEPTH_COMPONENT, GL_FLOAT,
+                         sizeof depth, &depth);
+    ASSERT_GT(depth, 0.0f);
+    const double aspect = double(kSize.x) / kSize.y;
+    const glm::dvec2 ndc((x + 0.5) / kSize.x * 2 - 1, (y + 0.5) / kSize.y * 2 - 1);
+    const glm::dvec4 v = glm::inverse(s.camera.clipFromView(aspect)) * glm::dvec4(ndc, 0.5, 1.0);
+    const glm::dvec3 viewDir = glm::normalize(glm::dvec3(v) / v.w);
+    const glm::dvec3 worldDir = s.camera.worldFromView() * viewDir;
+    const double R = s.scene.planetRadiusM();
+    const double t = test::nearestHitDouble(s.camera.position, worldDir, R);
+    ASSERT_GT(t, 0.0);
+    const double expectedViewDistance = t * -viewDir.z;
+    const double gpuViewDistance = viewZFromDepth(depth, s.camera.near_m) * -1.0;
+    EXPECT_NEAR(gpuViewDistance, expectedViewDistance, expectedViewDistance * 1e-3);
+}
+
+TEST_F(RenderTest, SameInputsGiveSamePixels) {
+    const Session s = session("earth", "orbit");
+    renderer->render(s.scene, s.camera, kSize);
+    const ImageRGBA8 a = readTextureRGBA8(renderer->targets().ldr(), kSize.x, kSize.y);
+    Renderer other(test::repoPaths().shaders());
+    other.render(s.scene, s.camera, kSize);
+    const ImageRGBA8 b = readTextureRGBA8(other.targets().ldr(), kSize.x, kSize.y);
+    EXPECT_EQ(a.pixels, b.pixels);
+}
+
+TEST_F(RenderTest, EveryPresetAndViewRendersWithoutNanOrInf) {
+    for (const std::string preset : {"earth", "mars", "hazy"}) {
+        Session s = session(preset, "orbit");
+        for (const View& view : s.views) {
+            applyView(view, s);
+            const ImageRGBAF hdr = renderHdr(s, {64, 36});
+            EXPECT_TRUE(test::allFinite(hdr)) << preset << " / " << view.name;
+        }
+    }
+}
+
+TEST_F(RenderTest, ExtremeCamerasAreHandled) {
+    Session s = session("earth", "orbit");
+    const double R = s.scene.planetRadiusM();
+    for (double distance : {0.5 * R, R + 0.1, R + 1.0, 2.0e8, 9.46e15}) {
+        s.camera.position = glm::dvec3(0.0, 0.0, distance);
+        sanitizeCamera(s.camera, R);
+        EXPECT_GE(s.camera.altitude(R), 0.09);
+        EXPECT_TRUE(test::allFinite(renderHdr(s, {32, 18}))) << distance;
+    }
+}
+
+TEST_F(RenderTest, ZeroSizeRendersNothingAndKeepsTargets) {
+    const Session s = session("earth", "orbit");
+    renderer->render(s.scene, s.camera, kSize);
+    renderer->render(s.scene, s.camera, {0, 0});
+    EXPECT_EQ(renderer->targets().size(), kSize);
+}
+
+TEST_F(RenderTest, ProfilerTimesEveryPassOnTheGpuAndCpu) {
+    const Session s = session("earth", "orbit");
+    for (int i = 0; i < 6; ++i) renderer->render(s.scene, s.camera, {32, 18});
+    renderer->profiler().waitForResults();
+    std::vector<std::string> names;
+    for (const PassTimings& p : renderer->profiler().passes()) {
+        names.push_back(p.name);
+        EXPECT_EQ(p.cpuMs.size(), 6u) << p.name;
+        EXPECT_GE(p.gpuMs.size(), 2u) << p.name;  // the ring may drop frames on a slow GPU, never all
+        EXPECT_GE(p.gpuMs.min(), 0.0) << p.name;
+    }
+    EXPECT_EQ(names, (std::vector<std::string>{"terrain", "lighting", "tonemap"}));
+}
