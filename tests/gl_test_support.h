@@ -10,7 +10,7 @@
 #include "app/session.h"
 #include "gl/context.h"
 #include "gl/debug.h"
-#include "render/image_io.h"
+#include "render/readback.h"
 
 namespace planet::test {
 

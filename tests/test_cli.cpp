@@ -10,6 +10,7 @@
 #include <stb_image.h>
 
 #include "process.h"
+#include "test_util.h"
 #include "render/image_io.h"
 
 namespace fs = std::filesystem;
@@ -31,7 +32,7 @@ protected:
     fs::path dir;
 };
 
-bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
+using planet::test::contains;
 
 }  // namespace
 

@@ -3,6 +3,8 @@
 // field, unknown-key warnings, the exact write/read round trip and atomic saves.
 #include <gtest/gtest.h>
 
+#include "test_util.h"
+
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -15,10 +17,6 @@
 #include "scene/scene_params.h"
 #include "scene/toml_error.h"
 #include "util/file_util.h"
-
-#ifndef PLANET_SOURCE_DIR
-#define PLANET_SOURCE_DIR "/work/main"  // standalone builds only; CMake defines it
-#endif
 
 namespace planet {
 namespace {
@@ -42,18 +40,8 @@ const fs::path kAssets = fs::path(PLANET_SOURCE_DIR) / "assets";
     return ::testing::AssertionSuccess();
 }
 
-// Runs f, expecting an InputError; returns it for inspection.
-InputError expectInputError(const std::function<void()>& f) {
-    try {
-        f();
-    } catch (const InputError& e) {
-        return e;
-    }
-    ADD_FAILURE() << "expected an InputError";
-    return InputError("", 0, "", "none thrown");
-}
-
-bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
+using test::contains;
+using test::expectInputError;
 
 // A fresh, empty folder under the system temp dir, removed at the end of the test.
 struct TempDir {

@@ -3,6 +3,8 @@
 // sun placement math against analytic local frames.
 #include <gtest/gtest.h>
 
+#include "test_util.h"
+
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -13,10 +15,6 @@
 #include "app/views.h"
 #include "scene/toml_error.h"
 
-#ifndef PLANET_SOURCE_DIR
-#define PLANET_SOURCE_DIR "/work/main"  // standalone builds only; CMake defines it
-#endif
-
 namespace planet {
 namespace {
 
@@ -25,17 +23,8 @@ namespace fs = std::filesystem;
 const fs::path kViews = fs::path(PLANET_SOURCE_DIR) / "assets" / "views";
 const std::string kRequired = "latitude_deg = 10\nlongitude_deg = 20\naltitude_m = 2\n";
 
-InputError expectInputError(const std::function<void()>& f) {
-    try {
-        f();
-    } catch (const InputError& e) {
-        return e;
-    }
-    ADD_FAILURE() << "expected an InputError";
-    return InputError("", 0, "", "none thrown");
-}
-
-bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
+using test::contains;
+using test::expectInputError;
 
 void expectNear(const glm::dvec3& a, const glm::dvec3& b, double tolerance) {
     EXPECT_NEAR(a.x, b.x, tolerance);

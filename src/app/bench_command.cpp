@@ -125,9 +125,9 @@ int runBench(const BenchOptions& o) {
     Session session = loadSession(paths, o.common.preset, o.common.view);
     const std::vector<View> views = benchViews(o.views, paths);
 
+    gl::DebugMessages messages;  // outlives the context that reports into it
     gl::HeadlessContext context(o.common.glDebug);
-    gl::DebugMessages messages;
-    if (o.common.glDebug) gl::installDebugOutput(&messages);
+    gl::installDebugOutput(&messages, o.common.glDebug);  // always to the log; --gl-debug: debug context, synchronous
     const std::string renderer = gl::rendererDescription();
     std::printf("planet bench on %s via %s, %dx%d, %d frames after %d warm-up\n", renderer.c_str(),
                 context.platform().c_str(), size.x, size.y, o.frames, o.warmup);

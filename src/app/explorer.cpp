@@ -22,7 +22,7 @@
 #include "app/session.h"
 #include "gl/context.h"
 #include "gl/debug.h"
-#include "render/image_io.h"
+#include "render/readback.h"
 #include "render/renderer.h"
 #include "scene/preset.h"
 #include "scene/toml_error.h"
@@ -272,10 +272,10 @@ int runExplore(const ExploreOptions& options) {
     Session session = loadSession(paths, options.common.preset, options.common.view);
     const glm::ivec2 size = parseSize(options.common.size.empty() ? "1280x720" : options.common.size);
 
+    gl::DebugMessages messages;  // outlives the context that reports into it
     GlfwLibrary glfw;
     WindowPtr window = openWindow(size, options.common.glDebug);
-    gl::DebugMessages messages;
-    if (options.common.glDebug) gl::installDebugOutput(&messages);
+    gl::installDebugOutput(&messages, options.common.glDebug);  // always to the log; --gl-debug: debug context, synchronous
     logInfo("OpenGL: " + gl::rendererDescription());
     Explorer explorer(options, window.get(), paths, std::move(session));  // installs callbacks before ImGui chains them
     ImGuiLayer imgui(window.get());

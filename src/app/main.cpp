@@ -18,7 +18,7 @@ void addCommon(CLI::App& cmd, planet::CommonOptions& o, const char* defaultSize)
     cmd.add_option("--view", o.view, "View bookmark name under assets/views/ (ground, beach, clouds, orbit, space, ...)")
         ->capture_default_str();
     cmd.add_option("--size", o.size, std::string("Image size WIDTHxHEIGHT (default ") + defaultSize + ")");
-    cmd.add_flag("--gl-debug", o.glDebug, "Route KHR_debug driver messages to the log (synchronous)");
+    cmd.add_flag("--gl-debug", o.glDebug, "Ask for a debug GL context and report KHR_debug messages synchronously");
 }
 
 }  // namespace

@@ -7,7 +7,7 @@
 #include "app/session.h"
 #include "gl/context.h"
 #include "gl/debug.h"
-#include "render/image_io.h"
+#include "render/readback.h"
 #include "render/renderer.h"
 #include "scene/toml_error.h"
 #include "util/log.h"
@@ -40,9 +40,9 @@ void renderStill(const CommonOptions& common, const std::vector<std::string>& ou
         session.scene.render.exposure = *exposure;
     }
 
+    gl::DebugMessages messages;  // outlives the context that reports into it
     gl::HeadlessContext context(common.glDebug);
-    gl::DebugMessages messages;
-    if (common.glDebug) gl::installDebugOutput(&messages);
+    gl::installDebugOutput(&messages, common.glDebug);  // always to the log; --gl-debug: debug context, synchronous
     logInfo("rendering " + std::to_string(size.x) + "x" + std::to_string(size.y) + " on " +
             gl::rendererDescription() + " via " + context.platform());
     Renderer renderer(paths.shaders());

@@ -15,9 +15,9 @@ struct DebugMessages {
     int warnings = 0;  // deprecated / undefined behaviour / portability / performance
 };
 
-// Installs the debug callback (needs a context; a debug context gives synchronous,
+// Installs the debug callback on the current context (a debug context gives
 // complete messages). `sink` must outlive the context. Notifications are dropped.
-void installDebugOutput(DebugMessages* sink);
+void installDebugOutput(DebugMessages* sink, bool synchronous = true);
 
 class DebugGroup {
 public:

@@ -1,4 +1,4 @@
-// Reading frames back from GL and writing them to disk.
+// Images on disk (CPU only; src/render/readback.h reads them from GL).
 //
 // PNG: the display-ready RGBA8 image (tone-mapped sRGB bytes), via stb.
 // OpenEXR: linear HDR radiance as half-float RGBA, via OpenEXR 3; the exposure
@@ -11,7 +11,6 @@
 #include <filesystem>
 #include <vector>
 
-#include "gl/handle.h"
 
 namespace planet {
 
@@ -25,11 +24,9 @@ struct ImageRGBAF {
     std::vector<float> pixels;  // row 0 = top, 4 floats per pixel
 };
 
-ImageRGBA8 readTextureRGBA8(const gl::Texture& texture, int width, int height);
-ImageRGBAF readTextureRGBAF(const gl::Texture& texture, int width, int height);
-// Colour of a framebuffer (0: the window's back buffer).
-ImageRGBA8 readFramebufferRGBA8(GLuint framebuffer, int width, int height);
-
+// PNG of 8-bit pixels with 1 to 4 channels, rows top first. Throws
+// std::invalid_argument for an empty image, FileError when it cannot write.
+void writePng(const std::uint8_t* pixels, int width, int height, int channels, const std::filesystem::path& path);
 void writePng(const ImageRGBA8& image, const std::filesystem::path& path);
 void writeExr(const ImageRGBAF& image, const std::filesystem::path& path, double exposure);
 ImageRGBAF readExr(const std::filesystem::path& path);  // throws FileError on a missing or corrupt file

@@ -13,7 +13,7 @@
 #include <stdexcept>
 #include <string_view>
 
-#include "util/file_util.h"
+#include "render/image_io.h"
 
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wunused-function"
@@ -21,8 +21,6 @@
 #pragma GCC diagnostic ignored "-Wconversion"
 #include <stb_easy_font.h>
 #pragma GCC diagnostic pop
-
-#include <stb_image_write.h>
 
 namespace planet {
 
@@ -371,10 +369,6 @@ void drawLegend(Image8& img, const BarPlotLayout& l, const BarPlot& plot) {
     }
 }
 
-void appendBytes(void* context, void* data, int size) {
-    static_cast<std::string*>(context)->append(static_cast<const char*>(data), static_cast<std::size_t>(size));
-}
-
 }  // namespace
 
 Image8 renderStackedBarPlot(const BarPlot& plot, int width, int height) {
@@ -398,11 +392,7 @@ void writePng(const Image8& image, const std::filesystem::path& path) {
     if (image.width <= 0 || image.height <= 0 ||
         image.rgb.size() != static_cast<std::size_t>(image.width) * image.height * 3)
         throw std::invalid_argument("writePng: image is empty or its pixel buffer does not match its size");
-    std::string bytes;
-    if (!stbi_write_png_to_func(appendBytes, &bytes, image.width, image.height, 3, image.rgb.data(),
-                                image.width * 3))
-        throw FileError("cannot encode PNG for '" + path.string() + "'");
-    writeFileAtomic(path, bytes);
+    writePng(image.rgb.data(), image.width, image.height, 3, path);
 }
 
 }  // namespace planet
