@@ -153,14 +153,219 @@ TEST(Preset, MalformedTomlNamesFileAndLine) {
 }
 
 TEST(Preset, UnknownKeysWarnWithLineAndSuggestion) {
-    const std::string text = "name = \"x\"\n[planet]\nradius = 5\n\n[atmosphere]\ndensity = 1\n";
+    const std::string text = "name = \"x\"\n[planet]\nradius = 5\n\n[volcanoes]\ndensity = 1\n";
     const PresetLoad load = parsePreset(text, "earth.toml");
     ASSERT_EQ(load.warnings.size(), 2u);
     EXPECT_EQ(load.warnings[0],
               "earth.toml:3: unknown key 'planet.radius' (ignored); did you mean 'planet.radius_km'?");
-    EXPECT_TRUE(contains(load.warnings[1], "earth.toml:5: unknown key 'atmosphere'")) << load.warnings[1];
+    EXPECT_TRUE(contains(load.warnings[1], "earth.toml:5: unknown key 'volcanoes'")) << load.warnings[1];
     EXPECT_FALSE(contains(load.warnings[1], "did you mean")) << load.warnings[1];
     EXPECT_TRUE(sameScene(load.scene, Scene{}));  // unknown keys change nothing
+}
+
+// ---- the [atmosphere] section and validateScene ----
+
+TEST(Preset, TableOrderAndAtmosphereRows) {
+    std::vector<std::string> sections;
+    int atmosphereRows = 0;
+    for (const ParamSpec& spec : sceneParams()) {
+        if (sections.empty() || sections.back() != spec.section) sections.push_back(spec.section);
+        if (spec.section != "atmosphere") continue;
+        ++atmosphereRows;
+        EXPECT_FALSE(spec.help.empty()) << spec.path();
+        EXPECT_EQ(spec.help.find('\n'), std::string::npos) << spec.path();  // one comment line in presets
+    }
+    EXPECT_EQ(sections, (std::vector<std::string>{"planet", "atmosphere", "sun", "render"}));
+    EXPECT_EQ(atmosphereRows, 14);  // one per field of AtmosphereParams
+    // Each row reaches its own field, with the type the panel needs.
+    Scene s;
+    auto ref = [&](const std::string& path) {
+        for (const ParamSpec& spec : sceneParams())
+            if (spec.path() == path) return spec.field(s);
+        ADD_FAILURE() << path << " not in the table";
+        return ParamRef{};
+    };
+    EXPECT_EQ(std::get<int*>(ref("atmosphere.scattering_orders")), &s.atmosphere.scattering_orders);
+    EXPECT_EQ(std::get<bool*>(ref("atmosphere.elek_rayleigh_phase")), &s.atmosphere.elek_rayleigh_phase);
+    EXPECT_EQ(std::get<double*>(ref("atmosphere.top_radius_km")), &s.atmosphere.top_radius_km);
+    EXPECT_EQ(std::get<glm::dvec3*>(ref("atmosphere.mie_extinction_per_m")), &s.atmosphere.mie_extinction_per_m);
+}
+
+TEST(Preset, TopRadiusBelowPlanetRadiusNamesTheLine) {
+    const std::string text = "[planet]\nradius_km = 6000\n\n[atmosphere]\nmie_g = 0.7\ntop_radius_km = 5000\n";
+    const InputError e = expectInputError([&] { parsePreset(text, "low.toml"); });
+    EXPECT_EQ(e.file, "low.toml");
+    EXPECT_EQ(e.line, 6);
+    EXPECT_EQ(e.field, "atmosphere.top_radius_km");
+    EXPECT_TRUE(contains(e.what(), "low.toml:6: atmosphere.top_radius_km: ")) << e.what();
+    EXPECT_TRUE(contains(e.message, "5000")) << e.message;
+    EXPECT_TRUE(contains(e.message, "planet.radius_km 6000")) << e.message;
+    // Equal radii leave no atmosphere: also refused.
+    EXPECT_THROW(parsePreset("[planet]\nradius_km = 6420\n", "eq.toml"), InputError);
+    // A bigger planet that leaves the default top below it: blamed on the top, which has no line.
+    const InputError big = expectInputError([] { parsePreset("[planet]\nradius_km = 7000\n", "big.toml"); });
+    EXPECT_EQ(big.field, "atmosphere.top_radius_km");
+    EXPECT_EQ(big.line, 0);
+    EXPECT_TRUE(contains(big.message, "6420")) << big.message;
+    EXPECT_TRUE(contains(big.message, "7000")) << big.message;
+    // Just above is fine.
+    EXPECT_NO_THROW(parsePreset("[planet]\nradius_km = 7000\n[atmosphere]\ntop_radius_km = 7000.5\n", "ok.toml"));
+}
+
+TEST(Preset, MieExtinctionBelowScatteringIsAnError) {
+    const std::string text =
+        "[atmosphere]\nmie_scattering_per_m = [4e-6, 5e-6, 4e-6]\nmie_extinction_per_m = [4.44e-6, 4.44e-6, 4.44e-6]\n";
+    const InputError e = expectInputError([&] { parsePreset(text, "mie.toml"); });
+    EXPECT_EQ(e.field, "atmosphere.mie_extinction_per_m");
+    EXPECT_EQ(e.line, 3);
+    EXPECT_TRUE(contains(e.message, "component 1")) << e.message;
+    EXPECT_TRUE(contains(e.message, "atmosphere.mie_scattering_per_m")) << e.message;
+    // Extinction equal to scattering (no absorption) is allowed.
+    const PresetLoad ok =
+        parsePreset("[atmosphere]\nmie_scattering_per_m = [1e-5, 1e-5, 1e-5]\nmie_extinction_per_m = [1e-5, 1e-5, 1e-5]\n",
+                    "ok.toml");
+    EXPECT_EQ(ok.scene.atmosphere.mie_extinction_per_m, glm::dvec3(1e-5));
+}
+
+TEST(Preset, MieGMustStayBelowOne) {
+    const InputError e = expectInputError([] { parsePreset("[atmosphere]\nmie_g = 1.0\n", "g.toml"); });
+    EXPECT_EQ(e.field, "atmosphere.mie_g");
+    EXPECT_EQ(e.line, 2);
+    EXPECT_EQ(e.message, "value 1 is out of range [-0.999, 0.999]");
+    EXPECT_THROW(parsePreset("[atmosphere]\nmie_g = -1.0\n", "g.toml"), InputError);
+    EXPECT_EQ(parsePreset("[atmosphere]\nmie_g = -0.999\n", "g.toml").scene.atmosphere.mie_g, -0.999);
+}
+
+TEST(Preset, NegativeRayleighNamesTheComponent) {
+    const std::string text = "[atmosphere]\nrayleigh_scattering_per_m = [-1e-6, 1e-5, 3e-5]\n";
+    const InputError e = expectInputError([&] { parsePreset(text, "r.toml"); });
+    EXPECT_EQ(e.field, "atmosphere.rayleigh_scattering_per_m[0]");
+    EXPECT_EQ(e.line, 2);
+    EXPECT_TRUE(contains(e.message, "out of range [0, 0.01] 1/m")) << e.message;
+}
+
+TEST(Preset, ScatteringOrdersMustBeAWholeNumberInRange) {
+    const InputError half = expectInputError([] { parsePreset("[atmosphere]\nscattering_orders = 2.5\n", "o.toml"); });
+    EXPECT_EQ(half.field, "atmosphere.scattering_orders");
+    EXPECT_EQ(half.line, 2);
+    EXPECT_TRUE(contains(half.message, "not a whole number")) << half.message;
+    EXPECT_THROW(parsePreset("[atmosphere]\nscattering_orders = 0\n", "o.toml"), InputError);
+    EXPECT_THROW(parsePreset("[atmosphere]\nscattering_orders = 11\n", "o.toml"), InputError);
+    EXPECT_EQ(parsePreset("[atmosphere]\nscattering_orders = 10\n", "o.toml").scene.atmosphere.scattering_orders, 10);
+    EXPECT_THROW(parsePreset("[atmosphere]\nelek_rayleigh_phase = 1\n", "o.toml"), InputError);  // bool, not number
+}
+
+TEST(Preset, AtmosphereTyposWarnWithSuggestion) {
+    const PresetLoad load = parsePreset("[atmosphere]\nmie_gg = 0.7\n", "t.toml");
+    ASSERT_EQ(load.warnings.size(), 1u);
+    EXPECT_EQ(load.warnings[0], "t.toml:2: unknown key 'atmosphere.mie_gg' (ignored); did you mean 'atmosphere.mie_g'?");
+}
+
+// Every field of the atmosphere away from its default, and odd doubles.
+Scene modifiedAtmosphere() {
+    Scene s;
+    s.planet.radius_km = 3389.5;
+    AtmosphereParams& a = s.atmosphere;
+    a.top_radius_km = 3389.5 + 1.0 / 3.0;
+    a.rayleigh_scattering_per_m = {1.16e-6, 0.1 * 2.71e-5, 0.01};
+    a.rayleigh_scale_height_km = 11.1;
+    a.mie_scattering_per_m = {6.0e-6, 4.5e-6, 0.0};
+    a.mie_extinction_per_m = {6.0e-6, std::nextafter(4.5e-6, 1.0), 1e-300};
+    a.mie_scale_height_km = 0.01;
+    a.mie_g = -0.999;
+    a.ozone_absorption_per_m = {0.0, 0.0, 0.0};
+    a.ozone_peak_altitude_km = 0.0;
+    a.ozone_width_km = 1000.0;
+    a.ground_albedo = {0.3, 0.2, 0.1 + 0.02};
+    a.scattering_orders = 7;
+    a.min_sun_elevation_deg = -90.0;
+    a.elek_rayleigh_phase = true;
+    return s;
+}
+
+TEST(Preset, ModifiedAtmosphereRoundTripsExactly) {
+    const Scene s = modifiedAtmosphere();
+    ASSERT_TRUE(validateScene(s).empty());
+    ASSERT_FALSE(sameScene(s, Scene{}));
+    const PresetLoad load = parsePreset(presetToToml(s, "Odd air", ""), "rt.toml");
+    EXPECT_TRUE(sameScene(load.scene, s));
+    EXPECT_TRUE(load.warnings.empty());
+
+    TempDir dir("preset_atmosphere");
+    savePreset(s, dir.path / "odd.toml", "Odd air", "");
+    EXPECT_TRUE(sameScene(loadPreset(dir.path / "odd.toml").scene, s));
+}
+
+TEST(Preset, SaveRefusesAnInvalidScene) {
+    TempDir dir("preset_invalid");
+    Scene low;
+    low.atmosphere.top_radius_km = low.planet.radius_km - 1.0;
+    const InputError e = expectInputError([&] { savePreset(low, dir.path / "low.toml", "n", "d"); });
+    EXPECT_EQ(e.field, "atmosphere.top_radius_km");
+    EXPECT_TRUE(contains(e.file, "low.toml")) << e.file;
+
+    Scene mie;
+    mie.atmosphere.mie_extinction_per_m.z = 0.5 * mie.atmosphere.mie_scattering_per_m.z;
+    EXPECT_EQ(expectInputError([&] { savePreset(mie, dir.path / "mie.toml", "n", "d"); }).field,
+              "atmosphere.mie_extinction_per_m");
+
+    Scene range;  // out of a single row's range: would not load back either
+    range.atmosphere.mie_g = 1.0;
+    EXPECT_EQ(expectInputError([&] { savePreset(range, dir.path / "g.toml", "n", "d"); }).field, "atmosphere.mie_g");
+    EXPECT_TRUE(fs::is_empty(dir.path));  // nothing written
+}
+
+TEST(Preset, ValidateSceneAgreesWithLoading) {
+    EXPECT_TRUE(validateScene(Scene{}).empty());
+    for (const char* name : {"earth", "mars", "hazy"})
+        EXPECT_TRUE(validateScene(loadPreset(resolvePreset(name, kAssets)).scene).empty()) << name;
+
+    Scene bad;
+    bad.planet.radius_km = 7000.0;                          // above the default top
+    bad.atmosphere.mie_scattering_per_m.x = 1e-5;           // above the default extinction
+    bad.atmosphere.rayleigh_scattering_per_m.y = -1.0;      // out of range
+    bad.atmosphere.scattering_orders = 0;                   // out of range
+    const std::vector<SceneProblem> problems = validateScene(bad);
+    ASSERT_EQ(problems.size(), 4u);
+    EXPECT_EQ(problems[0].field, "atmosphere.rayleigh_scattering_per_m[1]");  // ranges first, table order
+    EXPECT_EQ(problems[1].field, "atmosphere.scattering_orders");
+    EXPECT_EQ(problems[2].field, "atmosphere.top_radius_km");
+    EXPECT_EQ(problems[3].field, "atmosphere.mie_extinction_per_m");
+    EXPECT_TRUE(contains(problems[3].message, "component 0")) << problems[3].message;
+    // NaN breaks its range.
+    Scene nan;
+    nan.atmosphere.mie_g = std::numeric_limits<double>::quiet_NaN();
+    ASSERT_EQ(validateScene(nan).size(), 1u);
+    EXPECT_EQ(validateScene(nan)[0].field, "atmosphere.mie_g");
+    // The writer emits it anyway, and the reader names the same first field.
+    EXPECT_EQ(expectInputError([&] { parsePreset(presetToToml(bad, "b", ""), "b.toml"); }).field,
+              problems[0].field);
+}
+
+TEST(Preset, MarsAndHazyAtmospheres) {
+    const Scene earth;
+    const PresetLoad mars = loadPreset(kAssets / "presets" / "mars.toml");
+    const PresetLoad hazy = loadPreset(kAssets / "presets" / "hazy.toml");
+    EXPECT_TRUE(mars.warnings.empty()) << joinNames(mars.warnings);
+    EXPECT_TRUE(hazy.warnings.empty()) << joinNames(hazy.warnings);
+    const AtmosphereParams& m = mars.scene.atmosphere;
+    const AtmosphereParams& h = hazy.scene.atmosphere;
+    const AtmosphereParams& e = earth.atmosphere;
+    // Mars: thinner shell, sparser air, reddish dust (more Mie in red than blue), no ozone.
+    EXPECT_LT(m.top_radius_km - mars.scene.planet.radius_km, e.top_radius_km - earth.planet.radius_km);
+    EXPECT_GT(m.top_radius_km, mars.scene.planet.radius_km);
+    for (int i = 0; i < 3; ++i) EXPECT_LT(m.rayleigh_scattering_per_m[i], e.rayleigh_scattering_per_m[i]) << i;
+    EXPECT_GT(m.mie_scattering_per_m.r, m.mie_scattering_per_m.b);
+    EXPECT_EQ(m.ozone_absorption_per_m, glm::dvec3(0.0));
+    // Hazy: denser Rayleigh and Mie, haze reaching higher, Earth's ozone.
+    for (int i = 0; i < 3; ++i) {
+        EXPECT_GT(h.rayleigh_scattering_per_m[i], e.rayleigh_scattering_per_m[i]) << i;
+        EXPECT_GT(h.mie_scattering_per_m[i], e.mie_scattering_per_m[i]) << i;
+        EXPECT_NEAR(h.rayleigh_scattering_per_m[i], 5.0 * e.rayleigh_scattering_per_m[i], 1e-12) << i;
+    }
+    EXPECT_GT(h.mie_scale_height_km, e.mie_scale_height_km);
+    EXPECT_EQ(h.ozone_absorption_per_m, e.ozone_absorption_per_m);
+    EXPECT_GT(h.top_radius_km - hazy.scene.planet.radius_km, e.top_radius_km - earth.planet.radius_km);
 }
 
 TEST(Preset, RoundTripIsExact) {

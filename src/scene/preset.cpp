@@ -3,7 +3,9 @@
 //
 // Organisation: the reader first checks the file's shape (top-level keys,
 // sections, unknown keys), then walks sceneParams() and reads each present
-// key into a Scene{}; the writer walks the same table section by section.
+// key into a Scene{} and finally checks the cross-field rules of
+// validateScene; the writer walks the same table section by section and
+// refuses a scene validateScene rejects.
 #include "scene/preset.h"
 
 #include <algorithm>
@@ -197,6 +199,13 @@ PresetLoad parsePreset(std::string_view tomlText, const std::string& sourceName)
         const toml::node* node = section ? section->get(spec.key) : nullptr;
         if (node) readParam(spec, *node, sourceName, out.scene);
     }
+    const std::vector<SceneProblem> problems = validateScene(out.scene);
+    if (!problems.empty()) {
+        // Blame the field's line when the file sets it; a default it left alone has none.
+        const SceneProblem& first = problems.front();
+        const toml::node* node = root.at_path(first.field).node();
+        throw InputError(sourceName, node ? sourceLine(*node) : 0, first.field, first.message);
+    }
     return out;
 }
 
@@ -241,6 +250,12 @@ std::string presetToToml(const Scene& scene, const std::string& name, const std:
 
 void savePreset(const Scene& scene, const std::filesystem::path& path, const std::string& name,
                 const std::string& description) {
+    // A preset that would not load back is not written; the file (no line yet) is the target.
+    const std::vector<SceneProblem> problems = validateScene(scene);
+    if (!problems.empty()) {
+        const SceneProblem& first = problems.front();
+        throw InputError(path.string(), 0, first.field, first.message);
+    }
     writeFileAtomic(path, presetToToml(scene, name, description));
 }
 

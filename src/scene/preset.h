@@ -10,10 +10,14 @@
 //
 // Reading starts from Scene{} so absent keys keep their defaults; present
 // keys are type- and range-checked (every component of a vector) and a bad
-// one is an InputError naming file, line and key path. Keys and tables the
-// parameter table does not know are not errors: each becomes a warning
-// ("earth.toml:7: unknown key 'planet.radius' (ignored); did you mean
-// 'planet.radius_km'?") so an old binary can still read a newer preset.
+// one is an InputError naming file, line and key path. After all keys are
+// read the scene must pass validateScene (scene_params.h: cross-field rules
+// such as atmosphere.top_radius_km > planet.radius_km); the first problem is
+// an InputError at the blamed key's line (0 when the file leaves it default).
+// Keys and tables the parameter table does not know are not errors: each
+// becomes a warning ("earth.toml:7: unknown key 'planet.radius' (ignored);
+// did you mean 'planet.radius_km'?") so an old binary can still read a newer
+// preset.
 //
 // Writing emits every parameter, grouped by section, each with a
 // "# help (unit, range)" comment, and numbers in the shortest form that reads
@@ -54,7 +58,8 @@ std::vector<std::string> availablePresets(const std::filesystem::path& assetsDir
 std::string presetToToml(const Scene& scene, const std::string& name, const std::string& description);
 
 // presetToToml written with writeFileAtomic; throws FileError on failure,
-// leaving any existing file untouched.
+// leaving any existing file untouched. A scene validateScene rejects is not
+// written: InputError naming the path and the blamed field.
 void savePreset(const Scene& scene, const std::filesystem::path& path, const std::string& name,
                 const std::string& description);
 

@@ -13,6 +13,8 @@
 
 #include <glm/glm.hpp>
 
+#include "atmosphere/atmosphere_params.h"
+
 namespace planet {
 
 struct PlanetParams {
@@ -37,6 +39,7 @@ struct RenderParams {
 
 struct Scene {
     PlanetParams planet;
+    AtmosphereParams atmosphere;  // bottom radius is planet.radius_km
     SunParams sun;
     RenderParams render;
 

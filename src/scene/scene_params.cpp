@@ -1,7 +1,13 @@
-// Scene parameter table and the geometry helpers of scene.h (see scene_params.h).
+// Scene parameter table, scene validation and the geometry helpers of scene.h
+// (see scene_params.h). The atmosphere rows live beside their struct, in
+// atmosphere/atmosphere_params.cpp.
 #include "scene/scene_params.h"
 
 #include <cmath>
+#include <variant>
+
+#include "atmosphere/atmosphere_params_table.h"
+#include "scene/toml_error.h"
 
 namespace planet {
 
@@ -25,6 +31,7 @@ std::vector<ParamSpec> buildTable() {
         [](Scene& s) { return ParamRef{&s.planet.radius_km}; });
     add("planet", "albedo", "", 0.0, 1.0, "Ground reflectance of the placeholder sphere, linear RGB.",
         [](Scene& s) { return ParamRef{&s.planet.albedo}; });
+    addAtmosphereParams(t);
     add("sun", "latitude_deg", "deg", -90.0, 90.0, "Latitude of the subsolar point.",
         [](Scene& s) { return ParamRef{&s.sun.latitude_deg}; });
     add("sun", "longitude_deg", "deg", -180.0, 180.0, "Longitude of the subsolar point.",
@@ -43,6 +50,55 @@ std::vector<ParamSpec> buildTable() {
 const std::vector<ParamSpec>& sceneParams() {
     static const std::vector<ParamSpec> table = buildTable();  // immutable after first use
     return table;
+}
+
+namespace {
+
+// Same wording as checkRange (toml_error.h), so a save and a load report alike.
+std::string outOfRange(double value, const ParamSpec& spec) {
+    std::string message = "value " + formatNumber(value) + " is out of range [" + formatNumber(spec.min) + ", " +
+                          formatNumber(spec.max) + "]";
+    return spec.unit.empty() ? message : message + " " + spec.unit;
+}
+
+void checkRanges(const Scene& scene, std::vector<SceneProblem>& problems) {
+    Scene copy = scene;  // the table's accessors take a mutable Scene
+    auto check = [&](double value, const ParamSpec& spec, const std::string& field) {
+        if (!(value >= spec.min && value <= spec.max)) problems.push_back({field, outOfRange(value, spec)});
+    };
+    for (const ParamSpec& spec : sceneParams()) {
+        const ParamRef ref = spec.field(copy);
+        if (const auto* d = std::get_if<double*>(&ref)) check(**d, spec, spec.path());
+        if (const auto* i = std::get_if<int*>(&ref)) check(**i, spec, spec.path());
+        if (const auto* v = std::get_if<glm::dvec3*>(&ref))
+            for (int c = 0; c < 3; ++c) check((**v)[c], spec, spec.path() + "[" + std::to_string(c) + "]");
+    }
+}
+
+}  // namespace
+
+std::vector<SceneProblem> validateScene(const Scene& scene) {
+    std::vector<SceneProblem> problems;
+    checkRanges(scene, problems);
+    const AtmosphereParams& a = scene.atmosphere;
+    if (!(a.top_radius_km > scene.planet.radius_km)) {
+        problems.push_back({"atmosphere.top_radius_km",
+                            "top of the atmosphere " + formatNumber(a.top_radius_km) +
+                                " km must be above planet.radius_km " + formatNumber(scene.planet.radius_km) +
+                                " km (the bottom of the atmosphere)"});
+    }
+    static const char* channel[3] = {"R", "G", "B"};
+    for (int c = 0; c < 3; ++c) {
+        if (a.mie_extinction_per_m[c] >= a.mie_scattering_per_m[c]) continue;
+        problems.push_back({"atmosphere.mie_extinction_per_m",
+                            std::string("component ") + std::to_string(c) + " (" + channel[c] + ") " +
+                                formatNumber(a.mie_extinction_per_m[c]) +
+                                " 1/m is below atmosphere.mie_scattering_per_m " +
+                                formatNumber(a.mie_scattering_per_m[c]) +
+                                " 1/m; extinction is scattering + absorption, so at least scattering"});
+        break;  // one problem per rule: the first component that breaks it
+    }
+    return problems;
 }
 
 }  // namespace planet

@@ -4,6 +4,9 @@
 // and how to reach the field inside a Scene. Presets are read and written by
 // walking this table; the explorer draws one widget per row. Ranges are
 // inclusive and apply to every component of a vector parameter.
+//
+// validateScene adds the rules a single row cannot express (cross-field
+// rules); presets are checked against it on load and before saving.
 #pragma once
 
 #include <functional>
@@ -29,7 +32,23 @@ struct ParamSpec {
     std::string path() const { return section + "." + key; }
 };
 
-// Every parameter of a Scene, grouped by section in a stable order.
+// Every parameter of a Scene, grouped by section in a stable order
+// (planet, atmosphere, sun, render).
 const std::vector<ParamSpec>& sceneParams();
+
+// One reason a scene is not valid, blamed on one parameter.
+struct SceneProblem {
+    std::string field;    // dotted path to blame, e.g. "atmosphere.top_radius_km" or "...[1]" for a component
+    std::string message;  // what is wrong, with the values involved
+};
+
+// Everything that makes a scene unusable, in a stable order: first each
+// parameter outside its table range (worded as checkRange words it), then
+// the cross-field rules:
+//   - atmosphere.top_radius_km > planet.radius_km (the atmosphere's bottom);
+//   - atmosphere.mie_extinction_per_m >= atmosphere.mie_scattering_per_m per
+//     component, since extinction = scattering + absorption.
+// Empty when the scene is valid: then presetToToml(scene) loads back.
+std::vector<SceneProblem> validateScene(const Scene& scene);
 
 }  // namespace planet

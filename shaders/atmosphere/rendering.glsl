@@ -1,0 +1,148 @@
+// Atmosphere lookups at render time, shared by GLSL and C++ (see functions.glsl).
+//
+// Sky radiance along a view ray (Sperlhofer Eq. 2-16), in-scattering and
+// transmittance between the camera and a surface point for aerial perspective
+// (Sperlhofer Eq. 4-16, 4-18; Elek Eq. 19-20), and the sun and sky irradiance
+// of a surface point (Elek Eq. 17, 20). Positions are relative to the planet
+// centre, in km. Sperlhofer 5.1 horizon fixes: in-scattering near the horizon
+// is interpolated from samples above and below it (5.1.2) and single Mie
+// scattering fades out as the sun sets (5.1.3).
+
+// Scattering table lookup returning the Rayleigh + multiple part and the single
+// Mie part, both without phase functions.
+Spectrum GetCombinedScattering(IN(AtmosphereParameters) atmosphere, IN(ScatteringTexture) scattering_texture,
+                               IN(ScatteringTexture) single_mie_scattering_texture, Length r, Number mu, Number mu_s,
+                               Number nu, bool ray_r_mu_intersects_ground, OUT(Spectrum) single_mie_scattering) {
+    single_mie_scattering =
+        GetScattering(atmosphere, single_mie_scattering_texture, r, mu, mu_s, nu, ray_r_mu_intersects_ground);
+    return GetScattering(atmosphere, scattering_texture, r, mu, mu_s, nu, ray_r_mu_intersects_ground);
+}
+
+Spectrum ApplyPhaseFunctions(IN(AtmosphereParameters) atmosphere, IN(Spectrum) scattering,
+                             IN(Spectrum) single_mie_scattering, Number nu) {
+    return scattering * RenderRayleighPhaseFunction(atmosphere, nu) +
+           single_mie_scattering * MiePhaseFunction(atmosphere.mie_phase_function_g, nu);
+}
+
+// Radiance scattered towards a camera at `camera` along `view_ray` up to the
+// ground or space, without the ground's own reflected light or the sun disc.
+// `transmittance` is that of the whole ray (0 if it hits the ground).
+Spectrum GetSkyRadiance(IN(AtmosphereParameters) atmosphere, IN(TransmittanceTexture) transmittance_texture,
+                        IN(ScatteringTexture) scattering_texture, IN(ScatteringTexture) single_mie_scattering_texture,
+                        IN(vec3) camera_position, IN(vec3) view_ray, IN(vec3) sun_direction,
+                        OUT(Spectrum) transmittance) {
+    vec3 camera = camera_position;
+    Length r = length(camera);
+    Length rmu = dot(camera, view_ray);
+    Length distance_to_top_atmosphere_boundary =
+        -rmu - sqrt(rmu * rmu - r * r + atmosphere.top_radius * atmosphere.top_radius);
+    // From space, start where the ray enters the atmosphere.
+    if (distance_to_top_atmosphere_boundary > 0.0) {
+        camera = camera + view_ray * distance_to_top_atmosphere_boundary;
+        r = atmosphere.top_radius;
+        rmu += distance_to_top_atmosphere_boundary;
+    } else if (r > atmosphere.top_radius) {
+        transmittance = Spectrum(1.0);  // the ray misses the atmosphere
+        return Spectrum(0.0);
+    }
+    Number mu = rmu / r;
+    Number mu_s = dot(camera, sun_direction) / r;
+    Number nu = dot(view_ray, sun_direction);
+    bool ray_r_mu_intersects_ground = RayIntersectsGround(atmosphere, r, mu);
+
+    transmittance = ray_r_mu_intersects_ground
+                        ? Spectrum(0.0)
+                        : GetTransmittanceToTopAtmosphereBoundary(atmosphere, transmittance_texture, r, mu);
+    Spectrum single_mie_scattering;
+    Spectrum scattering = GetCombinedScattering(atmosphere, scattering_texture, single_mie_scattering_texture, r, mu,
+                                                mu_s, nu, ray_r_mu_intersects_ground, single_mie_scattering);
+    return ApplyPhaseFunctions(atmosphere, scattering, single_mie_scattering, nu);
+}
+
+// In-scattering between (r, mu) and the point at distance d along the ray
+// (Sperlhofer Eq. 4-18: L(a->b) = L(a->inf) - T(a->b) L(b->inf)), phase-free.
+Spectrum ScatteringBetween(IN(AtmosphereParameters) atmosphere, IN(TransmittanceTexture) transmittance_texture,
+                           IN(ScatteringTexture) scattering_texture,
+                           IN(ScatteringTexture) single_mie_scattering_texture, Length r, Number mu, Number mu_s,
+                           Number nu, Length d, OUT(Spectrum) transmittance, OUT(Spectrum) single_mie_scattering) {
+    bool ray_r_mu_intersects_ground = RayIntersectsGround(atmosphere, r, mu);
+    transmittance = GetTransmittance(atmosphere, transmittance_texture, r, mu, d, ray_r_mu_intersects_ground);
+    Spectrum scattering = GetCombinedScattering(atmosphere, scattering_texture, single_mie_scattering_texture, r, mu,
+                                                mu_s, nu, ray_r_mu_intersects_ground, single_mie_scattering);
+    Length r_p = ClampRadius(atmosphere, sqrt(d * d + 2.0 * r * mu * d + r * r));
+    Number mu_p = ClampCosine((r * mu + d) / r_p);
+    Number mu_s_p = ClampCosine((r * mu_s + d * nu) / r_p);
+    Spectrum single_mie_scattering_p;
+    Spectrum scattering_p = GetCombinedScattering(atmosphere, scattering_texture, single_mie_scattering_texture, r_p,
+                                                  mu_p, mu_s_p, nu, ray_r_mu_intersects_ground,
+                                                  single_mie_scattering_p);
+    single_mie_scattering = max(single_mie_scattering - transmittance * single_mie_scattering_p, Spectrum(0.0));
+    return max(scattering - transmittance * scattering_p, Spectrum(0.0));
+}
+
+// Aerial perspective: radiance scattered towards the camera between the camera
+// and `point`, and the transmittance between them.
+Spectrum GetSkyRadianceToPoint(IN(AtmosphereParameters) atmosphere, IN(TransmittanceTexture) transmittance_texture,
+                               IN(ScatteringTexture) scattering_texture,
+                               IN(ScatteringTexture) single_mie_scattering_texture, IN(vec3) camera_position,
+                               IN(vec3) point, IN(vec3) sun_direction, OUT(Spectrum) transmittance) {
+    vec3 camera = camera_position;
+    vec3 view_ray = normalize(point - camera);
+    Length r = length(camera);
+    Length rmu = dot(camera, view_ray);
+    Length distance_to_top_atmosphere_boundary =
+        -rmu - sqrt(rmu * rmu - r * r + atmosphere.top_radius * atmosphere.top_radius);
+    if (distance_to_top_atmosphere_boundary > 0.0) {
+        camera = camera + view_ray * distance_to_top_atmosphere_boundary;
+        r = atmosphere.top_radius;
+        rmu += distance_to_top_atmosphere_boundary;
+    }
+    Number mu = rmu / r;
+    Number mu_s = dot(camera, sun_direction) / r;
+    Number nu = dot(view_ray, sun_direction);
+    Length d = length(point - camera);
+
+    // Sperlhofer 5.1.2: the table's two halves meet at the horizon, where the
+    // difference of two large, nearly equal lookups is unreliable. Within EPS
+    // of it, interpolate between rays just above and just below.
+    const Number EPS = 0.004;
+    Number mu_horizon = -SafeSqrt(1.0 - (atmosphere.bottom_radius / r) * (atmosphere.bottom_radius / r));
+    Spectrum single_mie_scattering;
+    Spectrum scattering;
+    if (abs(mu - mu_horizon) < EPS) {
+        Number a = (mu - mu_horizon + EPS) / (2.0 * EPS);
+        Spectrum transmittance_below;
+        Spectrum mie_below;
+        Spectrum below = ScatteringBetween(atmosphere, transmittance_texture, scattering_texture,
+                                           single_mie_scattering_texture, r, mu_horizon - EPS, mu_s, nu, d,
+                                           transmittance_below, mie_below);
+        Spectrum transmittance_above;
+        Spectrum mie_above;
+        Spectrum above = ScatteringBetween(atmosphere, transmittance_texture, scattering_texture,
+                                           single_mie_scattering_texture, r, mu_horizon + EPS, mu_s, nu, d,
+                                           transmittance_above, mie_above);
+        scattering = mix(below, above, a);
+        single_mie_scattering = mix(mie_below, mie_above, a);
+        transmittance = mix(transmittance_below, transmittance_above, a);
+    } else {
+        scattering = ScatteringBetween(atmosphere, transmittance_texture, scattering_texture,
+                                       single_mie_scattering_texture, r, mu, mu_s, nu, d, transmittance,
+                                       single_mie_scattering);
+    }
+    // Sperlhofer 5.1.3: single Mie scattering is unreliable once the sun has set.
+    single_mie_scattering = single_mie_scattering * smoothstep(Number(0.0), Number(0.01), mu_s);
+    return ApplyPhaseFunctions(atmosphere, scattering, single_mie_scattering, nu);
+}
+
+// Irradiance of a surface point with a given normal: direct sun through the
+// atmosphere (Elek Eq. 17) returned, sky irradiance (the precomputed horizontal
+// value scaled for the tilt of the normal) in `sky_irradiance`.
+Spectrum GetSunAndSkyIrradiance(IN(AtmosphereParameters) atmosphere, IN(TransmittanceTexture) transmittance_texture,
+                                IN(IrradianceTexture) irradiance_texture, IN(vec3) point, IN(vec3) normal,
+                                IN(vec3) sun_direction, OUT(Spectrum) sky_irradiance) {
+    Length r = length(point);
+    Number mu_s = dot(point, sun_direction) / r;
+    sky_irradiance = GetIrradiance(atmosphere, irradiance_texture, r, mu_s) * (1.0 + dot(normal, point) / r) * 0.5;
+    return atmosphere.solar_irradiance * GetTransmittanceToSun(atmosphere, transmittance_texture, r, mu_s) *
+           max(dot(normal, sun_direction), Number(0.0));
+}

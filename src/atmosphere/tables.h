@@ -1,0 +1,75 @@
+// Atmosphere lookup tables: sizes, and CPU-side texel storage with the same
+// filtering as the GPU's (GL_LINEAR, GL_CLAMP_TO_EDGE) so the shared model
+// code can "sample" them when compiled as C++.
+//
+//   transmittance  2D  (mu, r)                      RGB: transmittance to the top boundary
+//   scattering     3D  (nu * mu_s, mu, r)           RGB: Rayleigh + multiple orders, phase-free
+//   single_mie     3D  same                         RGB: single Mie, phase-free
+//   irradiance     2D  (mu_s, r)                    RGB: sky irradiance (direct sun excluded)
+#pragma once
+
+#include <cstddef>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+namespace planet::atmosphere {
+
+struct TableSizes {
+    int transmittance_width = 256;   // mu
+    int transmittance_height = 64;   // r
+    int scattering_r = 32;
+    int scattering_mu = 128;
+    int scattering_mu_s = 32;
+    int scattering_nu = 8;
+    int irradiance_width = 64;       // mu_s
+    int irradiance_height = 16;      // r
+
+    // Small tables for tests and interactive tuning on software renderers.
+    static TableSizes reduced() { return {64, 16, 8, 32, 8, 4, 16, 4}; }
+    glm::ivec3 scatteringSize() const { return {scattering_nu * scattering_mu_s, scattering_mu, scattering_r}; }
+    // Bytes of the four tables as RGBA32F textures.
+    std::size_t bytes() const;
+    bool operator==(const TableSizes&) const = default;
+};
+
+struct Table2D {
+    int width = 0, height = 0;
+    std::vector<glm::dvec4> texels;  // row-major, row 0 = v 0
+
+    Table2D() = default;
+    Table2D(int w, int h) : width(w), height(h), texels(static_cast<std::size_t>(w) * h, glm::dvec4(0.0)) {}
+    glm::dvec4& at(int x, int y) { return texels[static_cast<std::size_t>(y) * width + x]; }
+    const glm::dvec4& at(int x, int y) const { return texels[static_cast<std::size_t>(y) * width + x]; }
+};
+
+struct Table3D {
+    int width = 0, height = 0, depth = 0;
+    std::vector<glm::dvec4> texels;  // x fastest, then y, then z
+
+    Table3D() = default;
+    Table3D(glm::ivec3 s)
+        : width(s.x), height(s.y), depth(s.z), texels(static_cast<std::size_t>(s.x) * s.y * s.z, glm::dvec4(0.0)) {}
+    glm::dvec4& at(int x, int y, int z) {
+        return texels[(static_cast<std::size_t>(z) * height + y) * width + x];
+    }
+    const glm::dvec4& at(int x, int y, int z) const {
+        return texels[(static_cast<std::size_t>(z) * height + y) * width + x];
+    }
+};
+
+// Bilinear / trilinear lookups at normalised coordinates, clamped to the edge
+// texels: what texture() returns for a GL_LINEAR, GL_CLAMP_TO_EDGE texture.
+glm::dvec4 texture(const Table2D& table, const glm::dvec2& uv);
+glm::dvec4 texture(const Table3D& table, const glm::dvec3& uvw);
+
+// The full set of precomputed tables.
+struct AtmosphereTables {
+    TableSizes sizes;
+    Table2D transmittance;
+    Table3D scattering;
+    Table3D singleMie;
+    Table2D irradiance;
+};
+
+}  // namespace planet::atmosphere
