@@ -24,6 +24,7 @@ protected:
         gl::installDebugOutput(&messages_);
     }
     static void TearDownTestSuite() { context_.reset(); }
+    void SetUp() override { messages_ = {}; }  // one test's GL errors must not fail the next
     void TearDown() override { EXPECT_EQ(messages_.errors, 0) << "GL errors reported through KHR_debug"; }
 
     static inline std::unique_ptr<gl::HeadlessContext> context_;

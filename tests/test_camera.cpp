@@ -5,7 +5,7 @@
 
 #include <gtest/gtest.h>
 
-#include "app/camera.h"
+#include "scene/camera.h"
 #include "app/camera_controller.h"
 #include "scene/scene.h"
 

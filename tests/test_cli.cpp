@@ -151,6 +151,59 @@ TEST_F(CliTest, ExploreWithoutDisplayRendersAStillAndSaysWhere) {
     EXPECT_TRUE(fs::exists(dir / "still.png"));
 }
 
+TEST_F(CliTest, OneBadOutputMeansNoOutputAtAll) {
+    // The second output cannot be written: the first must not be left behind.
+    const auto r = runCommand(planet("render --size 32x18 --out good.png --out /proc/no/such/x.exr"));
+    EXPECT_NE(r.exitCode, 0);
+    EXPECT_TRUE(contains(r.output, "/proc/no/such/x.exr")) << r.output;
+    EXPECT_FALSE(fs::exists(dir / "good.png"));
+    const auto b = runCommand(planet("bench --size 16x9 --frames 1 --warmup 0 --csv b.csv --plot /proc/no/plot.png"));
+    EXPECT_NE(b.exitCode, 0);
+    EXPECT_FALSE(fs::exists(dir / "b.csv"));
+}
+
+TEST_F(CliTest, ExposureIsRangeCheckedAndStoredInTheExr) {
+    for (const char* bad : {"0", "-1", "inf", "1e30", "nan"}) {
+        const auto r = runCommand(planet(std::string("render --size 16x9 --exposure ") + bad + " --out a.exr"));
+        EXPECT_NE(r.exitCode, 0) << bad;
+        EXPECT_TRUE(contains(r.output, "--exposure")) << bad << ": " << r.output;
+    }
+    const auto r = runCommand(planet("render --size 16x9 --exposure 3.5 --out a.exr"));
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_DOUBLE_EQ(planet::readExrExposure(dir / "a.exr"), 3.5);
+}
+
+TEST_F(CliTest, ContextWithoutOpenGL45GetsAClearMessage) {
+    const auto r = runCommand("cd '" + dir.string() + "' && MESA_GL_VERSION_OVERRIDE=3.3 '" PLANET_EXE
+                              "' render --size 16x9 --out a.png");
+    EXPECT_NE(r.exitCode, 0);
+    EXPECT_TRUE(contains(r.output, "OpenGL 4.5")) << r.output;
+    EXPECT_FALSE(fs::exists(dir / "a.png"));
+}
+
+TEST_F(CliTest, WindowShowsTheSamePixelsAsTheStill) {
+    // With the panels hidden, the window's frame is the still `render` writes.
+    for (const char* view : {"orbit", "space"}) {
+        const std::string still = std::string(view) + ".png", shot = std::string(view) + "-window.png";
+        ASSERT_EQ(runCommand(planet(std::string("render --view ") + view + " --size 160x90 --out " + still)).exitCode, 0);
+        const auto r = runCommand("cd '" + dir.string() + "' && xvfb-run -a -s '-screen 0 640x480x24' '" PLANET_EXE
+                                  "' explore --no-panels --view " + view + " --size 160x90 --frames 3 --screenshot " +
+                                  shot);
+        ASSERT_EQ(r.exitCode, 0) << r.output;
+        int w1, h1, n1, w2, h2, n2;
+        unsigned char* a = stbi_load((dir / still).c_str(), &w1, &h1, &n1, 4);
+        unsigned char* b = stbi_load((dir / shot).c_str(), &w2, &h2, &n2, 4);
+        ASSERT_TRUE(a && b);
+        ASSERT_EQ(w1, w2);
+        ASSERT_EQ(h1, h2);
+        int differing = 0;
+        for (int i = 0; i < w1 * h1 * 4; ++i) differing += a[i] != b[i];
+        EXPECT_EQ(differing, 0) << view;
+        stbi_image_free(a);
+        stbi_image_free(b);
+    }
+}
+
 TEST_F(CliTest, ExplorerWindowRunsUnderXvfbAndShowsPanels) {
     // The one test that needs a window: Xvfb provides an X server (GLX on llvmpipe).
     const std::string cmd = "cd '" + dir.string() + "' && xvfb-run -a -s '-screen 0 1024x768x24' '" PLANET_EXE

@@ -15,6 +15,7 @@ namespace {
 class ProgramTest : public test::GLTest {
 protected:
     void SetUp() override {
+        GLTest::SetUp();
         root = fs::path(::testing::TempDir()) / ("program_test_" + std::to_string(::getpid()));
         fs::remove_all(root);
         fs::create_directories(root / "common");

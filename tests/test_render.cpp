@@ -15,7 +15,10 @@ constexpr glm::ivec2 kSize{160, 90};
 
 class RenderTest : public test::GLTest {
 protected:
-    void SetUp() override { renderer = std::make_unique<Renderer>(test::repoPaths().shaders()); }
+    void SetUp() override {
+        GLTest::SetUp();
+        renderer = std::make_unique<Renderer>(test::repoPaths().shaders());
+    }
     Session session(const std::string& preset, const std::string& view) {
         return loadSession(test::repoPaths(), preset, view);
     }
@@ -107,6 +110,34 @@ TEST_F(RenderTest, ExtremeCamerasAreHandled) {
         EXPECT_GE(s.camera.altitude(R), 0.09);
         EXPECT_TRUE(test::allFinite(renderHdr(s, {32, 18}))) << distance;
     }
+}
+
+TEST_F(RenderTest, TargetsCarryDebugLabels) {
+    const Session s = session("earth", "orbit");
+    renderer->render(s.scene, s.camera, kSize);
+    char label[64] = {};
+    GLsizei length = 0;
+    glGetObjectLabel(GL_TEXTURE, renderer->targets().hdr().id(), sizeof label, &length, label);
+    EXPECT_STREQ(label, "hdr");
+    glGetObjectLabel(GL_FRAMEBUFFER, renderer->targets().gbuffer().framebuffer.id(), sizeof label, &length, label);
+    EXPECT_STREQ(label, "gbuffer");
+}
+
+TEST_F(RenderTest, ViewWithoutSunKeysRestoresThePresetSun) {
+    Session s = session("earth", "orbit");  // orbit places the sun
+    ASSERT_NE(s.scene.sun.latitude_deg, s.presetScene.sun.latitude_deg);
+    View plain = s.view;
+    plain.sun_elevation_deg.reset();
+    plain.sun_azimuth_deg.reset();
+    applyView(plain, s);
+    EXPECT_EQ(s.scene.sun.latitude_deg, s.presetScene.sun.latitude_deg);
+    EXPECT_EQ(s.scene.sun.longitude_deg, s.presetScene.sun.longitude_deg);
+}
+
+TEST_F(RenderTest, CameraAtThePlanetCentreGivesNoNan) {
+    Session s = session("earth", "orbit");
+    s.camera.position = glm::dvec3(0.0);  // unsanitised: the renderer itself must stay finite
+    EXPECT_TRUE(test::allFinite(renderHdr(s, {32, 18})));
 }
 
 TEST_F(RenderTest, ZeroSizeRendersNothingAndKeepsTargets) {

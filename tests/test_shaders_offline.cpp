@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include "atmosphere/uniforms.h"
 #include "gl/shader_source.h"
 #include "process.h"
 #include "render/renderer.h"
@@ -20,7 +21,13 @@ TEST(ShadersOffline, EveryStageValidatesWithGlslang) {
         const std::string file = fs::relative(entry.path(), root).generic_string();
         const std::string stage = planet::gl::shaderStageName(file);
         if (stage.empty()) continue;
-        const auto expanded = planet::gl::expandShader(root, file, planet::shaderPreamble());
+        // The atmosphere's shaders need the table sizes and texture types the
+        // program builders inject (GpuPrecompute, the atmosphere pass).
+        const bool atmosphere = file.starts_with("atmosphere/");
+        const std::string preamble =
+            planet::shaderPreamble() +
+            (atmosphere ? planet::atmosphere::atmosphereShaderDefines(planet::atmosphere::TableSizes{}) : "");
+        const auto expanded = planet::gl::expandShader(root, file, preamble);
         const fs::path out = tmp / ("shader." + stage);
         std::ofstream(out) << expanded.text;
         const auto r = planet::test::runCommand(std::string(GLSLANG_VALIDATOR) + " " + out.string());

@@ -7,9 +7,9 @@ layout(std140, binding = 0) uniform FrameUniforms {
     vec4 planetCenterFromCamera;  // xyz: centre - camera (m); w: planet radius (m)
     vec4 cameraUp;                // xyz: radial up at the camera; w: camera altitude (m)
     vec4 sunDirection;            // xyz: towards the sun; w: angular radius (rad)
-    vec4 sunIrradiance;           // rgb: TOA irradiance; w: exposure
+    vec4 sunIrradiance;           // rgb: TOA irradiance
     vec4 viewport;                // w, h, 1/w, 1/h
-    vec4 depthParams;             // x: near (m)
+    vec4 camera;                  // x: near plane (m); y: exposure
 } frame;
 
 // World-oriented direction of the view ray through a point in NDC (x, y in [-1, 1]).
@@ -19,5 +19,5 @@ vec3 worldRayFromNdc(vec2 ndc) {
 }
 
 // Reversed-Z infinite projection: depth = near / distance along the view axis.
-float depthFromViewDistance(float viewDistance) { return frame.depthParams.x / viewDistance; }
-float viewDistanceFromDepth(float depth) { return frame.depthParams.x / depth; }
+float depthFromViewDistance(float viewDistance) { return frame.camera.x / viewDistance; }
+float viewDistanceFromDepth(float depth) { return frame.camera.x / depth; }

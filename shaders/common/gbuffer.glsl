@@ -1,4 +1,4 @@
-// G-buffer layout shared by the passes that write and read it (see src/render/gbuffer.h).
+// G-buffer layout shared by the passes that write and read it (see src/render/render_targets.h).
 //   location 0  normal    RGBA16F  xyz: unit surface normal, world axes
 //   location 1  albedo    RGBA8    rgb: linear albedo
 //   location 2  material  RGBA8    r: material id / 255, g: roughness

@@ -18,7 +18,7 @@ vec3 srgbFromLinear(vec3 c) {
 
 void main() {
     vec3 radiance = texelFetch(hdrRadiance, ivec2(gl_FragCoord.xy), 0).rgb;
-    float exposure = frame.sunIrradiance.w;
+    float exposure = frame.camera.y;
     vec3 display = 1.0 - exp(-exposure * max(radiance, vec3(0.0)));
     outColor = vec4(srgbFromLinear(clamp(display, 0.0, 1.0)), 1.0);
 }

@@ -23,7 +23,7 @@ void main() {
     // hit - centre, with the centre at -(R + h) up from the camera.
     vec3 normal = normalize(up * (radius + altitude) + hitFromCamera);
     float viewDistance = -(frame.viewFromWorld * vec4(hitFromCamera, 0.0)).z;
-    gl_FragDepth = depthFromViewDistance(max(viewDistance, frame.depthParams.x));
+    gl_FragDepth = depthFromViewDistance(max(viewDistance, frame.camera.x));
 
     outNormal = vec4(normal, 0.0);
     outAlbedo = vec4(uAlbedo, 1.0);

@@ -78,13 +78,23 @@ std::vector<BenchRow> measureView(Renderer& renderer, Session& session, glm::ive
     return rows;
 }
 
+// A CSV field, quoted when it holds a comma, quote or newline (RFC 4180).
+std::string csvField(const std::string& s) {
+    if (s.find_first_of(",\"\n") == std::string::npos) return s;
+    std::string quoted = "\"";
+    for (char ch : s) quoted += ch == '"' ? std::string("\"\"") : std::string(1, ch);
+    return quoted + "\"";
+}
+
 std::string csvText(const std::vector<BenchRow>& rows, const std::string& renderer, glm::ivec2 size) {
     std::ostringstream csv;
     csv << "renderer,width,height,view,pass,frames,gpu_median_ms,gpu_p95_ms,cpu_median_ms,cpu_p95_ms\n";
     for (const BenchRow& r : rows) {
         char line[512];
-        std::snprintf(line, sizeof line, "\"%s\",%d,%d,%s,%s,%zu,%.4f,%.4f,%.4f,%.4f\n", renderer.c_str(), size.x,
-                      size.y, r.view.c_str(), r.pass.c_str(), r.frames, r.gpuMedian, r.gpuP95, r.cpuMedian, r.cpuP95);
+        std::snprintf(line, sizeof line, ",%d,%d,", size.x, size.y);
+        csv << csvField(renderer) << line << csvField(r.view) << "," << csvField(r.pass);
+        std::snprintf(line, sizeof line, ",%zu,%.4f,%.4f,%.4f,%.4f\n", r.frames, r.gpuMedian, r.gpuP95, r.cpuMedian,
+                      r.cpuP95);
         csv << line;
     }
     return csv.str();
@@ -120,7 +130,11 @@ BarPlot gpuPlot(const std::vector<BenchRow>& rows, const std::string& renderer, 
 int runBench(const BenchOptions& o) {
     if (o.frames < 1 || o.frames > 100000) throw InputError("--frames must be in [1, 100000]");
     if (o.warmup < 0 || o.warmup > 100000) throw InputError("--warmup must be in [0, 100000]");
-    const glm::ivec2 size = parseSize(o.common.size.empty() ? "1280x720" : o.common.size);
+    const glm::ivec2 size = parseSize(o.common.size);
+    std::vector<std::string> outputs;
+    for (const std::string& f : {o.csv, o.plot})
+        if (!f.empty()) outputs.push_back(f);
+    checkOutputsWritable(outputs);
     const DataPaths paths = findDataPaths(o.common.root);
     Session session = loadSession(paths, o.common.preset, o.common.view);
     const std::vector<View> views = benchViews(o.views, paths);

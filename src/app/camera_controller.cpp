@@ -47,9 +47,11 @@ LevelPose levelPoseOf(const Camera& camera, const glm::dvec3& localUp) {
     return {right, std::atan2(glm::dot(f, localUp), glm::dot(f, level))};
 }
 
-glm::dquat orientationOf(const LevelPose& pose, const glm::dvec3& localUp) {
+// The pitch is clamped only where the user turns the camera (applyLook): a view
+// placed straight down (the space bookmark) stays exactly as placed.
+glm::dquat orientationOf(const LevelPose& pose, const glm::dvec3& localUp, bool clampPitch) {
     const double maxPitch = glm::radians(kMaxPitchDeg);
-    const double pitch = std::clamp(pose.pitch, -maxPitch, maxPitch);
+    const double pitch = clampPitch ? std::clamp(pose.pitch, -maxPitch, maxPitch) : pose.pitch;
     const glm::dvec3 level = glm::cross(localUp, pose.right);
     const glm::dvec3 forward = level * std::cos(pitch) + localUp * std::sin(pitch);
     return orientationFromAxes(pose.right, glm::cross(pose.right, forward), forward);
@@ -62,7 +64,7 @@ void applyLook(Camera& camera, const ControlInput& input, double sensitivity) {
     const double yaw = -input.lookDx * sensitivity;  // positive angle about up turns left
     pose.right = glm::normalize(glm::angleAxis(yaw, localUp) * pose.right);
     pose.pitch -= input.lookDy * sensitivity;
-    camera.orientation = orientationOf(pose, localUp);
+    camera.orientation = orientationOf(pose, localUp, true);
 }
 
 // Carries the orientation along with a move over the curved surface: the
@@ -80,7 +82,7 @@ void transportOrientation(Camera& camera, const glm::dvec3& oldUp, const glm::dv
 // Roll correction: rebuild the orientation level w.r.t. the current local up.
 void relevel(Camera& camera) {
     const glm::dvec3 localUp = localFrameAt(camera.position).up;
-    camera.orientation = orientationOf(levelPoseOf(camera, localUp), localUp);
+    camera.orientation = orientationOf(levelPoseOf(camera, localUp), localUp, false);
 }
 
 // --- Collision with the ground sphere ---------------------------------------
@@ -161,7 +163,7 @@ void CameraController::update(Camera& camera, const ControlInput& rawInput, doub
 
 void CameraController::updateFly(Camera& camera, const ControlInput& input, double dt, double planetRadiusM) {
     speedScale = std::clamp(speedScale * std::pow(kScrollSpeedFactor, input.scroll), kMinSpeedScale, kMaxSpeedScale);
-    applyLook(camera, input, lookSensitivity);
+    if (input.lookDx != 0.0 || input.lookDy != 0.0) applyLook(camera, input, lookSensitivity);
 
     const glm::dvec3 localUp = localFrameAt(camera.position).up;
     glm::dvec3 direction = camera.forward() * axis(input.forward, input.back) +
@@ -175,7 +177,7 @@ void CameraController::updateFly(Camera& camera, const ControlInput& input, doub
             stepAboveGround(camera.position, direction * (speed * dt), planetRadiusM + kCameraMinAltitudeM);
         transportOrientation(camera, localUp, localFrameAt(camera.position).up);
     }
-    relevel(camera);  // remove any roll w.r.t. the (new) local up and clamp the pitch
+    relevel(camera);  // remove any roll w.r.t. the (new) local up
 }
 
 void CameraController::updateOrbit(Camera& camera, const ControlInput& input, double planetRadiusM) const {

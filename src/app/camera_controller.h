@@ -14,7 +14,7 @@
 
 #include <string>
 
-#include "app/camera.h"
+#include "scene/camera.h"
 
 namespace planet {
 

@@ -11,7 +11,7 @@ struct CommonOptions {
     std::string root;              // data folder with shaders/ and assets/
     std::string preset = "earth";  // name under assets/presets or a path
     std::string view = "orbit";    // bookmark name under assets/views
-    std::string size;              // WIDTHxHEIGHT; each command has its default
+    std::string size = "1280x720"; // WIDTHxHEIGHT
     bool glDebug = false;          // KHR_debug output (synchronous)
 };
 
@@ -19,6 +19,7 @@ struct ExploreOptions {
     CommonOptions common;
     int frames = 0;                    // quit after this many frames (0: run until closed)
     std::string screenshot;            // PNG of the window (UI included) after the last frame
+    bool noPanels = false;             // start with the panels hidden (F1 shows them)
     std::string headlessOut = "out/planet.png";  // still written when there is no display
 };
 
@@ -43,6 +44,6 @@ int runBench(const BenchOptions& options);
 
 // Renders one still headlessly (shared by `render` and explore's no-display fallback).
 void renderStill(const CommonOptions& common, const std::vector<std::string>& outputs,
-                 std::optional<double> exposure, const char* defaultSize);
+                 std::optional<double> exposure);
 
 }  // namespace planet

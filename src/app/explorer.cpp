@@ -138,7 +138,9 @@ class Explorer {
 public:
     Explorer(const ExploreOptions& options, GLFWwindow* window, const DataPaths& paths, Session session)
         : options_(options), window_(window), session_(std::move(session)), renderer_(paths.shaders()),
-          rendererName_(gl::rendererDescription()), presetPath_(session_.presetPath.string()) {
+          rendererName_(gl::rendererDescription()),
+          presetPath_("out/presets/" + session_.presetName + ".toml"),  // never the shipped preset by default
+          showUi_(!options.noPanels) {
         glfwSetWindowUserPointer(window_, &pending_);
         glfwSetScrollCallback(window_, [](GLFWwindow* w, double, double dy) {
             static_cast<PendingInput*>(glfwGetWindowUserPointer(w))->scroll += dy;
@@ -164,10 +166,11 @@ private:
     std::string rendererName_;
     std::string presetPath_;
     std::string status_;
-    bool showUi_ = true;
+    bool showUi_;
     bool screenshotRequested_ = false;
     PendingInput pending_;
     std::chrono::steady_clock::time_point lastShaderPoll_{};
+    std::vector<std::string> lastShaderErrors_;  // logged once each
 };
 
 void Explorer::handleKeys() {
@@ -192,6 +195,11 @@ void Explorer::pollShaders() {
     if (now - lastShaderPoll_ < std::chrono::milliseconds(500)) return;
     lastShaderPoll_ = now;
     if (renderer_.reloadShaders()) logInfo("shaders reloaded");
+    std::vector<std::string> errors = renderer_.shaderErrors();
+    if (errors != lastShaderErrors_) {
+        for (const std::string& e : errors) logError(e);
+        lastShaderErrors_ = std::move(errors);
+    }
 }
 
 void Explorer::savePreset() {
@@ -265,12 +273,12 @@ int runExplore(const ExploreOptions& options) {
     if (!displayAvailable()) {
         std::cout << "No display found (DISPLAY and WAYLAND_DISPLAY are unset): rendering a still instead."
                   << std::endl;
-        renderStill(options.common, {options.headlessOut}, std::nullopt, "1280x720");
+        renderStill(options.common, {options.headlessOut}, std::nullopt);
         return 0;
     }
     const DataPaths paths = findDataPaths(options.common.root);
     Session session = loadSession(paths, options.common.preset, options.common.view);
-    const glm::ivec2 size = parseSize(options.common.size.empty() ? "1280x720" : options.common.size);
+    const glm::ivec2 size = parseSize(options.common.size);
 
     gl::DebugMessages messages;  // outlives the context that reports into it
     GlfwLibrary glfw;

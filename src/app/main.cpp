@@ -4,20 +4,16 @@
 #include <iostream>
 
 #include "app/commands.h"
-#include "gl/context.h"
-#include "gl/shader_source.h"
-#include "scene/toml_error.h"
-#include "util/file_util.h"
 
 namespace {
 
-void addCommon(CLI::App& cmd, planet::CommonOptions& o, const char* defaultSize) {
+void addCommon(CLI::App& cmd, planet::CommonOptions& o) {
     cmd.add_option("--root", o.root, "Data folder holding shaders/ and assets/ (default: PLANET_ROOT or the source tree)");
     cmd.add_option("--preset", o.preset, "Preset name under assets/presets/ or a path to a .toml file")
         ->capture_default_str();
     cmd.add_option("--view", o.view, "View bookmark name under assets/views/ (ground, beach, clouds, orbit, space, ...)")
         ->capture_default_str();
-    cmd.add_option("--size", o.size, std::string("Image size WIDTHxHEIGHT (default ") + defaultSize + ")");
+    cmd.add_option("--size", o.size, "Image size WIDTHxHEIGHT")->capture_default_str();
     cmd.add_flag("--gl-debug", o.glDebug, "Ask for a debug GL context and report KHR_debug messages synchronously");
 }
 
@@ -31,15 +27,16 @@ int main(int argc, char** argv) {
     planet::ExploreOptions explore;
     CLI::App* exploreCmd = app.add_subcommand("explore", "Interactive window: fly from the ground to space, tune "
                                                          "parameters, see per-pass frame time (the default)");
-    addCommon(*exploreCmd, explore.common, "1280x720");
+    addCommon(*exploreCmd, explore.common);
     exploreCmd->add_option("--frames", explore.frames, "Quit after this many frames (0: run until closed)");
     exploreCmd->add_option("--screenshot", explore.screenshot, "Write a PNG of the window, panels included, at the end");
+    exploreCmd->add_flag("--no-panels", explore.noPanels, "Start with the panels hidden (F1 toggles them)");
     exploreCmd->add_option("--headless-out", explore.headlessOut, "Where the still goes when there is no display")
         ->capture_default_str();
 
     planet::RenderOptions render;
     CLI::App* renderCmd = app.add_subcommand("render", "Render a still headlessly (EGL) to PNG and/or OpenEXR");
-    addCommon(*renderCmd, render.common, "1280x720");
+    addCommon(*renderCmd, render.common);
     renderCmd->add_option("--out,-o", render.outputs,
                           "Output file(s): .png = tone-mapped sRGB, .exr = linear HDR radiance (half RGBA)")
         ->required();
@@ -47,7 +44,7 @@ int main(int argc, char** argv) {
 
     planet::BenchOptions bench;
     CLI::App* benchCmd = app.add_subcommand("bench", "Time each pass over scripted views; table, CSV and plot");
-    addCommon(*benchCmd, bench.common, "1280x720");
+    addCommon(*benchCmd, bench.common);
     benchCmd->add_option("--views", bench.views, "View files or folders of them (default: assets/views)");
     benchCmd->add_option("--frames", bench.frames, "Recorded frames per view")->capture_default_str();
     benchCmd->add_option("--warmup", bench.warmup, "Unrecorded frames per view before recording")->capture_default_str();
@@ -61,16 +58,8 @@ int main(int argc, char** argv) {
         if (renderCmd->parsed()) return planet::runRender(render);
         if (benchCmd->parsed()) return planet::runBench(bench);
         return planet::runExplore(explore);
-    } catch (const planet::InputError& e) {
+    } catch (const std::exception& e) {  // InputError, FileError, ContextError, ShaderError, ...
         std::cerr << "planet: error: " << e.what() << "\n";
-    } catch (const planet::FileError& e) {
-        std::cerr << "planet: error: " << e.what() << "\n";
-    } catch (const planet::gl::ContextError& e) {
-        std::cerr << "planet: error: " << e.what() << "\n";
-    } catch (const planet::gl::ShaderError& e) {
-        std::cerr << "planet: shader error: " << e.what() << "\n";
-    } catch (const std::exception& e) {
-        std::cerr << "planet: unexpected error: " << e.what() << "\n";
     }
     return 1;
 }

@@ -32,7 +32,7 @@ void historyGraph(const char* label, const RollingStats& stats) {
     char overlay[64];
     std::snprintf(overlay, sizeof overlay, "%s  median %.2f ms", label, stats.median());
     ImGui::PlotLines("##graph", values.data(), static_cast<int>(values.size()), 0, overlay, 0.0f, std::max(top, 0.1f),
-                     ImVec2(-1.0f, 70.0f));
+                     ImVec2(ImGui::GetContentRegionAvail().x, 70.0f));
 }
 
 bool paramWidget(const ParamSpec& spec, Scene& scene) {

@@ -25,18 +25,20 @@ void checkOutputs(const std::vector<std::string>& outputs) {
         if (ext != ".png" && ext != ".exr")
             throw InputError("--out '" + out + "': unknown image type '" + ext + "' (use .png or .exr)");
     }
+    checkOutputsWritable(outputs);
 }
 
 }  // namespace
 
 void renderStill(const CommonOptions& common, const std::vector<std::string>& outputs,
-                 std::optional<double> exposure, const char* defaultSize) {
+                 std::optional<double> exposure) {
     checkOutputs(outputs);
-    const glm::ivec2 size = parseSize(common.size.empty() ? defaultSize : common.size);
+    const glm::ivec2 size = parseSize(common.size);
     const DataPaths paths = findDataPaths(common.root);
     Session session = loadSession(paths, common.preset, common.view);
     if (exposure) {
-        if (!(*exposure > 0.0)) throw InputError("--exposure must be positive");
+        // Same range as the preset's render.exposure.
+        if (!(*exposure >= 1e-3 && *exposure <= 1e3)) throw InputError("--exposure must be in [0.001, 1000]");
         session.scene.render.exposure = *exposure;
     }
 
@@ -58,7 +60,7 @@ void renderStill(const CommonOptions& common, const std::vector<std::string>& ou
 }
 
 int runRender(const RenderOptions& options) {
-    renderStill(options.common, options.outputs, options.exposure, "1280x720");
+    renderStill(options.common, options.outputs, options.exposure);
     return 0;
 }
 

@@ -1,6 +1,10 @@
 #include "app/session.h"
 
+#include <cerrno>
+#include <cstdio>
 #include <cstdlib>
+#include <cstring>
+#include <unistd.h>
 #include <regex>
 
 #include "scene/preset.h"
@@ -18,15 +22,14 @@ DataPaths findDataPaths(const std::string& rootOption) {
         root = env && *env ? fs::path(env) : fs::path(PLANET_SOURCE_DIR);
     }
     DataPaths paths{root};
-    if (!fs::is_directory(paths.shaders()) || !fs::is_directory(paths.assets())) {
-        InputError e("data folder '" + root.string() + "' has no shaders/ and assets/ (set --root or PLANET_ROOT)");
-        throw e;
-    }
+    if (!fs::is_directory(paths.shaders()) || !fs::is_directory(paths.assets()))
+        throw InputError("data folder '" + root.string() + "' has no shaders/ and assets/ (set --root or PLANET_ROOT)");
     return paths;
 }
 
 void applyView(const View& view, Session& session) {
     session.view = view;
+    session.scene.sun = session.presetScene.sun;  // a previous view's sun must not linger
     applyViewSun(view, session.scene);
     session.camera = cameraAtGeographic(view.latitude_deg, view.longitude_deg, view.altitude_m, view.heading_deg,
                                         view.pitch_deg, view.fov_deg, session.scene.planetRadiusM());
@@ -40,10 +43,26 @@ Session loadSession(const DataPaths& paths, const std::string& preset, const std
     PresetLoad load = loadPreset(s.presetPath);
     for (const std::string& w : load.warnings) logWarning(w);
     s.scene = load.scene;
+    s.presetScene = load.scene;
     s.presetName = s.presetPath.stem().string();
     s.views = loadViews(paths.views());
     applyView(findView(s.views, viewName), s);
     return s;
+}
+
+void checkOutputsWritable(const std::vector<std::string>& outputs) {
+    for (const std::string& out : outputs) {
+        const fs::path path = fs::absolute(out);
+        std::error_code ec;
+        fs::create_directories(path.parent_path(), ec);
+        const fs::path probe = path.parent_path() / (".planet-write-test-" + std::to_string(::getpid()));
+        FILE* f = std::fopen(probe.c_str(), "wb");
+        if (!f || fs::is_directory(path))
+            throw InputError("cannot write '" + out + "': " +
+                             (fs::is_directory(path) ? std::string("it is a folder") : std::strerror(errno)));
+        std::fclose(f);
+        fs::remove(probe, ec);
+    }
 }
 
 glm::ivec2 parseSize(const std::string& text) {

@@ -10,7 +10,7 @@
 
 #include <glm/glm.hpp>
 
-#include "app/camera.h"
+#include "scene/camera.h"
 #include "app/views.h"
 #include "scene/scene.h"
 
@@ -27,7 +27,8 @@ struct DataPaths {
 DataPaths findDataPaths(const std::string& rootOption);
 
 struct Session {
-    Scene scene;
+    Scene scene;        // what is rendered: the preset, tuned live, with the view's sun
+    Scene presetScene;  // the preset as loaded; a view without sun keys restores its sun
     std::string presetName;
     std::filesystem::path presetPath;
     std::vector<View> views;
@@ -44,5 +45,10 @@ void applyView(const View& view, Session& session);
 
 // "640x360" -> {640, 360}; throws InputError for anything else or sides outside [1, 16384].
 glm::ivec2 parseSize(const std::string& text);
+
+// Checks that each output file can be created (its folder exists or can be
+// made, and is writable) before any work is done, so that a bad path fails
+// fast and no other output is left half-done. Throws InputError naming the file.
+void checkOutputsWritable(const std::vector<std::string>& outputs);
 
 }  // namespace planet

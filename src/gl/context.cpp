@@ -74,7 +74,12 @@ HeadlessContext::HeadlessContext(bool debug) {
         display_ = a.display;
         context_ = ctx;
         platform_ = a.platform;
-        requireGL45();
+        try {
+            requireGL45();
+        } catch (...) {
+            release();  // the destructor does not run for a throwing constructor
+            throw;
+        }
         return;
     }
     throw ContextError("could not create a headless OpenGL 4.5 core context through EGL:" +
@@ -82,11 +87,14 @@ HeadlessContext::HeadlessContext(bool debug) {
                        "\n  (install Mesa's libegl-mesa0 and libgl1-mesa-dri, or a GPU driver with EGL)");
 }
 
-HeadlessContext::~HeadlessContext() {
+HeadlessContext::~HeadlessContext() { release(); }
+
+void HeadlessContext::release() {
     if (!display_) return;
     eglMakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
     eglDestroyContext(display_, context_);
     eglTerminate(display_);
+    display_ = context_ = nullptr;
 }
 
 void requireGL45() {

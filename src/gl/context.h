@@ -26,6 +26,8 @@ public:
     const std::string& platform() const { return platform_; }
 
 private:
+    void release();
+
     void* display_ = nullptr;
     void* context_ = nullptr;
     std::string platform_;

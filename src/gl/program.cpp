@@ -1,5 +1,6 @@
 #include "gl/program.h"
 
+#include <algorithm>
 #include <system_error>
 
 namespace planet::gl {
@@ -39,7 +40,9 @@ Shader compileStage(const ShaderSources& sources, const std::string& file, std::
     glCompileShader(shader.id());
     GLint ok = GL_FALSE;
     glGetShaderiv(shader.id(), GL_COMPILE_STATUS, &ok);
-    if (!ok) throw ShaderError("compiling " + file + ":\n" + translateShaderLog(infoLog(shader.id(), false), expanded.files));
+    if (!ok)
+        throw ShaderError("compiling " + file + ":\n" + translateShaderLog(infoLog(shader.id(), false), expanded.files),
+                          files);
     shader.label(file);
     return shader;
 }
@@ -61,11 +64,12 @@ Program buildProgram(const ShaderSources& sources, const ProgramDesc& desc) {
 }
 
 HotProgram::HotProgram(const ShaderSources& sources, ProgramDesc desc)
-    : sources_(sources), desc_(std::move(desc)), program_(buildProgram(sources_, desc_)), builtFrom_(newestTime()) {}
+    : sources_(sources), desc_(std::move(desc)), program_(buildProgram(sources_, desc_)), watched_(program_.files),
+      builtFrom_(newestTime()) {}
 
 fs::file_time_type HotProgram::newestTime() const {
     auto newest = fs::file_time_type::min();  // file_clock's epoch is in the future on libstdc++
-    for (const std::string& f : program_.files) {
+    for (const std::string& f : watched_) {
         std::error_code ec;
         const auto t = fs::last_write_time(sources_.root / f, ec);
         if (!ec && t > newest) newest = t;
@@ -79,10 +83,15 @@ bool HotProgram::reloadIfChanged(bool force) {
     builtFrom_ = newest;  // a broken edit is reported once, not every poll
     try {
         program_ = buildProgram(sources_, desc_);
+        watched_ = program_.files;
         builtFrom_ = newestTime();
         error_.clear();
         return true;
     } catch (const ShaderError& e) {
+        // Also watch files the broken edit brought in (a new include), so fixing them reloads.
+        for (const std::string& f : e.files)
+            if (std::find(watched_.begin(), watched_.end(), f) == watched_.end()) watched_.push_back(f);
+        builtFrom_ = newestTime();
         error_ = e.what();
         return false;
     }

@@ -52,6 +52,7 @@ private:
     ShaderSources sources_;
     ProgramDesc desc_;
     Program program_;
+    std::vector<std::string> watched_;  // files whose change triggers a rebuild
     std::filesystem::file_time_type builtFrom_{};
     std::string error_;
 };

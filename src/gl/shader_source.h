@@ -21,7 +21,9 @@
 namespace planet::gl {
 
 struct ShaderError : std::runtime_error {
-    using std::runtime_error::runtime_error;
+    explicit ShaderError(const std::string& message, std::vector<std::string> sourceFiles = {})
+        : std::runtime_error(message), files(std::move(sourceFiles)) {}
+    std::vector<std::string> files;  // the files of the failed build, when known (for hot reload to watch)
 };
 
 struct ExpandedShader {

@@ -9,7 +9,7 @@
 
 #include <glm/glm.hpp>
 
-#include "app/camera.h"
+#include "scene/camera.h"
 #include "scene/scene.h"
 
 namespace planet {
@@ -22,9 +22,9 @@ struct FrameUniforms {
     glm::vec4 planetCenterFromCamera; // xyz: centre - camera (m, world axes); w: planet radius (m)
     glm::vec4 cameraUp;               // xyz: radial unit up at the camera; w: camera altitude (m), from double
     glm::vec4 sunDirection;           // xyz: unit vector towards the sun (world axes); w: angular radius (rad)
-    glm::vec4 sunIrradiance;          // rgb: solar irradiance at the top of the atmosphere; w: exposure
+    glm::vec4 sunIrradiance;          // rgb: solar irradiance at the top of the atmosphere; w: unused
     glm::vec4 viewport;               // width, height, 1/width, 1/height (pixels)
-    glm::vec4 depthParams;            // x: near plane (m); yzw: unused
+    glm::vec4 camera;                 // x: near plane (m); y: exposure; zw: unused
 };
 static_assert(sizeof(FrameUniforms) == 4 * 64 + 6 * 16, "FrameUniforms must match the std140 GLSL block");
 

@@ -99,4 +99,17 @@ ImageRGBAF readExr(const std::filesystem::path& path) {
     }
 }
 
+double readExrExposure(const std::filesystem::path& path) {
+    try {
+        Imf::InputFile file(path.c_str());
+        const auto* exposure = file.header().findTypedAttribute<Imf::DoubleAttribute>("planetExposure");
+        if (!exposure) throw FileError("'" + path.string() + "' has no planetExposure attribute");
+        return exposure->value();
+    } catch (const FileError&) {
+        throw;
+    } catch (const std::exception& e) {
+        throw FileError("cannot read OpenEXR '" + path.string() + "': " + e.what());
+    }
+}
+
 }  // namespace planet

@@ -30,5 +30,6 @@ void writePng(const std::uint8_t* pixels, int width, int height, int channels, c
 void writePng(const ImageRGBA8& image, const std::filesystem::path& path);
 void writeExr(const ImageRGBAF& image, const std::filesystem::path& path, double exposure);
 ImageRGBAF readExr(const std::filesystem::path& path);  // throws FileError on a missing or corrupt file
+double readExrExposure(const std::filesystem::path& path);  // the planetExposure header value (FileError if absent)
 
 }  // namespace planet

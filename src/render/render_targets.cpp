@@ -1,5 +1,6 @@
 #include "render/render_targets.h"
 
+#include <algorithm>
 #include <stdexcept>
 #include <string>
 
@@ -30,6 +31,13 @@ void checkComplete(const gl::Framebuffer& fb, const char* name) {
 void RenderTargets::resize(glm::ivec2 size) {
     if (size == size_) return;
     if (size.x <= 0 || size.y <= 0) throw std::invalid_argument("render target size must be positive");
+    GLint maxSize = 0, maxViewport[2] = {0, 0};
+    glGetIntegerv(GL_MAX_TEXTURE_SIZE, &maxSize);
+    glGetIntegerv(GL_MAX_VIEWPORT_DIMS, maxViewport);
+    const int limit = std::min({maxSize, maxViewport[0], maxViewport[1]});
+    if (size.x > limit || size.y > limit)
+        throw std::invalid_argument("frame size " + std::to_string(size.x) + "x" + std::to_string(size.y) +
+                                    " exceeds this GPU's limit of " + std::to_string(limit) + " pixels per side");
     size_ = size;
 
     gbuffer_.normal = makeTexture(GL_RGBA16F, size, "gbuffer.normal");

@@ -17,7 +17,7 @@
 #include <string>
 #include <vector>
 
-#include "app/camera.h"
+#include "scene/camera.h"
 #include "gl/handle.h"
 #include "gl/program.h"
 #include "render/fullscreen_pass.h"

@@ -2,7 +2,7 @@
 //
 // Organisation: Camera members, then the projection helpers, then the
 // geographic helpers, then sanitizeCamera split into one small fix per rule.
-#include "app/camera.h"
+#include "scene/camera.h"
 
 #include <cmath>
 

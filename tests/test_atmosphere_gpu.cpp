@@ -1,0 +1,194 @@
+// The GPU precomputation (shaders/atmosphere/precompute/*.comp, single
+// precision) against the CPU reference (the same functions in double), texel
+// by texel, on reduced tables; plus the incremental job, the upload/readBack
+// round trip, and an atmosphere without particles. Tier (c) of STYLE habit 9.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <optional>
+#include <string>
+
+#include "atmosphere/parameters.h"
+#include "atmosphere/precompute_gpu.h"
+#include "atmosphere/reference_tables.h"
+#include "gl_test_support.h"
+
+using namespace planet;
+using namespace planet::atmosphere;
+
+namespace {
+
+constexpr int kOrders = 4;
+
+AtmosphereParameters earth() { return makeAtmosphereParameters(Scene{}); }
+
+std::filesystem::path shaderRoot() { return std::filesystem::path(PLANET_SOURCE_DIR) / "shaders"; }
+
+// Largest relative error over a table's texels (all four channels), relative to
+// max(|ref|, floor) with floor = 1e-3 * the table's largest |ref|: texels that
+// are essentially zero (deep shadow, night side) count in absolute terms.
+struct TableError {
+    double maxRelative = 0.0;
+    std::size_t worstTexel = 0;
+    int worstChannel = 0;
+    double gpu = 0.0, ref = 0.0;
+};
+
+TableError compare(const std::vector<glm::dvec4>& gpu, const std::vector<glm::dvec4>& ref) {
+    EXPECT_EQ(gpu.size(), ref.size());
+    double largest = 0.0;
+    for (const glm::dvec4& v : ref)
+        for (int c = 0; c < 4; ++c) largest = std::max(largest, std::abs(v[c]));
+    const double floor = std::max(1e-3 * largest, 1e-30);
+    TableError e;
+    for (std::size_t i = 0; i < std::min(gpu.size(), ref.size()); ++i) {
+        for (int c = 0; c < 4; ++c) {
+            const double rel = std::abs(gpu[i][c] - ref[i][c]) / std::max(std::abs(ref[i][c]), floor);
+            if (rel > e.maxRelative) e = {rel, i, c, gpu[i][c], ref[i][c]};
+        }
+    }
+    return e;
+}
+
+bool allFinite(const std::vector<glm::dvec4>& texels) {
+    for (const glm::dvec4& v : texels)
+        for (int c = 0; c < 4; ++c)
+            if (!std::isfinite(v[c])) return false;
+    return true;
+}
+
+double maxAbsDifference(const std::vector<glm::dvec4>& a, const std::vector<glm::dvec4>& b) {
+    double d = 0.0;
+    for (std::size_t i = 0; i < std::min(a.size(), b.size()); ++i)
+        for (int c = 0; c < 4; ++c) d = std::max(d, std::abs(a[i][c] - b[i][c]));
+    return a.size() == b.size() ? d : INFINITY;
+}
+
+class AtmosphereGpu : public test::GLTest {
+protected:
+    // The CPU reference in double: costly, computed once for the suite.
+    static const ReferenceResult& reference() {
+        static const ReferenceResult r = computeReferenceTables(earth(), TableSizes::reduced(), kOrders);
+        return r;
+    }
+    // The GPU tables (read back), computed once per suite: textures die with
+    // the suite's context, their read back copies do not.
+    static const AtmosphereTables& gpuEarth() {
+        if (!gpuEarth_) {
+            GpuPrecompute precompute(shaderRoot(), TableSizes::reduced());
+            gpuEarth_ = readBack(precompute.compute(earth(), kOrders, [](const PrecomputeStep& s) {
+                gpuSteps_.push_back(s);
+            }));
+        }
+        return *gpuEarth_;
+    }
+    static void TearDownTestSuite() {
+        gpuEarth_.reset();
+        GLTest::TearDownTestSuite();
+    }
+    static inline std::optional<AtmosphereTables> gpuEarth_;
+    static inline std::vector<PrecomputeStep> gpuSteps_;
+};
+
+TEST_F(AtmosphereGpu, MatchesCpuReferenceTexelByTexel) {
+    const AtmosphereTables& gpu = gpuEarth();
+    const AtmosphereTables& ref = reference().tables;
+    ASSERT_EQ(gpu.sizes, ref.sizes);
+
+    struct Row {
+        const char* name;
+        const std::vector<glm::dvec4>& gpu;
+        const std::vector<glm::dvec4>& ref;
+    };
+    const Row rows[] = {{"transmittance", gpu.transmittance.texels, ref.transmittance.texels},
+                        {"scattering", gpu.scattering.texels, ref.scattering.texels},
+                        {"single Mie", gpu.singleMie.texels, ref.singleMie.texels},
+                        {"irradiance", gpu.irradiance.texels, ref.irradiance.texels}};
+    for (const Row& row : rows) {
+        const TableError e = compare(row.gpu, row.ref);
+        std::printf("  %-14s max relative error %.3e (texel %zu channel %d: gpu %.6e ref %.6e)\n", row.name,
+                    e.maxRelative, e.worstTexel, e.worstChannel, e.gpu, e.ref);
+        // Tolerance: 1% relative (floor 1e-3 of the table's maximum). Single
+        // precision plus the GPU's filtering (8-bit fixed-point lerp weights
+        // in hardware and llvmpipe alike) against double and exact weights.
+        EXPECT_LT(e.maxRelative, 0.01) << row.name;
+    }
+
+    // Same steps as the reference, in the same order.
+    ASSERT_EQ(gpuSteps_.size(), reference().steps.size());
+    for (std::size_t i = 0; i < gpuSteps_.size(); ++i) EXPECT_EQ(gpuSteps_[i].name, reference().steps[i].name);
+}
+
+TEST_F(AtmosphereGpu, TablesAreFinite) {
+    const AtmosphereTables& gpu = gpuEarth();
+    EXPECT_TRUE(allFinite(gpu.transmittance.texels));
+    EXPECT_TRUE(allFinite(gpu.scattering.texels));
+    EXPECT_TRUE(allFinite(gpu.singleMie.texels));
+    EXPECT_TRUE(allFinite(gpu.irradiance.texels));
+}
+
+TEST_F(AtmosphereGpu, IncrementalJobMatchesBlockingCompute) {
+    const AtmosphereTables& blocking = gpuEarth();
+    GpuPrecompute precompute(shaderRoot(), TableSizes::reduced());
+    std::vector<std::string> names;
+    GpuPrecomputeJob job = precompute.start(earth(), kOrders, [&](const PrecomputeStep& s) { names.push_back(s.name); },
+                                            /*layersPerChunk=*/3);  // 8 layers: uneven chunks on purpose
+    double last = job.progress();
+    EXPECT_EQ(last, 0.0);
+    int chunks = 0;
+    while (!job.step()) {
+        ++chunks;
+        EXPECT_GE(job.progress(), last);
+        last = job.progress();
+        ASSERT_LT(chunks, 1000);
+    }
+    EXPECT_DOUBLE_EQ(job.progress(), 1.0);
+    EXPECT_GT(chunks, 3 + 3 * (kOrders - 1));  // the 3D passes really were split
+    EXPECT_EQ(names, (std::vector<std::string>{"transmittance", "direct irradiance", "single scattering", "order 2",
+                                               "order 3", "order 4"}));
+    const AtmosphereTables incremental = readBack(job.takeResult());
+    // The same shaders on the same texels: identical up to the driver's freedom
+    // to schedule (1e-6 relative to each table's range).
+    auto check = [](const char* name, const std::vector<glm::dvec4>& a, const std::vector<glm::dvec4>& b) {
+        double range = 0.0;
+        for (const glm::dvec4& v : b)
+            for (int c = 0; c < 4; ++c) range = std::max(range, std::abs(v[c]));
+        EXPECT_LE(maxAbsDifference(a, b), 1e-6 * range) << name;
+    };
+    check("transmittance", incremental.transmittance.texels, blocking.transmittance.texels);
+    check("scattering", incremental.scattering.texels, blocking.scattering.texels);
+    check("single Mie", incremental.singleMie.texels, blocking.singleMie.texels);
+    check("irradiance", incremental.irradiance.texels, blocking.irradiance.texels);
+}
+
+TEST_F(AtmosphereGpu, UploadReadBackRoundTrip) {
+    const AtmosphereTables& tables = gpuEarth();
+    const AtmosphereTables again = readBack(upload(tables));
+    ASSERT_EQ(again.sizes, tables.sizes);
+    // Float -> double -> float is exact: bitwise equal.
+    EXPECT_EQ(maxAbsDifference(again.transmittance.texels, tables.transmittance.texels), 0.0);
+    EXPECT_EQ(maxAbsDifference(again.scattering.texels, tables.scattering.texels), 0.0);
+    EXPECT_EQ(maxAbsDifference(again.singleMie.texels, tables.singleMie.texels), 0.0);
+    EXPECT_EQ(maxAbsDifference(again.irradiance.texels, tables.irradiance.texels), 0.0);
+}
+
+TEST_F(AtmosphereGpu, NoParticlesMeansNoExtinctionAndNoScattering) {
+    AtmosphereParameters vacuum = earth();
+    vacuum.rayleigh_scattering = vacuum.mie_scattering = vacuum.mie_extinction = vacuum.absorption_extinction =
+        glm::dvec3(0.0);
+    GpuPrecompute precompute(shaderRoot(), TableSizes::reduced());
+    const AtmosphereTables t = readBack(precompute.compute(vacuum, 2));
+    for (const glm::dvec4& v : t.transmittance.texels) {
+        ASSERT_EQ(glm::dvec3(v), glm::dvec3(1.0));
+    }
+    for (const auto* table : {&t.scattering.texels, &t.singleMie.texels}) {
+        for (const glm::dvec4& v : *table) {
+            ASSERT_EQ(glm::dvec3(v), glm::dvec3(0.0));
+        }
+    }
+    for (const glm::dvec4& v : t.scattering.texels) ASSERT_EQ(v.a, 0.0);
+    for (const glm::dvec4& v : t.irradiance.texels) ASSERT_EQ(glm::dvec3(v), glm::dvec3(0.0));
+}
+
+}  // namespace
