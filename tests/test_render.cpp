@@ -17,7 +17,7 @@ class RenderTest : public test::GLTest {
 protected:
     void SetUp() override {
         GLTest::SetUp();
-        renderer = std::make_unique<Renderer>(test::repoPaths().shaders());
+        renderer = std::make_unique<Renderer>(test::repoPaths().shaders(), atmosphere::TableSizes::reduced());
     }
     Session session(const std::string& preset, const std::string& view) {
         return loadSession(test::repoPaths(), preset, view);
@@ -84,7 +84,7 @@ TEST_F(RenderTest, SameInputsGiveSamePixels) {
     const Session s = session("earth", "orbit");
     renderer->render(s.scene, s.camera, kSize);
     const ImageRGBA8 a = readTextureRGBA8(renderer->targets().ldr(), kSize.x, kSize.y);
-    Renderer other(test::repoPaths().shaders());
+    Renderer other(test::repoPaths().shaders(), atmosphere::TableSizes::reduced());
     other.render(s.scene, s.camera, kSize);
     const ImageRGBA8 b = readTextureRGBA8(other.targets().ldr(), kSize.x, kSize.y);
     EXPECT_EQ(a.pixels, b.pixels);

@@ -2,6 +2,7 @@
 // #include mechanism exactly as the driver sees it, passes glslangValidator.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 
@@ -21,13 +22,16 @@ TEST(ShadersOffline, EveryStageValidatesWithGlslang) {
         const std::string file = fs::relative(entry.path(), root).generic_string();
         const std::string stage = planet::gl::shaderStageName(file);
         if (stage.empty()) continue;
-        // The atmosphere's shaders need the table sizes and texture types the
-        // program builders inject (GpuPrecompute, the atmosphere pass).
-        const bool atmosphere = file.starts_with("atmosphere/");
-        const std::string preamble =
-            planet::shaderPreamble() +
-            (atmosphere ? planet::atmosphere::atmosphereShaderDefines(planet::atmosphere::TableSizes{}) : "");
-        const auto expanded = planet::gl::expandShader(root, file, preamble);
+        // Stages made of atmosphere files (the precompute shaders, passes that
+        // include the model) need the table sizes and texture types their
+        // program builders inject: atmosphereShaderDefines(), as GpuPrecompute does.
+        auto expanded = planet::gl::expandShader(root, file, planet::shaderPreamble());
+        const bool atmosphere = std::any_of(expanded.files.begin(), expanded.files.end(),
+                                            [](const std::string& f) { return f.starts_with("atmosphere/"); });
+        if (atmosphere)
+            expanded = planet::gl::expandShader(
+                root, file,
+                planet::shaderPreamble() + planet::atmosphere::atmosphereShaderDefines(planet::atmosphere::TableSizes{}));
         const fs::path out = tmp / ("shader." + stage);
         std::ofstream(out) << expanded.text;
         const auto r = planet::test::runCommand(std::string(GLSLANG_VALIDATOR) + " " + out.string());

@@ -81,13 +81,18 @@ Spectrum ScatteringBetween(IN(AtmosphereParameters) atmosphere, IN(Transmittance
 }
 
 // Aerial perspective: radiance scattered towards the camera between the camera
-// and `point`, and the transmittance between them.
-Spectrum GetSkyRadianceToPoint(IN(AtmosphereParameters) atmosphere, IN(TransmittanceTexture) transmittance_texture,
-                               IN(ScatteringTexture) scattering_texture,
-                               IN(ScatteringTexture) single_mie_scattering_texture, IN(vec3) camera_position,
-                               IN(vec3) point, IN(vec3) sun_direction, OUT(Spectrum) transmittance) {
+// and the point at distance d (km) along the unit view ray, and the
+// transmittance between them. Taking the ray and distance rather than the
+// point keeps a point 2 m away exact: in float, point - camera at planet scale
+// would be rounded to half a metre.
+Spectrum GetSkyRadianceToPointAlongRay(IN(AtmosphereParameters) atmosphere,
+                                       IN(TransmittanceTexture) transmittance_texture,
+                                       IN(ScatteringTexture) scattering_texture,
+                                       IN(ScatteringTexture) single_mie_scattering_texture, IN(vec3) camera_position,
+                                       IN(vec3) view_ray, Length distance, IN(vec3) sun_direction,
+                                       OUT(Spectrum) transmittance) {
     vec3 camera = camera_position;
-    vec3 view_ray = normalize(point - camera);
+    Length d = distance;
     Length r = length(camera);
     Length rmu = dot(camera, view_ray);
     Length distance_to_top_atmosphere_boundary =
@@ -96,11 +101,11 @@ Spectrum GetSkyRadianceToPoint(IN(AtmosphereParameters) atmosphere, IN(Transmitt
         camera = camera + view_ray * distance_to_top_atmosphere_boundary;
         r = atmosphere.top_radius;
         rmu += distance_to_top_atmosphere_boundary;
+        d = max(d - distance_to_top_atmosphere_boundary, Length(0.0));
     }
     Number mu = rmu / r;
     Number mu_s = dot(camera, sun_direction) / r;
     Number nu = dot(view_ray, sun_direction);
-    Length d = length(point - camera);
 
     // Sperlhofer 5.1.2: the table's two halves meet at the horizon, where the
     // difference of two large, nearly equal lookups is unreliable. Within EPS
@@ -132,6 +137,17 @@ Spectrum GetSkyRadianceToPoint(IN(AtmosphereParameters) atmosphere, IN(Transmitt
     // Sperlhofer 5.1.3: single Mie scattering is unreliable once the sun has set.
     single_mie_scattering = single_mie_scattering * smoothstep(Number(0.0), Number(0.01), mu_s);
     return ApplyPhaseFunctions(atmosphere, scattering, single_mie_scattering, nu);
+}
+
+// The same for two points (positions relative to the planet centre, km).
+Spectrum GetSkyRadianceToPoint(IN(AtmosphereParameters) atmosphere, IN(TransmittanceTexture) transmittance_texture,
+                               IN(ScatteringTexture) scattering_texture,
+                               IN(ScatteringTexture) single_mie_scattering_texture, IN(vec3) camera_position,
+                               IN(vec3) point, IN(vec3) sun_direction, OUT(Spectrum) transmittance) {
+    return GetSkyRadianceToPointAlongRay(atmosphere, transmittance_texture, scattering_texture,
+                                         single_mie_scattering_texture, camera_position,
+                                         normalize(point - camera_position), length(point - camera_position),
+                                         sun_direction, transmittance);
 }
 
 // Irradiance of a surface point with a given normal: direct sun through the

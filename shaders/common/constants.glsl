@@ -1,5 +1,4 @@
-// Constants shared by several passes.
-const float PI = 3.14159265358979323846;
+// Constants shared by several passes (PI comes from atmosphere/functions.glsl).
 
 // Material ids stored in the G-buffer (material.r * 255).
 const int MATERIAL_NONE = 0;    // nothing rendered: sky / space

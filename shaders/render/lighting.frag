@@ -1,30 +1,80 @@
-// Lighting / composition: G-buffer -> linear HDR radiance.
+// Lighting and aerial perspective: G-buffer -> linear HDR radiance, applied as
+// one post-process over the G-buffer (Sperlhofer ch. 4.6.2), so every surface
+// written to it is lit the same way.
 //
-// For now: Lambertian ground lit by the sun at its top-of-atmosphere
-// irradiance, plus a small constant ambient term that stands in for sky
-// irradiance until the atmosphere pass provides it (Elek Eq. 20 replaces both).
-// Pixels with no surface (space) get zero radiance.
+// Surface: albedo / pi * (sun through the atmosphere + sky irradiance)
+// (Elek Eq. 17, 20; Sperlhofer Eq. 2-13), attenuated by the transmittance to
+// the camera and plus the light scattered in between (Sperlhofer Eq. 4-18).
+// Sky: radiance scattered along the view ray (Sperlhofer Eq. 2-16) plus the
+// sun disc with limb darkening, seen through the atmosphere (Elek §4.2.2).
 #include "common/frame_uniforms.glsl"
 #include "common/constants.glsl"
+#include "atmosphere/definitions.glsl"
+#include "atmosphere/uniforms.glsl"
+#include "atmosphere/functions.glsl"
+#include "atmosphere/rendering.glsl"
 
 in vec2 vNdc;
 layout(binding = 0) uniform sampler2D gNormal;
 layout(binding = 1) uniform sampler2D gAlbedo;
 layout(binding = 2) uniform sampler2D gMaterial;
+layout(binding = 3) uniform sampler2D gDepth;
+layout(binding = 4) uniform sampler2D transmittance_texture;
+layout(binding = 5) uniform sampler3D scattering_texture;
+layout(binding = 6) uniform sampler3D single_mie_scattering_texture;
+layout(binding = 7) uniform sampler2D irradiance_texture;
 
 layout(location = 0) out vec4 outRadiance;
 
-const float AMBIENT_FRACTION = 0.02;  // placeholder sky light, fraction of the sun's irradiance
+const float M_PER_KM = 1000.0;
+const float LIMB_DARKENING_U = 0.6;  // linear law I(mu) = 1 - u (1 - mu), visible light
+
+// Sun disc radiance towards `dir`, before the atmosphere. Normalised so the
+// disc delivers the solar irradiance: the mean of the linear law over the disc
+// is 1 - u / 3. Angles from |dir x sun| stay precise for a 0.27 deg disc.
+vec3 sunDiscRadiance(vec3 dir, vec3 sun, float angularRadius, vec3 irradiance) {
+    if (dot(dir, sun) <= 0.0) return vec3(0.0);
+    float angle = asin(min(length(cross(dir, sun)), 1.0));
+    if (angle >= angularRadius) return vec3(0.0);
+    float x = angle / angularRadius;
+    float mu = sqrt(1.0 - x * x);
+    float discSolidAngle = PI * angularRadius * angularRadius;
+    return irradiance / discSolidAngle * (1.0 - LIMB_DARKENING_U * (1.0 - mu)) / (1.0 - LIMB_DARKENING_U / 3.0);
+}
 
 void main() {
+    AtmosphereParameters atmosphere = atmosphereParameters();
     ivec2 pixel = ivec2(gl_FragCoord.xy);
+    vec3 dir = worldRayFromNdc(vNdc);
+    vec3 sun = frame.sunDirection.xyz;
+    // Camera relative to the planet centre in km, from the altitude formed in double.
+    float radiusM = frame.planetCenterFromCamera.w;
+    vec3 camera = frame.cameraUp.xyz * ((radiusM + frame.cameraUp.w) / M_PER_KM);
+    vec3 transmittance;
+
     int material = int(texelFetch(gMaterial, pixel, 0).r * 255.0 + 0.5);
     if (material == MATERIAL_NONE) {
-        outRadiance = vec4(0.0, 0.0, 0.0, 1.0);
+        vec3 sky = GetSkyRadiance(atmosphere, transmittance_texture, scattering_texture,
+                                  single_mie_scattering_texture, camera, dir, sun, transmittance);
+        vec3 disc = sunDiscRadiance(dir, sun, frame.sunDirection.w, atmosphere.solar_irradiance);
+        outRadiance = vec4(sky + transmittance * disc, 1.0);
         return;
     }
+
+    // Distance to the surface along this pixel's ray, from the reversed-Z depth.
+    float viewDistance = viewDistanceFromDepth(texelFetch(gDepth, pixel, 0).r);
+    vec3 forward = -vec3(frame.worldFromView[2]);
+    float rayDistanceKm = viewDistance / max(dot(dir, forward), 1e-6) / M_PER_KM;
+    vec3 point = camera + dir * rayDistanceKm;
+
     vec3 normal = normalize(texelFetch(gNormal, pixel, 0).xyz);
     vec3 albedo = texelFetch(gAlbedo, pixel, 0).rgb;
-    vec3 irradiance = frame.sunIrradiance.rgb * (max(dot(normal, frame.sunDirection.xyz), 0.0) + AMBIENT_FRACTION);
-    outRadiance = vec4(albedo / PI * irradiance, 1.0);
+    vec3 skyIrradiance;
+    vec3 sunIrradiance = GetSunAndSkyIrradiance(atmosphere, transmittance_texture, irradiance_texture, point, normal,
+                                                sun, skyIrradiance);
+    vec3 surface = albedo / PI * (sunIrradiance + skyIrradiance);
+    vec3 inscatter = GetSkyRadianceToPointAlongRay(atmosphere, transmittance_texture, scattering_texture,
+                                                   single_mie_scattering_texture, camera, dir, rayDistanceKm, sun,
+                                                   transmittance);
+    outRadiance = vec4(surface * transmittance + inscatter, 1.0);
 }

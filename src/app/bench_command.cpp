@@ -145,7 +145,7 @@ int runBench(const BenchOptions& o) {
     const std::string renderer = gl::rendererDescription();
     std::printf("planet bench on %s via %s, %dx%d, %d frames after %d warm-up\n", renderer.c_str(),
                 context.platform().c_str(), size.x, size.y, o.frames, o.warmup);
-    Renderer frame(paths.shaders());
+    Renderer frame(paths.shaders(), atmosphere::tableSizesFor(o.common.tables, renderer));
 
     std::vector<BenchRow> rows;
     for (const View& view : views) {

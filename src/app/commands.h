@@ -13,6 +13,7 @@ struct CommonOptions {
     std::string view = "orbit";    // bookmark name under assets/views
     std::string size = "1280x720"; // WIDTHxHEIGHT
     bool glDebug = false;          // KHR_debug output (synchronous)
+    std::string tables = "auto";   // atmosphere table sizes: full, reduced, auto (reduced on software GL)
 };
 
 struct ExploreOptions {

@@ -137,7 +137,7 @@ ControlInput pollControls(GLFWwindow* window, PendingInput& pending) {
 class Explorer {
 public:
     Explorer(const ExploreOptions& options, GLFWwindow* window, const DataPaths& paths, Session session)
-        : options_(options), window_(window), session_(std::move(session)), renderer_(paths.shaders()),
+        : options_(options), window_(window), session_(std::move(session)), renderer_(paths.shaders(), atmosphere::tableSizesFor(options.common.tables, gl::rendererDescription())),
           rendererName_(gl::rendererDescription()),
           presetPath_("out/presets/" + session_.presetName + ".toml"),  // never the shipped preset by default
           showUi_(!options.noPanels) {

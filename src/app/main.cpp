@@ -14,6 +14,10 @@ void addCommon(CLI::App& cmd, planet::CommonOptions& o) {
     cmd.add_option("--view", o.view, "View bookmark name under assets/views/ (ground, beach, clouds, orbit, space, ...)")
         ->capture_default_str();
     cmd.add_option("--size", o.size, "Image size WIDTHxHEIGHT")->capture_default_str();
+    cmd.add_option("--tables", o.tables,
+                   "Atmosphere table sizes: full, reduced, or auto (reduced on software renderers such as llvmpipe)")
+        ->check(CLI::IsMember({"auto", "full", "reduced"}))
+        ->capture_default_str();
     cmd.add_flag("--gl-debug", o.glDebug, "Ask for a debug GL context and report KHR_debug messages synchronously");
 }
 

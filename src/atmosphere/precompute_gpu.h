@@ -99,7 +99,6 @@ public:
     GpuTables compute(const AtmosphereParameters& atmosphere, int scatteringOrders, const ProgressFn& progress = {});
 
 private:
-    friend class GpuPrecomputeJob;
     TableSizes sizes_;
     gl::Program transmittance_, directIrradiance_, singleScattering_, scatteringDensity_, indirectIrradiance_,
         multipleScattering_;

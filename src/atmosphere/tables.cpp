@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 
 namespace planet::atmosphere {
 
@@ -11,6 +12,15 @@ std::size_t TableSizes::bytes() const {
     return texel * (static_cast<std::size_t>(transmittance_width) * transmittance_height +
                     2 * static_cast<std::size_t>(s.x) * s.y * s.z +
                     static_cast<std::size_t>(irradiance_width) * irradiance_height);
+}
+
+TableSizes tableSizesFor(const std::string& choice, const std::string& glRenderer) {
+    if (choice == "full") return TableSizes{};
+    if (choice == "reduced") return TableSizes::reduced();
+    if (choice != "auto") throw std::invalid_argument("--tables must be full, reduced or auto, not '" + choice + "'");
+    for (const char* software : {"llvmpipe", "softpipe", "swrast"})
+        if (glRenderer.find(software) != std::string::npos) return TableSizes::reduced();
+    return TableSizes{};
 }
 
 namespace {

@@ -9,6 +9,7 @@
 #pragma once
 
 #include <cstddef>
+#include <string>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -32,6 +33,10 @@ struct TableSizes {
     std::size_t bytes() const;
     bool operator==(const TableSizes&) const = default;
 };
+
+// Sizes for a --tables choice: "full", "reduced", or "auto" (reduced when the GL
+// renderer is a software one: llvmpipe, softpipe, swrast). Throws std::invalid_argument.
+TableSizes tableSizesFor(const std::string& choice, const std::string& glRenderer);
 
 struct Table2D {
     int width = 0, height = 0;

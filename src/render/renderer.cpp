@@ -9,10 +9,12 @@ std::string shaderPreamble() {
     return "#version 450 core\n";
 }
 
-Renderer::Renderer(const std::filesystem::path& shaderRoot)
+Renderer::Renderer(const std::filesystem::path& shaderRoot, const atmosphere::TableSizes& atmosphereTables)
     : sources_{shaderRoot, shaderPreamble()},
+      atmosphere_(shaderRoot, atmosphereTables),
       terrain_(sources_),
-      lighting_(sources_, "lighting", "render/lighting.frag"),
+      lighting_(gl::ShaderSources{shaderRoot, shaderPreamble() + atmosphere::atmosphereShaderDefines(atmosphereTables)},
+                "lighting", "render/lighting.frag"),
       tonemap_(sources_, "tonemap", "render/tonemap.frag") {
     glNamedBufferStorage(frameUniforms_.id(), sizeof(FrameUniforms), nullptr, GL_DYNAMIC_STORAGE_BIT);
     frameUniforms_.label("FrameUniforms");
@@ -24,6 +26,13 @@ void Renderer::render(const Scene& scene, const Camera& camera, glm::ivec2 size,
     if (size.x <= 0 || size.y <= 0) return;
     targets_.resize(size);
     profiler_.beginFrame();
+    if (atmosphere_.rebuilding()) {
+        gl::DebugGroup group("atmosphere");
+        auto timing = profiler_.pass("atmosphere");
+        atmosphere_.update(scene);
+    } else {
+        atmosphere_.update(scene);  // usually nothing to do; starts a rebuild when the atmosphere changed
+    }
 
     const FrameUniforms uniforms = makeFrameUniforms(scene, camera, size);
     glNamedBufferSubData(frameUniforms_.id(), 0, sizeof uniforms, &uniforms);
@@ -49,8 +58,9 @@ void Renderer::render(const Scene& scene, const Camera& camera, glm::ivec2 size,
         auto timing = profiler_.pass("lighting");
         glBindFramebuffer(GL_FRAMEBUFFER, targets_.hdrFramebuffer());
         const GBuffer& g = targets_.gbuffer();
-        const GLuint inputs[] = {g.normal.id(), g.albedo.id(), g.material.id()};
-        glBindTextures(0, 3, inputs);
+        const GLuint inputs[] = {g.normal.id(), g.albedo.id(), g.material.id(), g.depth.id()};
+        glBindTextures(0, 4, inputs);
+        atmosphere_.bind();
         lighting_.draw();
     }
     {

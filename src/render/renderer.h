@@ -2,8 +2,9 @@
 // profiler scope, with data flowing one way (STYLE habit 6).
 //
 //   pass        reads                         writes
+//   atmosphere  scene.atmosphere              its tables, when they must change (one chunk a frame)
 //   terrain     frame uniforms, planet        G-buffer (normal, albedo, material, depth)
-//   lighting    G-buffer, sun                 HDR radiance
+//   lighting    G-buffer, atmosphere tables   HDR radiance (surface light, aerial perspective, sky, sun)
 //   tonemap     HDR radiance, exposure        LDR (display-ready sRGB)
 //
 //   ui          LDR                           the window (explorer only: blit + panels)
@@ -17,6 +18,7 @@
 #include <string>
 #include <vector>
 
+#include "atmosphere/atmosphere.h"
 #include "scene/camera.h"
 #include "gl/handle.h"
 #include "gl/program.h"
@@ -33,7 +35,8 @@ std::string shaderPreamble();
 
 class Renderer {
 public:
-    explicit Renderer(const std::filesystem::path& shaderRoot);  // throws gl::ShaderError
+    // Throws gl::ShaderError. The first render() makes the atmosphere tables.
+    Renderer(const std::filesystem::path& shaderRoot, const atmosphere::TableSizes& atmosphereTables);
 
     // Renders one frame into targets(). `present`, when given, runs last as the
     // "ui" pass (the explorer blits LDR to its window and draws panels there),
@@ -43,6 +46,7 @@ public:
                 const std::function<void()>& present = {});
 
     const RenderTargets& targets() const { return targets_; }
+    const atmosphere::Atmosphere& atmosphere() const { return atmosphere_; }
     Profiler& profiler() { return profiler_; }
 
     // Hot reload: rebuilds programs whose files changed. Broken edits keep the
@@ -54,6 +58,7 @@ private:
     std::vector<gl::HotProgram*> programs();
 
     gl::ShaderSources sources_;
+    atmosphere::Atmosphere atmosphere_;
     PlaceholderSphere terrain_;
     FullscreenPass lighting_;
     FullscreenPass tonemap_;

@@ -1,0 +1,56 @@
+// The atmosphere at run time: the tables in use, the parameters they were
+// made for (uniform block, binding 1), and a rebuild in progress.
+//
+// The first update() makes tables before returning (from the cache when a
+// valid one exists, else precomputed on the GPU with progress in the log).
+// Later, when the scene's atmosphere changes, update() runs one chunk of a
+// rebuild per call -- the explorer calls it once a frame -- while the old
+// tables and their parameters stay in use, and swaps when the rebuild is done.
+// So tuning never freezes the window and never shows half-built tables.
+#pragma once
+
+#include <filesystem>
+#include <memory>
+#include <optional>
+
+#include "atmosphere/precompute_gpu.h"
+#include "atmosphere/uniforms.h"
+#include "scene/scene.h"
+
+namespace planet::atmosphere {
+
+// Texture units the atmosphere's tables are bound to for rendering.
+constexpr unsigned kTransmittanceUnit = 4;  // then scattering 5, single Mie 6, irradiance 7
+
+class Atmosphere {
+public:
+    Atmosphere(const std::filesystem::path& shaderRoot, const TableSizes& sizes);
+
+    // Brings the tables towards the scene's atmosphere (see above).
+    void update(const Scene& scene);
+    // Binds the tables (units kTransmittanceUnit..+3) and the parameter block.
+    void bind() const;
+
+    bool rebuilding() const { return job_.has_value(); }
+    double rebuildProgress() const { return job_ ? job_->progress() : 1.0; }
+    const TableSizes& sizes() const { return precompute_.sizes(); }
+    const GpuTables& tables() const { return *tables_; }
+
+private:
+    struct Target {
+        AtmosphereUniforms uniforms;
+        int orders = 0;
+        bool operator==(const Target& o) const;
+    };
+    static Target targetFor(const Scene& scene);
+    void finishJob();
+
+    GpuPrecompute precompute_;
+    std::optional<GpuTables> tables_;
+    Target current_{};                 // what tables_ hold
+    std::optional<GpuPrecomputeJob> job_;
+    Target pending_{};                 // what job_ computes
+    gl::Buffer uniforms_;
+};
+
+}  // namespace planet::atmosphere

@@ -1,0 +1,343 @@
+#include "atmosphere/table_cache.h"
+
+#include <ImfChannelList.h>
+#include <ImfFrameBuffer.h>
+#include <ImfHeader.h>
+#include <ImfInputFile.h>
+#include <ImfOutputFile.h>
+#include <ImfStdIO.h>
+#include <ImfStringAttribute.h>
+
+#include <cmath>
+#include <cstdint>
+#include <cstdlib>
+#include <cstring>
+#include <map>
+#include <sstream>
+#include <unistd.h>
+#include <vector>
+
+#include "util/file_util.h"
+
+namespace planet::atmosphere {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+// ------------------------------------------------------------------ hashing
+
+// 64-bit FNV-1a (Fowler, Noll, Vo): offset basis and prime from the reference.
+class Fnv1a {
+public:
+    void bytes(const void* data, std::size_t size) {
+        const auto* p = static_cast<const unsigned char*>(data);
+        for (std::size_t i = 0; i < size; ++i) {
+            hash_ ^= p[i];
+            hash_ *= 0x100000001b3ull;
+        }
+    }
+    void number(double v) {
+        std::uint64_t bits = 0;
+        std::memcpy(&bits, &v, sizeof bits);
+        word(bits);
+    }
+    void integer(std::int64_t v) { word(static_cast<std::uint64_t>(v)); }
+    void spectrum(const glm::dvec3& s) {
+        for (int c = 0; c < 3; ++c) number(s[c]);
+    }
+    void profile(const DensityProfile& p) {
+        for (const DensityProfileLayer& l : p.layers) {
+            number(l.width);
+            number(l.exp_term);
+            number(l.exp_scale);
+            number(l.linear_term);
+            number(l.constant_term);
+        }
+    }
+    std::uint64_t value() const { return hash_; }
+
+private:
+    // Little-endian bytes whatever the host, so keys are portable.
+    void word(std::uint64_t w) {
+        unsigned char b[8];
+        for (int i = 0; i < 8; ++i) b[i] = static_cast<unsigned char>(w >> (8 * i));
+        bytes(b, sizeof b);
+    }
+    std::uint64_t hash_ = 0xcbf29ce484222325ull;
+};
+
+std::string hex16(std::uint64_t v) {
+    static const char digits[] = "0123456789abcdef";
+    std::string s(16, '0');
+    for (int i = 15; i >= 0; --i, v >>= 4) s[static_cast<std::size_t>(i)] = digits[v & 15];
+    return s;
+}
+
+std::string fileChecksum(const std::string& bytes) {
+    Fnv1a h;
+    h.bytes(bytes.data(), bytes.size());
+    return hex16(h.value());
+}
+
+// 'path', built by appending (GCC 12 warns falsely about "'" + std::string&&, -Wrestrict).
+std::string quote(const fs::path& path) {
+    std::string s = "'";
+    s += path.string();
+    s += '\'';
+    return s;
+}
+
+std::string sizesText(const TableSizes& s) {
+    std::ostringstream o;
+    o << s.transmittance_width << ' ' << s.transmittance_height << ' ' << s.scattering_r << ' ' << s.scattering_mu
+      << ' ' << s.scattering_mu_s << ' ' << s.scattering_nu << ' ' << s.irradiance_width << ' '
+      << s.irradiance_height;
+    return o.str();
+}
+
+// ------------------------------------------------------------------ images
+
+constexpr const char* kKeyAttribute = "planetTableKey";
+constexpr const char* kSizesAttribute = "planetTableSizes";
+constexpr const char* kChannels[4] = {"R", "G", "B", "A"};
+
+// One table as the 2D image it is stored as.
+struct TableImage {
+    const char* file;
+    int width, height;  // image size: 3D tables are width x (height * depth)
+};
+
+std::vector<TableImage> tableImages(const TableSizes& s) {
+    const glm::ivec3 s3 = s.scatteringSize();
+    return {{"transmittance.exr", s.transmittance_width, s.transmittance_height},
+            {"scattering.exr", s3.x, s3.y * s3.z},
+            {"single_mie.exr", s3.x, s3.y * s3.z},
+            {"irradiance.exr", s.irradiance_width, s.irradiance_height}};
+}
+
+std::string encodeExr(const std::vector<glm::dvec4>& texels, int width, int height, const std::string& key,
+                      const TableSizes& sizes) {
+    std::vector<float> pixels(texels.size() * 4);
+    for (std::size_t i = 0; i < texels.size(); ++i)
+        for (int c = 0; c < 4; ++c) pixels[4 * i + static_cast<std::size_t>(c)] = static_cast<float>(texels[i][c]);
+    Imf::Header header(width, height);
+    for (const char* name : kChannels) header.channels().insert(name, Imf::Channel(Imf::FLOAT));
+    header.compression() = Imf::ZIP_COMPRESSION;
+    header.insert(kKeyAttribute, Imf::StringAttribute(key));
+    header.insert(kSizesAttribute, Imf::StringAttribute(sizesText(sizes)));
+    Imf::StdOSStream stream;
+    {
+        Imf::OutputFile file(stream, header);
+        Imf::FrameBuffer fb;
+        const std::size_t xs = 4 * sizeof(float), ys = xs * static_cast<std::size_t>(width);
+        char* base = reinterpret_cast<char*>(pixels.data());
+        for (int c = 0; c < 4; ++c) fb.insert(kChannels[c], Imf::Slice(Imf::FLOAT, base + c * sizeof(float), xs, ys));
+        file.setFrameBuffer(fb);
+        file.writePixels(height);
+    }
+    return stream.str();
+}
+
+// Decodes one table image; returns an empty string on success, else the reason.
+std::string decodeExr(const std::string& bytes, const TableImage& image, const std::string& key,
+                      std::vector<glm::dvec4>& texels) {
+    try {
+        Imf::StdISStream stream;
+        stream.str(bytes);
+        Imf::InputFile file(stream);
+        const Imf::Header& header = file.header();
+        const auto* k = header.findTypedAttribute<Imf::StringAttribute>(kKeyAttribute);
+        if (!k) return "no " + std::string(kKeyAttribute) + " attribute";
+        if (k->value() != key) return "its header key " + k->value() + " is not " + key;
+        const Imath::Box2i dw = header.dataWindow();
+        const int w = dw.max.x - dw.min.x + 1, h = dw.max.y - dw.min.y + 1;
+        if (w != image.width || h != image.height)
+            return "size " + std::to_string(w) + "x" + std::to_string(h) + ", expected " +
+                   std::to_string(image.width) + "x" + std::to_string(image.height);
+        for (const char* name : kChannels) {
+            const Imf::Channel* channel = header.channels().findChannel(name);
+            if (!channel) return "no channel " + std::string(name);
+            if (channel->type != Imf::FLOAT) return "channel " + std::string(name) + " is not FLOAT";
+        }
+        std::vector<float> pixels(static_cast<std::size_t>(w) * h * 4);
+        Imf::FrameBuffer fb;
+        const std::size_t xs = 4 * sizeof(float), ys = xs * static_cast<std::size_t>(w);
+        char* base = reinterpret_cast<char*>(pixels.data()) -
+                     (static_cast<std::ptrdiff_t>(dw.min.x) * static_cast<std::ptrdiff_t>(xs) +
+                      static_cast<std::ptrdiff_t>(dw.min.y) * static_cast<std::ptrdiff_t>(ys));
+        for (int c = 0; c < 4; ++c) fb.insert(kChannels[c], Imf::Slice(Imf::FLOAT, base + c * sizeof(float), xs, ys));
+        file.setFrameBuffer(fb);
+        file.readPixels(dw.min.y, dw.max.y);
+        texels.resize(static_cast<std::size_t>(w) * h);
+        for (std::size_t i = 0; i < texels.size(); ++i) {
+            const float* p = &pixels[4 * i];
+            for (int c = 0; c < 4; ++c)
+                if (!std::isfinite(p[c]))
+                    return "texel " + std::to_string(i) + " channel " + kChannels[c] + " is " + std::to_string(p[c]);
+            texels[i] = glm::dvec4(p[0], p[1], p[2], p[3]);
+        }
+        return {};
+    } catch (const std::exception& e) {
+        return std::string("OpenEXR cannot read it: ") + e.what();
+    }
+}
+
+// key.txt: "name value" lines; '#' starts a comment line.
+std::map<std::string, std::string> parseKeyFile(const std::string& text) {
+    std::map<std::string, std::string> fields;
+    std::istringstream in(text);
+    std::string line;
+    while (std::getline(in, line)) {
+        if (line.empty() || line[0] == '#') continue;
+        const std::size_t space = line.find(' ');
+        if (space == std::string::npos) continue;
+        fields[line.substr(0, space)] = line.substr(space + 1);
+    }
+    return fields;
+}
+
+}  // namespace
+
+std::string tableCacheKey(const AtmosphereParameters& a, const TableSizes& s, int scatteringOrders) {
+    Fnv1a h;
+    h.integer(kModelVersion);
+    h.spectrum(a.solar_irradiance);
+    h.number(a.sun_angular_radius);
+    h.number(a.bottom_radius);
+    h.number(a.top_radius);
+    h.profile(a.rayleigh_density);
+    h.spectrum(a.rayleigh_scattering);
+    h.profile(a.mie_density);
+    h.spectrum(a.mie_scattering);
+    h.spectrum(a.mie_extinction);
+    h.number(a.mie_phase_function_g);
+    h.profile(a.absorption_density);
+    h.spectrum(a.absorption_extinction);
+    h.spectrum(a.ground_albedo);
+    h.number(a.mu_s_min);
+    h.number(a.elek_rayleigh_phase);
+    for (int v : {s.transmittance_width, s.transmittance_height, s.scattering_r, s.scattering_mu, s.scattering_mu_s,
+                  s.scattering_nu, s.irradiance_width, s.irradiance_height})
+        h.integer(v);
+    h.integer(scatteringOrders);
+    return hex16(h.value());
+}
+
+fs::path defaultTableCacheRoot() {
+    if (const char* env = std::getenv("PLANET_CACHE"); env && *env) return fs::path(env);
+    return fs::path("cache") / "atmosphere";
+}
+
+void saveTables(const AtmosphereTables& tables, const fs::path& dir, const std::string& key) {
+    const TableSizes& sizes = tables.sizes;
+    const std::vector<TableImage> images = tableImages(sizes);
+    const std::vector<glm::dvec4>* texels[4] = {&tables.transmittance.texels, &tables.scattering.texels,
+                                                &tables.singleMie.texels, &tables.irradiance.texels};
+    const fs::path target = dir.lexically_normal();
+    const std::string pid = std::to_string(::getpid());
+    const fs::path tmp = target.string() + ".tmp" + pid;
+    std::error_code ec;
+    fs::remove_all(tmp, ec);
+
+    std::ostringstream keyFile;
+    keyFile << "# planet atmosphere tables; see src/atmosphere/table_cache.h\n"
+            << "key " << key << "\nmodel_version " << kModelVersion << "\nsizes " << sizesText(sizes) << "\n";
+    try {
+        for (std::size_t i = 0; i < images.size(); ++i) {
+            const TableImage& image = images[i];
+            if (texels[i]->size() != static_cast<std::size_t>(image.width) * image.height)
+                throw FileError("saveTables: table " + std::string(image.file) + " does not match its sizes");
+            std::string bytes;
+            try {
+                bytes = encodeExr(*texels[i], image.width, image.height, key, sizes);
+            } catch (const std::exception& e) {
+                throw FileError("could not encode OpenEXR " + quote(target / image.file) + ": " + e.what());
+            }
+            writeFileAtomic(tmp / image.file, bytes);
+            keyFile << image.file << " " << fileChecksum(bytes) << "\n";
+        }
+        writeFileAtomic(tmp / "key.txt", keyFile.str());
+    } catch (...) {
+        fs::remove_all(tmp, ec);
+        throw;
+    }
+
+    // Swap the finished folder into place; an old entry is moved aside first
+    // (rename() cannot replace a non-empty folder) and removed afterwards.
+    const fs::path old = target.string() + ".old" + pid;
+    fs::remove_all(old, ec);
+    if (fs::exists(target)) {
+        fs::rename(target, old, ec);
+        if (ec) {
+            fs::remove_all(tmp, ec);
+            throw FileError("cannot replace " + quote(target) + ": " + ec.message());
+        }
+    }
+    fs::rename(tmp, target, ec);
+    if (ec) {
+        const std::string why = ec.message();
+        fs::remove_all(tmp, ec);
+        // Another process may have put an entry there in between: that one is as good.
+        if (!fs::exists(target / "key.txt")) throw FileError("cannot move tables to " + quote(target) + ": " + why);
+    }
+    fs::remove_all(old, ec);
+}
+
+std::optional<AtmosphereTables> loadTables(const fs::path& dir, const std::string& expectedKey,
+                                           const TableSizes& sizes, std::string* reason) {
+    auto reject = [&](const std::string& why) -> std::optional<AtmosphereTables> {
+        if (reason) *reason = why;
+        return std::nullopt;
+    };
+    if (!fs::is_directory(dir)) return reject("no cache folder " + quote(dir));
+    std::string keyText;
+    try {
+        keyText = readFile(dir / "key.txt");
+    } catch (const FileError& e) {
+        return reject(e.what());
+    }
+    const std::map<std::string, std::string> fields = parseKeyFile(keyText);
+    auto field = [&](const std::string& name) {
+        const auto it = fields.find(name);
+        return it == fields.end() ? std::string() : it->second;
+    };
+    const fs::path keyPath = dir / "key.txt";
+    if (field("key") != expectedKey)
+        return reject("'" + keyPath.string() + "' holds key '" + field("key") + "', expected " + expectedKey);
+    if (field("model_version") != std::to_string(kModelVersion))
+        return reject("'" + keyPath.string() + "' is for model version '" + field("model_version") + "', not " +
+                      std::to_string(kModelVersion));
+    if (field("sizes") != sizesText(sizes))
+        return reject("'" + keyPath.string() + "' holds sizes '" + field("sizes") + "', expected '" +
+                      sizesText(sizes) + "'");
+
+    AtmosphereTables tables;
+    tables.sizes = sizes;
+    tables.transmittance = Table2D(sizes.transmittance_width, sizes.transmittance_height);
+    tables.scattering = Table3D(sizes.scatteringSize());
+    tables.singleMie = Table3D(sizes.scatteringSize());
+    tables.irradiance = Table2D(sizes.irradiance_width, sizes.irradiance_height);
+    std::vector<glm::dvec4>* texels[4] = {&tables.transmittance.texels, &tables.scattering.texels,
+                                          &tables.singleMie.texels, &tables.irradiance.texels};
+    const std::vector<TableImage> images = tableImages(sizes);
+    for (std::size_t i = 0; i < images.size(); ++i) {
+        const fs::path path = dir / images[i].file;
+        std::string bytes;
+        try {
+            bytes = readFile(path);
+        } catch (const FileError& e) {
+            return reject(e.what());
+        }
+        const std::string expected = field(images[i].file);
+        if (expected.empty()) return reject("'" + keyPath.string() + "' has no checksum for " + images[i].file);
+        if (fileChecksum(bytes) != expected)
+            return reject("'" + path.string() + "' is damaged (checksum " + fileChecksum(bytes) + ", expected " +
+                          expected + ")");
+        const std::string why = decodeExr(bytes, images[i], expectedKey, *texels[i]);
+        if (!why.empty()) return reject("'" + path.string() + "': " + why);
+    }
+    return tables;
+}
+
+}  // namespace planet::atmosphere
