@@ -135,7 +135,7 @@ TEST_F(CliTest, BenchWritesTableCsvAndPlot) {
         ++rows;
         sawSpaceTonemap = sawSpaceTonemap || contains(line, ",space,tonemap,3,");
     }
-    EXPECT_EQ(rows, 2 * 4);  // (terrain, lighting, tonemap, frame) x 2 views
+    EXPECT_EQ(rows, 2 * 4);  // (terrain, atmosphere, tonemap, frame) x 2 views
     EXPECT_TRUE(sawSpaceTonemap);
 
     int w = 0, h = 0, n = 0;

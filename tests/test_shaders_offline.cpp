@@ -25,13 +25,13 @@ TEST(ShadersOffline, EveryStageValidatesWithGlslang) {
         // Stages made of atmosphere files (the precompute shaders, passes that
         // include the model) need the table sizes and texture types their
         // program builders inject: atmosphereShaderDefines(), as GpuPrecompute does.
-        auto expanded = planet::gl::expandShader(root, file, planet::shaderPreamble());
+        auto expanded = planet::gl::expandShader(root, file, planet::gl::shaderPreamble());
         const bool atmosphere = std::any_of(expanded.files.begin(), expanded.files.end(),
                                             [](const std::string& f) { return f.starts_with("atmosphere/"); });
         if (atmosphere)
             expanded = planet::gl::expandShader(
                 root, file,
-                planet::shaderPreamble() + planet::atmosphere::atmosphereShaderDefines(planet::atmosphere::TableSizes{}));
+                planet::gl::shaderPreamble() + planet::atmosphere::atmosphereShaderDefines(planet::atmosphere::TableSizes{}));
         const fs::path out = tmp / ("shader." + stage);
         std::ofstream(out) << expanded.text;
         const auto r = planet::test::runCommand(std::string(GLSLANG_VALIDATOR) + " " + out.string());

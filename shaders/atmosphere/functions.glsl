@@ -26,20 +26,25 @@ Length ClampRadius(IN(AtmosphereParameters) atmosphere, Length r) {
 }
 Length SafeSqrt(Area a) { return sqrt(max(a, Area(0.0))); }
 
+// Discriminant of the ray-sphere quadratic, r^2 (mu^2 - 1) + R^2, written as
+// (r mu)^2 - (r - R)(r + R): near the ground r - R is small and exact, where
+// the textbook form subtracts numbers of size 4e7 km^2 (horizon precision).
+Area RaySphereDiscriminant(Length r, Number mu, Length sphere_radius) {
+    return (r * mu) * (r * mu) - (r - sphere_radius) * (r + sphere_radius);
+}
+
 // Distance along a ray from radius r with view zenith cosine mu to the top
 // boundary (the ray is inside the atmosphere).
 Length DistanceToTopAtmosphereBoundary(IN(AtmosphereParameters) atmosphere, Length r, Number mu) {
-    Area discriminant = r * r * (mu * mu - 1.0) + atmosphere.top_radius * atmosphere.top_radius;
-    return ClampDistance(-r * mu + SafeSqrt(discriminant));
+    return ClampDistance(-r * mu + SafeSqrt(RaySphereDiscriminant(r, mu, atmosphere.top_radius)));
 }
 
 Length DistanceToBottomAtmosphereBoundary(IN(AtmosphereParameters) atmosphere, Length r, Number mu) {
-    Area discriminant = r * r * (mu * mu - 1.0) + atmosphere.bottom_radius * atmosphere.bottom_radius;
-    return ClampDistance(-r * mu - SafeSqrt(discriminant));
+    return ClampDistance(-r * mu - SafeSqrt(RaySphereDiscriminant(r, mu, atmosphere.bottom_radius)));
 }
 
 bool RayIntersectsGround(IN(AtmosphereParameters) atmosphere, Length r, Number mu) {
-    return mu < 0.0 && r * r * (mu * mu - 1.0) + atmosphere.bottom_radius * atmosphere.bottom_radius >= 0.0;
+    return mu < 0.0 && RaySphereDiscriminant(r, mu, atmosphere.bottom_radius) >= 0.0;
 }
 
 // ----------------------------------------------------------- transmittance

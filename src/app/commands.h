@@ -1,6 +1,8 @@
 // The subcommands of `planet` and their options (parsed in main.cpp with CLI11).
 #pragma once
 
+#include <filesystem>
+#include <iosfwd>
 #include <optional>
 #include <string>
 #include <vector>
@@ -39,12 +41,51 @@ struct BenchOptions {
     std::string plot = "out/bench.png";
 };
 
+struct PrecomputeOptions {
+    CommonOptions common;
+    bool reference = false;  // CPU double-precision reference instead of the GPU
+    std::string cache;       // cache root (empty: $PLANET_CACHE, else cache/atmosphere)
+    bool force = false;      // rebuild even when a valid cache entry exists
+};
+
+struct SkyProbeOptions {
+    CommonOptions common;
+    std::string in;          // CSV: altitude_m,sun_zenith_deg,view_zenith_deg,view_azimuth_deg
+    std::string out;         // the same columns + radiance_rgb (1/sr) + transmittance_rgb
+    bool reference = false;  // Model (double) on CPU reference tables instead of the GPU
+    std::string cache;       // as PrecomputeOptions::cache
+};
+
 int runExplore(const ExploreOptions& options);
 int runRender(const RenderOptions& options);
 int runBench(const BenchOptions& options);
+int runPrecompute(const PrecomputeOptions& options);
+int runSkyProbe(const SkyProbeOptions& options);
 
 // Renders one still headlessly (shared by `render` and explore's no-display fallback).
 void renderStill(const CommonOptions& common, const std::vector<std::string>& outputs,
                  std::optional<double> exposure);
+
+struct Scene;
+namespace atmosphere {
+struct AtmosphereTables;
+struct TableSizes;
+}  // namespace atmosphere
+
+// The scene's atmosphere tables at `sizes` (shared by `precompute` and
+// `sky-probe`): the cache entry under `cacheRoot` (empty: the default root) when
+// it is valid and not `force`, else computed -- on the GPU of the current GL
+// context, or by the CPU reference when `reference` -- and saved there. Reports
+// each step's time, the total and the memory on `out`. Throws on failure,
+// including tables with NaN / Inf (which are never cached).
+// Table sizes for a --tables choice. Without a current GL context (the CPU
+// reference), "auto" asks a short-lived headless one which renderer it gets, so
+// that GPU and reference runs of the same command line use the same sizes.
+atmosphere::TableSizes commandTableSizes(const std::string& choice, bool haveContext);
+
+atmosphere::AtmosphereTables loadOrPrecomputeTables(const Scene& scene, const atmosphere::TableSizes& sizes,
+                                                    const std::string& cacheRoot,
+                                                    const std::filesystem::path& shaderRoot, bool reference,
+                                                    bool force, std::ostream& out);
 
 }  // namespace planet

@@ -55,12 +55,39 @@ int main(int argc, char** argv) {
     benchCmd->add_option("--csv", bench.csv, "CSV output (empty: none)")->capture_default_str();
     benchCmd->add_option("--plot", bench.plot, "Plot PNG output (empty: none)")->capture_default_str();
 
+    planet::PrecomputeOptions precompute;
+    CLI::App* precomputeCmd = app.add_subcommand(
+        "precompute", "Precompute the preset's atmosphere tables (GPU, headless) into the cache; time each step");
+    addCommon(*precomputeCmd, precompute.common);
+    precomputeCmd->add_flag("--reference", precompute.reference,
+                            "Use the CPU reference (double precision, multi-threaded) instead of the GPU");
+    precomputeCmd->add_option("--cache", precompute.cache,
+                              "Cache root; tables go to DIR/<key>/ (default: $PLANET_CACHE, else cache/atmosphere)");
+    precomputeCmd->add_flag("--force", precompute.force, "Rebuild even when valid cached tables exist");
+
+    planet::SkyProbeOptions skyProbe;
+    CLI::App* skyProbeCmd = app.add_subcommand(
+        "sky-probe", "Evaluate sky radiance / solar irradiance (1/sr) and transmittance for rows of a CSV");
+    addCommon(*skyProbeCmd, skyProbe.common);
+    skyProbeCmd->add_option("--in", skyProbe.in,
+                            "Input CSV: altitude_m,sun_zenith_deg,view_zenith_deg,view_azimuth_deg")
+        ->required();
+    skyProbeCmd->add_option("--out,-o", skyProbe.out,
+                            "Output CSV: the input columns + radiance_r,g,b (1/sr) + transmittance_r,g,b")
+        ->required();
+    skyProbeCmd->add_flag("--reference", skyProbe.reference,
+                          "Evaluate on the CPU (double) with CPU reference tables instead of the GPU");
+    skyProbeCmd->add_option("--cache", skyProbe.cache,
+                            "Table cache root (default: $PLANET_CACHE, else cache/atmosphere)");
+
     app.require_subcommand(0, 1);
     CLI11_PARSE(app, argc, argv);
 
     try {
         if (renderCmd->parsed()) return planet::runRender(render);
         if (benchCmd->parsed()) return planet::runBench(bench);
+        if (precomputeCmd->parsed()) return planet::runPrecompute(precompute);
+        if (skyProbeCmd->parsed()) return planet::runSkyProbe(skyProbe);
         return planet::runExplore(explore);
     } catch (const std::exception& e) {  // InputError, FileError, ContextError, ShaderError, ...
         std::cerr << "planet: error: " << e.what() << "\n";

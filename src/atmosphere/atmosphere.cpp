@@ -50,7 +50,7 @@ void Atmosphere::finishJob() {
 void Atmosphere::bind() const {
     const GLuint textures[] = {tables_->transmittance.id(), tables_->scattering.id(), tables_->singleMie.id(),
                                tables_->irradiance.id()};
-    glBindTextures(kTransmittanceUnit, 4, textures);
+    glBindTextures(kFirstTableUnit, 4, textures);
     glBindBufferBase(GL_UNIFORM_BUFFER, kAtmosphereUniformBinding, uniforms_.id());
 }
 

@@ -20,7 +20,7 @@
 namespace planet::atmosphere {
 
 // Texture units the atmosphere's tables are bound to for rendering.
-constexpr unsigned kTransmittanceUnit = 4;  // then scattering 5, single Mie 6, irradiance 7
+constexpr unsigned kFirstTableUnit = 4;  // transmittance 4, scattering 5, single Mie 6, irradiance 7
 
 class Atmosphere {
 public:
@@ -28,7 +28,7 @@ public:
 
     // Brings the tables towards the scene's atmosphere (see above).
     void update(const Scene& scene);
-    // Binds the tables (units kTransmittanceUnit..+3) and the parameter block.
+    // Binds the tables (units kFirstTableUnit..+3) and the parameter block.
     void bind() const;
 
     bool rebuilding() const { return job_.has_value(); }

@@ -7,7 +7,7 @@
 
 #include "atmosphere/uniforms.h"
 #include "gl/debug.h"
-#include "render/renderer.h"
+#include "gl/program.h"
 
 namespace planet::atmosphere {
 
@@ -231,7 +231,7 @@ namespace {
 
 gl::Program buildPass(const std::filesystem::path& root, const TableSizes& sizes, const char* name,
                       const char* file) {
-    return gl::buildProgram(gl::ShaderSources{root, shaderPreamble() + atmosphereShaderDefines(sizes)},
+    return gl::buildProgram(gl::ShaderSources{root, gl::shaderPreamble() + atmosphereShaderDefines(sizes)},
                             gl::ProgramDesc{name, {file}});
 }
 

@@ -304,12 +304,12 @@ std::optional<AtmosphereTables> loadTables(const fs::path& dir, const std::strin
     };
     const fs::path keyPath = dir / "key.txt";
     if (field("key") != expectedKey)
-        return reject("'" + keyPath.string() + "' holds key '" + field("key") + "', expected " + expectedKey);
+        return reject(quote(keyPath) + " holds key " + field("key") + ", expected " + expectedKey);
     if (field("model_version") != std::to_string(kModelVersion))
-        return reject("'" + keyPath.string() + "' is for model version '" + field("model_version") + "', not " +
+        return reject(quote(keyPath) + " is for model version '" + field("model_version") + "', not " +
                       std::to_string(kModelVersion));
     if (field("sizes") != sizesText(sizes))
-        return reject("'" + keyPath.string() + "' holds sizes '" + field("sizes") + "', expected '" +
+        return reject(quote(keyPath) + " holds sizes '" + field("sizes") + "', expected '" +
                       sizesText(sizes) + "'");
 
     AtmosphereTables tables;
@@ -330,12 +330,12 @@ std::optional<AtmosphereTables> loadTables(const fs::path& dir, const std::strin
             return reject(e.what());
         }
         const std::string expected = field(images[i].file);
-        if (expected.empty()) return reject("'" + keyPath.string() + "' has no checksum for " + images[i].file);
+        if (expected.empty()) return reject(quote(keyPath) + " has no checksum for " + images[i].file);
         if (fileChecksum(bytes) != expected)
-            return reject("'" + path.string() + "' is damaged (checksum " + fileChecksum(bytes) + ", expected " +
+            return reject(quote(path) + " is damaged (checksum " + fileChecksum(bytes) + ", expected " +
                           expected + ")");
         const std::string why = decodeExr(bytes, images[i], expectedKey, *texels[i]);
-        if (!why.empty()) return reject("'" + path.string() + "': " + why);
+        if (!why.empty()) return reject(quote(path) + ": " + why);
     }
     return tables;
 }

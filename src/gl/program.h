@@ -22,6 +22,9 @@ struct ProgramDesc {
     std::vector<std::string> stages; // files relative to the shaders root
 };
 
+// The #version line every shader starts with; passes append their own #defines.
+inline std::string shaderPreamble() { return "#version 450 core\n"; }
+
 struct ShaderSources {
     std::filesystem::path root;  // the shaders/ folder
     std::string preamble;        // #version line and shared #defines

@@ -5,15 +5,11 @@
 
 namespace planet {
 
-std::string shaderPreamble() {
-    return "#version 450 core\n";
-}
-
 Renderer::Renderer(const std::filesystem::path& shaderRoot, const atmosphere::TableSizes& atmosphereTables)
-    : sources_{shaderRoot, shaderPreamble()},
+    : sources_{shaderRoot, gl::shaderPreamble()},
       atmosphere_(shaderRoot, atmosphereTables),
       terrain_(sources_),
-      lighting_(gl::ShaderSources{shaderRoot, shaderPreamble() + atmosphere::atmosphereShaderDefines(atmosphereTables)},
+      lighting_(gl::ShaderSources{shaderRoot, gl::shaderPreamble() + atmosphere::atmosphereShaderDefines(atmosphereTables)},
                 "lighting", "render/lighting.frag"),
       tonemap_(sources_, "tonemap", "render/tonemap.frag") {
     glNamedBufferStorage(frameUniforms_.id(), sizeof(FrameUniforms), nullptr, GL_DYNAMIC_STORAGE_BIT);
@@ -27,8 +23,8 @@ void Renderer::render(const Scene& scene, const Camera& camera, glm::ivec2 size,
     targets_.resize(size);
     profiler_.beginFrame();
     if (atmosphere_.rebuilding()) {
-        gl::DebugGroup group("atmosphere");
-        auto timing = profiler_.pass("atmosphere");
+        gl::DebugGroup group("atmosphere tables");
+        auto timing = profiler_.pass("atmosphere tables");
         atmosphere_.update(scene);
     } else {
         atmosphere_.update(scene);  // usually nothing to do; starts a rebuild when the atmosphere changed
@@ -54,8 +50,8 @@ void Renderer::render(const Scene& scene, const Camera& camera, glm::ivec2 size,
         terrain_.draw(scene.planet);
     }
     {
-        gl::DebugGroup group("lighting");
-        auto timing = profiler_.pass("lighting");
+        gl::DebugGroup group("atmosphere");  // lighting + aerial perspective + sky, over the G-buffer
+        auto timing = profiler_.pass("atmosphere");
         glBindFramebuffer(GL_FRAMEBUFFER, targets_.hdrFramebuffer());
         const GBuffer& g = targets_.gbuffer();
         const GLuint inputs[] = {g.normal.id(), g.albedo.id(), g.material.id(), g.depth.id()};

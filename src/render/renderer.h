@@ -2,9 +2,10 @@
 // profiler scope, with data flowing one way (STYLE habit 6).
 //
 //   pass        reads                         writes
-//   atmosphere  scene.atmosphere              its tables, when they must change (one chunk a frame)
+//   atmosphere tables  scene.atmosphere       the tables, only while they are rebuilt (a chunk a frame)
 //   terrain     frame uniforms, planet        G-buffer (normal, albedo, material, depth)
-//   lighting    G-buffer, atmosphere tables   HDR radiance (surface light, aerial perspective, sky, sun)
+//   atmosphere  G-buffer, atmosphere tables   HDR radiance: surface light, aerial perspective, sky, sun
+//                                             (render/lighting.frag, a post-process over the G-buffer)
 //   tonemap     HDR radiance, exposure        LDR (display-ready sRGB)
 //
 //   ui          LDR                           the window (explorer only: blit + panels)
@@ -29,9 +30,6 @@
 #include "terrain/placeholder_sphere.h"
 
 namespace planet {
-
-// The #version line and shared #defines every shader starts with.
-std::string shaderPreamble();
 
 class Renderer {
 public:

@@ -1,0 +1,183 @@
+// `planet precompute` and `planet sky-probe` end to end, at reduced table
+// sizes: step timings and the table cache (hit, --force, a damaged entry
+// rebuilt), the GPU probe against the CPU reference on a handful of rays, and
+// malformed probe input that must fail naming its line and write nothing.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "process.h"
+#include "test_util.h"
+#include "util/file_util.h"
+
+namespace fs = std::filesystem;
+using planet::test::contains;
+using planet::test::runCommand;
+
+namespace {
+
+class AtmosphereCli : public ::testing::Test {
+protected:
+    void SetUp() override {
+        const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+        dir = fs::path(PLANET_TEST_OUT) / info->name();
+        fs::remove_all(dir);
+        fs::create_directories(dir);
+    }
+    std::string planet(const std::string& args) const {
+        return "cd '" + dir.string() + "' && env -u DISPLAY -u WAYLAND_DISPLAY -u PLANET_CACHE '" PLANET_EXE "' " +
+               args;
+    }
+    // The one cache entry under root.
+    fs::path entry(const fs::path& root) const {
+        std::vector<fs::path> entries;
+        for (const auto& e : fs::directory_iterator(root)) entries.push_back(e.path());
+        EXPECT_EQ(entries.size(), 1u);
+        return entries.empty() ? fs::path() : entries[0];
+    }
+    fs::path dir;
+};
+
+struct ProbeValues {
+    double radiance[3], transmittance[3];
+};
+
+// Rows of a sky-probe output (the input columns are skipped).
+std::vector<ProbeValues> readProbe(const fs::path& path) {
+    std::ifstream in(path);
+    std::string line;
+    std::getline(in, line);
+    EXPECT_EQ(line, "altitude_m,sun_zenith_deg,view_zenith_deg,view_azimuth_deg,radiance_r,radiance_g,radiance_b,"
+                    "transmittance_r,transmittance_g,transmittance_b");
+    std::vector<ProbeValues> rows;
+    while (std::getline(in, line)) {
+        std::vector<double> v;
+        std::istringstream fields(line);
+        for (std::string f; std::getline(fields, f, ',');) v.push_back(std::stod(f));
+        EXPECT_EQ(v.size(), 10u) << line;
+        if (v.size() != 10) continue;
+        rows.push_back({{v[4], v[5], v[6]}, {v[7], v[8], v[9]}});
+    }
+    return rows;
+}
+
+}  // namespace
+
+TEST_F(AtmosphereCli, PrecomputeTimesStepsAndCachesTables) {
+    const auto r = runCommand(planet("precompute --tables reduced --cache c"));
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    for (const char* word : {"transmittance", "direct irradiance", "single scattering", "order 2", "order 4", "total",
+                             "MiB", "64x16", "wrote"})
+        EXPECT_TRUE(contains(r.output, word)) << word << ":\n" << r.output;
+    const fs::path cached = entry(dir / "c");
+    EXPECT_EQ(cached.filename().string().size(), 16u);
+    for (const char* file : {"transmittance.exr", "scattering.exr", "single_mie.exr", "irradiance.exr", "key.txt"})
+        EXPECT_TRUE(fs::exists(cached / file)) << file;
+
+    const auto hit = runCommand(planet("precompute --tables reduced --cache c"));
+    ASSERT_EQ(hit.exitCode, 0) << hit.output;
+    EXPECT_TRUE(contains(hit.output, "cache hit")) << hit.output;
+    EXPECT_FALSE(contains(hit.output, "total")) << hit.output;
+
+    const auto forced = runCommand(planet("precompute --tables reduced --cache c --force"));
+    ASSERT_EQ(forced.exitCode, 0) << forced.output;
+    EXPECT_TRUE(contains(forced.output, "total")) << forced.output;
+    EXPECT_FALSE(contains(forced.output, "cache hit")) << forced.output;
+    EXPECT_EQ(entry(dir / "c"), cached);  // same key, same folder, nothing left beside it
+
+    // A damaged file is not trusted: the tables are rebuilt, and then trusted again.
+    std::string bytes = planet::readFile(cached / "scattering.exr");
+    for (std::size_t i = bytes.size() / 2; i < bytes.size() / 2 + 8; ++i) bytes[i] = static_cast<char>(~bytes[i]);
+    planet::writeFileAtomic(cached / "scattering.exr", bytes);
+    const auto rebuilt = runCommand(planet("precompute --tables reduced --cache c"));
+    ASSERT_EQ(rebuilt.exitCode, 0) << rebuilt.output;
+    EXPECT_TRUE(contains(rebuilt.output, "not usable")) << rebuilt.output;
+    EXPECT_TRUE(contains(rebuilt.output, "scattering.exr")) << rebuilt.output;
+    EXPECT_TRUE(contains(rebuilt.output, "total")) << rebuilt.output;
+    const auto again = runCommand(planet("precompute --tables reduced --cache c"));
+    EXPECT_TRUE(contains(again.output, "cache hit")) << again.output;
+}
+
+TEST_F(AtmosphereCli, SkyProbeGpuMatchesCpuReference) {
+    std::ofstream(dir / "cases.csv") << "altitude_m,sun_zenith_deg,view_zenith_deg,view_azimuth_deg\n"
+                                        "0,0,0,0\n"          // noon, zenith
+                                        "0,45,89.5,90\n"     // near the horizon, sun to the side
+                                        "0,89,88,5\n"        // sunset, looking near the sun
+                                        "10000,30,60,120\n"  // 10 km up
+                                        "100000,40,99,0\n"   // 100 km, above the top: the limb
+                                        "100000,40,0,0\n";   // 100 km, looking up: misses the atmosphere
+    const auto gpu = runCommand(planet("sky-probe --tables reduced --in cases.csv --out gpu.csv"));
+    ASSERT_EQ(gpu.exitCode, 0) << gpu.output;
+    const auto ref = runCommand(planet("sky-probe --tables reduced --in cases.csv --out ref.csv --reference"));
+    ASSERT_EQ(ref.exitCode, 0) << ref.output;
+    const std::vector<ProbeValues> g = readProbe(dir / "gpu.csv"), c = readProbe(dir / "ref.csv");
+    ASSERT_EQ(g.size(), 6u);
+    ASSERT_EQ(c.size(), 6u);
+
+    // Tolerance: 2% relative per channel (floor: 1e-4 /sr for radiance, 1e-4
+    // for transmittance, so values that are essentially zero compare in
+    // absolute terms). The tables themselves agree to 1% (test_atmosphere_gpu);
+    // the lookup adds single-precision coordinates and the GPU's 8-bit
+    // filtering weights.
+    for (std::size_t i = 0; i < g.size(); ++i) {
+        for (int ch = 0; ch < 3; ++ch) {
+            ASSERT_TRUE(std::isfinite(g[i].radiance[ch]) && std::isfinite(g[i].transmittance[ch])) << i;
+            const double dr = std::abs(g[i].radiance[ch] - c[i].radiance[ch]) / std::max(std::abs(c[i].radiance[ch]), 1e-4);
+            const double dt = std::abs(g[i].transmittance[ch] - c[i].transmittance[ch]) /
+                              std::max(std::abs(c[i].transmittance[ch]), 1e-4);
+            std::printf("  row %zu channel %d: radiance gpu %.5e ref %.5e (%.2f%%), transmittance gpu %.5f ref %.5f\n",
+                        i, ch, g[i].radiance[ch], c[i].radiance[ch], 100.0 * dr, g[i].transmittance[ch],
+                        c[i].transmittance[ch]);
+            EXPECT_LT(dr, 0.02) << "row " << i << " channel " << ch;
+            EXPECT_LT(dt, 0.02) << "row " << i << " channel " << ch;
+        }
+    }
+    // Physically plausible noon zenith sky: blue, 0.005 - 0.1 /sr of the sun's irradiance.
+    EXPECT_GT(g[0].radiance[2], 0.005);
+    EXPECT_LT(g[0].radiance[2], 0.1);
+    EXPECT_GT(g[0].radiance[2], g[0].radiance[0]);
+    // Looking up from above the atmosphere: nothing scattered, nothing absorbed.
+    for (int ch = 0; ch < 3; ++ch) {
+        EXPECT_EQ(g[5].radiance[ch], 0.0);
+        EXPECT_EQ(g[5].transmittance[ch], 1.0);
+    }
+    // A second GPU run takes the tables from the cache the first one wrote.
+    const auto second = runCommand(planet("sky-probe --tables reduced --in cases.csv --out gpu2.csv"));
+    ASSERT_EQ(second.exitCode, 0) << second.output;
+    EXPECT_TRUE(contains(second.output, "cache hit")) << second.output;
+}
+
+TEST_F(AtmosphereCli, SkyProbeRejectsMalformedRowsNamingTheLine) {
+    struct Case {
+        std::string body, message;
+    };
+    const std::string header = "altitude_m,sun_zenith_deg,view_zenith_deg,view_azimuth_deg\n";
+    const Case cases[] = {
+        {header + "0,0,0,0\n0,0,0\n", "cases.csv:3"},
+        {header + "0,0,0,0\n0,0,0,0,0\n", "cases.csv:3"},
+        {header + "0,zero,0,0\n", "cases.csv:2: sun_zenith_deg"},
+        {header + "0,0,nan,0\n", "cases.csv:2: view_zenith_deg"},
+        {header + "-1,0,0,0\n", "cases.csv:2: altitude_m"},
+        {header + "2e9,0,0,0\n", "cases.csv:2: altitude_m"},
+        {header + "0,181,0,0\n", "cases.csv:2: sun_zenith_deg"},
+        {header + "0,0,-1,0\n", "cases.csv:2: view_zenith_deg"},
+        {header + "0,0,0,361\n", "cases.csv:2: view_azimuth_deg"},
+        {"altitude,sun,view,azimuth\n0,0,0,0\n", "cases.csv:1"},
+    };
+    for (const Case& c : cases) {
+        std::ofstream(dir / "cases.csv") << c.body;
+        const auto r = runCommand(planet("sky-probe --tables reduced --in cases.csv --out out.csv --reference"));
+        EXPECT_NE(r.exitCode, 0) << c.body;
+        EXPECT_TRUE(contains(r.output, c.message)) << c.body << ":\n" << r.output;
+        EXPECT_FALSE(fs::exists(dir / "out.csv")) << c.body;
+    }
+    const auto missing = runCommand(planet("sky-probe --in nosuch.csv --out out.csv"));
+    EXPECT_NE(missing.exitCode, 0);
+    EXPECT_TRUE(contains(missing.output, "nosuch.csv")) << missing.output;
+}

@@ -1,0 +1,118 @@
+// The atmosphere in rendered frames: what the sky must show, no NaN for any
+// camera or sun, and live rebuilds that never show half-built tables.
+#include <cmath>
+
+#include "atmosphere/precompute_gpu.h"
+#include "gl_test_support.h"
+#include "render/readback.h"
+#include "render/renderer.h"
+
+using namespace planet;
+
+namespace {
+
+constexpr glm::ivec2 kSize{96, 54};
+
+class AtmosphereRenderTest : public test::GLTest {
+protected:
+    static void SetUpTestSuite() {
+        GLTest::SetUpTestSuite();
+        renderer = std::make_unique<Renderer>(test::repoPaths().shaders(), atmosphere::TableSizes::reduced());
+    }
+    static void TearDownTestSuite() {
+        renderer.reset();
+        GLTest::TearDownTestSuite();
+    }
+    static Session session(const std::string& view) { return loadSession(test::repoPaths(), "earth", view); }
+    static ImageRGBAF render(const Session& s, glm::ivec2 size = kSize) {
+        renderer->render(s.scene, s.camera, size);
+        return readTextureRGBAF(renderer->targets().hdr(), size.x, size.y);
+    }
+    static inline std::unique_ptr<Renderer> renderer;
+};
+
+glm::vec3 rgb(const ImageRGBAF& image, int x, int y) {
+    const float* p = test::pixelAt(image, x, y);  // row 0 = top of the image
+    return {p[0], p[1], p[2]};
+}
+
+// A camera on the ground looking straight up or at the horizon, sun at an elevation.
+Session groundLooking(double pitchDeg, double sunElevationDeg) {
+    Session s = loadSession(test::repoPaths(), "earth", "ground");
+    View v = s.view;
+    v.pitch_deg = pitchDeg;
+    v.fov_deg = 20.0;
+    v.sun_elevation_deg = sunElevationDeg;
+    v.sun_azimuth_deg = v.heading_deg;  // the sun in front of the camera
+    applyView(v, s);
+    return s;
+}
+
+}  // namespace
+
+TEST_F(AtmosphereRenderTest, NoonSkyIsBluerAtZenithThanAtTheHorizon) {
+    const glm::vec3 zenith = rgb(render(groundLooking(89.0, 70.0)), kSize.x / 2, kSize.y / 2);
+    const glm::vec3 horizon = rgb(render(groundLooking(3.0, 70.0)), kSize.x / 2, kSize.y / 2);
+    EXPECT_GT(zenith.b / zenith.r, horizon.b / horizon.r);
+    EXPECT_GT(zenith.b, zenith.r);
+}
+
+TEST_F(AtmosphereRenderTest, SkyNearTheSunIsRedderAtSunsetThanAtNoon) {
+    const glm::vec3 noon = rgb(render(groundLooking(30.0, 40.0)), kSize.x / 2, kSize.y / 4);
+    const glm::vec3 sunset = rgb(render(groundLooking(3.0, 1.0)), kSize.x / 2, kSize.y / 4);
+    EXPECT_GT(sunset.r / sunset.b, 1.5 * noon.r / noon.b);
+}
+
+TEST_F(AtmosphereRenderTest, SpaceIsBlackAroundThePlanetAndTheLimbGlows) {
+    const ImageRGBAF hdr = render(session("space"));
+    EXPECT_EQ(rgb(hdr, 0, 0), glm::vec3(0.0f));
+    // Along the middle row from the left edge: black space, then the atmosphere's limb, then the disc.
+    float brightest = 0.0f;
+    for (int x = 0; x < kSize.x / 2; ++x) brightest = std::max(brightest, rgb(hdr, x, kSize.y / 2).b);
+    EXPECT_GT(brightest, 0.0f);
+}
+
+TEST_F(AtmosphereRenderTest, NoNanOrInfForAnyCameraAltitudeOrSun) {
+    Session s = session("ground");
+    for (double altitude : {0.1, 1.0, 2.0, 1e4, 6e4, 1e5, 1e7, 9e8}) {
+        for (double sunElevation : {60.0, 0.0, -10.0}) {
+            View v = s.view;
+            v.altitude_m = altitude;
+            v.pitch_deg = altitude > 1e5 ? -60.0 : 0.0;
+            v.sun_elevation_deg = sunElevation;
+            v.sun_azimuth_deg = 90.0;
+            applyView(v, s);
+            EXPECT_TRUE(test::allFinite(render(s, {32, 18}))) << altitude << " m, sun " << sunElevation;
+        }
+    }
+}
+
+TEST_F(AtmosphereRenderTest, NightSideIsDark) {
+    const ImageRGBAF night = render(groundLooking(30.0, -30.0));
+    const glm::vec3 c = rgb(night, kSize.x / 2, kSize.y / 2);
+    const glm::vec3 day = rgb(render(groundLooking(30.0, 30.0)), kSize.x / 2, kSize.y / 2);
+    EXPECT_LT(c.b, 1e-3f * day.b);
+}
+
+TEST_F(AtmosphereRenderTest, ChangingTheAtmosphereRebuildsWithoutShowingHalfBuiltTables) {
+    Session s = session("ground");
+    render(s);
+    const auto before = atmosphere::readBack(renderer->atmosphere().tables());
+    s.scene.atmosphere.rayleigh_scattering_per_m *= 2.0;
+    render(s);
+    ASSERT_TRUE(renderer->atmosphere().rebuilding());
+    int frames = 1;
+    while (renderer->atmosphere().rebuilding() && frames < 1000) {
+        // Until the rebuild is done the frame uses the complete old tables.
+        EXPECT_EQ(atmosphere::readBack(renderer->atmosphere().tables()).transmittance.texels,
+                  before.transmittance.texels);
+        render(s, {16, 9});
+        ++frames;
+    }
+    EXPECT_FALSE(renderer->atmosphere().rebuilding());
+    EXPECT_GT(frames, 2);  // it was spread over frames
+    const auto after = atmosphere::readBack(renderer->atmosphere().tables());
+    EXPECT_LT(after.transmittance.at(0, 0).b, before.transmittance.at(0, 0).b);  // denser air: less light through
+    s.scene.atmosphere.rayleigh_scattering_per_m /= 2.0;  // leave the shared renderer as it was
+    while (renderer->atmosphere().rebuilding() || frames == 0) render(s, {16, 9});
+}
