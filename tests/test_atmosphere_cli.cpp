@@ -108,6 +108,7 @@ TEST_F(AtmosphereCli, SkyProbeGpuMatchesCpuReference) {
     std::ofstream(dir / "cases.csv") << "altitude_m,sun_zenith_deg,view_zenith_deg,view_azimuth_deg\n"
                                         "0,0,0,0\n"          // noon, zenith
                                         "0,45,89.5,90\n"     // near the horizon, sun to the side
+                                        "0,45,90,90\n"       // the horizon itself
                                         "0,89,88,5\n"        // sunset, looking near the sun
                                         "10000,30,60,120\n"  // 10 km up
                                         "100000,40,99,0\n"   // 100 km, above the top: the limb
@@ -117,8 +118,8 @@ TEST_F(AtmosphereCli, SkyProbeGpuMatchesCpuReference) {
     const auto ref = runCommand(planet("sky-probe --tables reduced --in cases.csv --out ref.csv --reference"));
     ASSERT_EQ(ref.exitCode, 0) << ref.output;
     const std::vector<ProbeValues> g = readProbe(dir / "gpu.csv"), c = readProbe(dir / "ref.csv");
-    ASSERT_EQ(g.size(), 6u);
-    ASSERT_EQ(c.size(), 6u);
+    ASSERT_EQ(g.size(), 7u);
+    ASSERT_EQ(c.size(), 7u);
 
     // Tolerance: 2% relative per channel (floor: 1e-4 /sr for radiance, 1e-4
     // for transmittance, so values that are essentially zero compare in
@@ -144,8 +145,8 @@ TEST_F(AtmosphereCli, SkyProbeGpuMatchesCpuReference) {
     EXPECT_GT(g[0].radiance[2], g[0].radiance[0]);
     // Looking up from above the atmosphere: nothing scattered, nothing absorbed.
     for (int ch = 0; ch < 3; ++ch) {
-        EXPECT_EQ(g[5].radiance[ch], 0.0);
-        EXPECT_EQ(g[5].transmittance[ch], 1.0);
+        EXPECT_EQ(g[6].radiance[ch], 0.0);
+        EXPECT_EQ(g[6].transmittance[ch], 1.0);
     }
     // A second GPU run takes the tables from the cache the first one wrote.
     const auto second = runCommand(planet("sky-probe --tables reduced --in cases.csv --out gpu2.csv"));

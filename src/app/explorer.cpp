@@ -218,7 +218,7 @@ void Explorer::drawUi() {
     ImGui::NewFrame();
     if (showUi_) {
         drawProfilerPanel(renderer_.profiler(), rendererName_);
-        drawSceneParams(session_.scene);
+        drawSceneParams(session_.scene, renderer_.atmosphere().rebuildProgress());
         const CameraPanelResult r = drawCameraPanel(session_.camera, controller_, session_.scene.planetRadiusM(),
                                                     session_.views, presetPath_, status_);
         if (r.jumpToView >= 0) applyView(session_.views[static_cast<std::size_t>(r.jumpToView)], session_);

@@ -85,7 +85,7 @@ void drawProfilerPanel(const Profiler& profiler, const std::string& renderer) {
     ImGui::End();
 }
 
-bool drawSceneParams(Scene& scene) {
+bool drawSceneParams(Scene& scene, double rebuildProgress) {
     ImGui::SetNextWindowPos(ImVec2(10, 330), ImGuiCond_FirstUseEver);
     ImGui::SetNextWindowSize(ImVec2(430, 0), ImGuiCond_FirstUseEver);
     bool changed = false;
@@ -99,6 +99,8 @@ bool drawSceneParams(Scene& scene) {
         if (spec.section != section) {
             section = spec.section;
             open = ImGui::CollapsingHeader(section.c_str(), ImGuiTreeNodeFlags_DefaultOpen);
+            if (open && section == "atmosphere" && rebuildProgress < 1.0)
+                ImGui::ProgressBar(static_cast<float>(rebuildProgress), ImVec2(-1.0f, 0.0f), "rebuilding tables");
         }
         if (!open) continue;
         ImGui::PushID(spec.path().c_str());

@@ -14,6 +14,7 @@
 // same function compiled as C++ (Model, double) on freshly computed CPU
 // reference tables. The whole input is checked before any work: a malformed
 // row stops the command naming its line, and nothing is written.
+#include <algorithm>
 #include <charconv>
 #include <chrono>
 #include <cmath>
@@ -21,6 +22,7 @@
 #include <iostream>
 #include <optional>
 #include <sstream>
+#include <string_view>
 
 #include "app/commands.h"
 #include "app/session.h"
@@ -31,7 +33,6 @@
 #include "gl/context.h"
 #include "gl/debug.h"
 #include "gl/program.h"
-#include "render/renderer.h"
 #include "scene/toml_error.h"
 #include "util/file_util.h"
 #include "util/log.h"
