@@ -5,7 +5,7 @@ layout(std140, binding = 1) uniform AtmosphereUniforms {
     vec4 solarIrradiance;       // rgb; w: sun angular radius
     vec4 radii;                 // bottom, top (km), Mie g, mu_s_min
     vec4 rayleighScattering;    // rgb; w: Elek phase flag
-    vec4 mieScattering;
+    vec4 mieScattering;         // rgb; w: 1 = render with Elek's 3D table (lighting.frag)
     vec4 mieExtinction;
     vec4 absorptionExtinction;
     vec4 groundAlbedo;

@@ -7,12 +7,16 @@
 // the camera and plus the light scattered in between (Sperlhofer Eq. 4-18).
 // Sky: radiance scattered along the view ray (Sperlhofer Eq. 2-16) plus the
 // sun disc with limb darkening, seen through the atmosphere (Elek §4.2.2).
+// In-scattering comes from Bruneton's 4D table or, when the uniform block's
+// mieScattering.w is set (preset atmosphere.elek_3d_table), from Elek's 3D
+// table (elek_table.glsl); transmittance and irradiance are shared.
 #include "common/frame_uniforms.glsl"
 #include "common/constants.glsl"
 #include "atmosphere/definitions.glsl"
 #include "atmosphere/uniforms.glsl"
 #include "atmosphere/functions.glsl"
 #include "atmosphere/rendering.glsl"
+#include "atmosphere/elek_table.glsl"
 
 in vec2 vNdc;
 layout(binding = 0) uniform sampler2D gNormal;
@@ -23,6 +27,8 @@ layout(binding = 4) uniform sampler2D transmittance_texture;
 layout(binding = 5) uniform sampler3D scattering_texture;
 layout(binding = 6) uniform sampler3D single_mie_scattering_texture;
 layout(binding = 7) uniform sampler2D irradiance_texture;
+layout(binding = 8) uniform sampler3D elek_scattering_texture;
+layout(binding = 9) uniform sampler3D elek_single_mie_scattering_texture;
 
 layout(location = 0) out vec4 outRadiance;
 
@@ -44,6 +50,7 @@ vec3 sunDiscRadiance(vec3 dir, vec3 sun, float angularRadius, vec3 irradiance) {
 
 void main() {
     AtmosphereParameters atmosphere = atmosphereParameters();
+    bool elek = atmosphereUniforms.mieScattering.w > 0.5;  // uniform: no divergence
     ivec2 pixel = ivec2(gl_FragCoord.xy);
     vec3 dir = worldRayFromNdc(vNdc);
     vec3 sun = frame.sunDirection.xyz;
@@ -54,8 +61,10 @@ void main() {
 
     int material = int(texelFetch(gMaterial, pixel, 0).r * 255.0 + 0.5);
     if (material == MATERIAL_NONE) {
-        vec3 sky = GetSkyRadiance(atmosphere, transmittance_texture, scattering_texture,
-                                  single_mie_scattering_texture, camera, dir, sun, transmittance);
+        vec3 sky = elek ? GetSkyRadianceElek(atmosphere, transmittance_texture, elek_scattering_texture,
+                                             elek_single_mie_scattering_texture, camera, dir, sun, transmittance)
+                        : GetSkyRadiance(atmosphere, transmittance_texture, scattering_texture,
+                                         single_mie_scattering_texture, camera, dir, sun, transmittance);
         vec3 disc = sunDiscRadiance(dir, sun, frame.sunDirection.w, atmosphere.solar_irradiance);
         outRadiance = vec4(sky + transmittance * disc, 1.0);
         return;
@@ -73,8 +82,12 @@ void main() {
     vec3 sunIrradiance = GetSunAndSkyIrradiance(atmosphere, transmittance_texture, irradiance_texture, point, normal,
                                                 sun, skyIrradiance);
     vec3 surface = albedo / PI * (sunIrradiance + skyIrradiance);
-    vec3 inscatter = GetSkyRadianceToPointAlongRay(atmosphere, transmittance_texture, scattering_texture,
-                                                   single_mie_scattering_texture, camera, dir, rayDistanceKm, sun,
-                                                   transmittance);
+    vec3 inscatter =
+        elek ? GetSkyRadianceToPointAlongRayElek(atmosphere, transmittance_texture, elek_scattering_texture,
+                                                 elek_single_mie_scattering_texture, camera, dir, rayDistanceKm, sun,
+                                                 transmittance)
+             : GetSkyRadianceToPointAlongRay(atmosphere, transmittance_texture, scattering_texture,
+                                             single_mie_scattering_texture, camera, dir, rayDistanceKm, sun,
+                                             transmittance);
     outRadiance = vec4(surface * transmittance + inscatter, 1.0);
 }

@@ -1,8 +1,10 @@
 #include "atmosphere/atmosphere.h"
 
+#include <cstdio>
 #include <cstring>
 
 #include "atmosphere/parameters.h"
+#include "atmosphere/table_cache.h"
 #include "util/log.h"
 
 namespace planet::atmosphere {
@@ -23,34 +25,72 @@ Atmosphere::Atmosphere(const std::filesystem::path& shaderRoot, const TableSizes
 
 void Atmosphere::update(const Scene& scene) {
     const Target wanted = targetFor(scene);
+    const bool elek = scene.atmosphere.elek_3d_table;
     if (!tables_) {  // first use: tables now
-        logInfo("precomputing atmosphere tables (" + std::to_string(sizes().bytes() >> 20) + " MiB)...");
-        tables_ = precompute_.compute(makeAtmosphereParameters(scene), wanted.orders, [](const PrecomputeStep& s) {
-            logInfo("  " + s.name + ": " + std::to_string(s.seconds) + " s");
-        });
+        tables_ = loadOrCompute(makeAtmosphereParameters(scene), wanted.orders);
+        // Elek's 3D table from the 4D ones (the cache holds only those), one short pass.
+        precompute_.computeElekTable(makeAtmosphereParameters(scene), *tables_);
         current_ = wanted;
-        glNamedBufferSubData(uniforms_.id(), 0, sizeof current_.uniforms, &current_.uniforms);
+        elek3dTable_ = elek;
+        writeUniforms();
         return;
+    }
+    if (elek != elek3dTable_) {  // a render-time switch: same tables, new flag
+        elek3dTable_ = elek;
+        writeUniforms();
     }
     if (job_ && !(pending_ == wanted)) job_.reset();  // parameters moved on: restart with the newest
     if (!job_ && !(current_ == wanted)) {
-        job_ = precompute_.start(makeAtmosphereParameters(scene), wanted.orders);
+        job_ = precompute_.start(makeAtmosphereParameters(scene), wanted.orders, {}, 4, /*elekTable=*/true);
         pending_ = wanted;
     }
     if (job_ && job_->step()) finishJob();
 }
 
+GpuTables Atmosphere::loadOrCompute(const AtmosphereParameters& parameters, int orders) {
+    const std::string key = tableCacheKey(parameters, sizes(), orders);
+    const std::filesystem::path dir = defaultTableCacheRoot() / key;
+    std::string reason;
+    if (std::filesystem::exists(dir)) {
+        if (auto cached = loadTables(dir, key, sizes(), &reason)) {
+            logInfo("atmosphere tables from the cache " + dir.string());
+            return upload(*cached);
+        }
+        logWarning("atmosphere cache " + dir.string() + " not used (" + reason + "); rebuilding it");
+    }
+    char mib[32];
+    std::snprintf(mib, sizeof mib, "%.2f MiB", static_cast<double>(sizes().bytes()) / (1 << 20));
+    logInfo(std::string("precomputing atmosphere tables (") + mib + ")...");
+    GpuTables tables = precompute_.compute(parameters, orders, [](const PrecomputeStep& s) {
+        logInfo("  " + s.name + ": " + std::to_string(s.seconds) + " s");
+    });
+    try {
+        saveTables(readBack(tables), dir, key);
+    } catch (const std::exception& e) {  // a read-only folder costs the next start time, nothing else
+        logWarning(std::string("atmosphere tables not cached: ") + e.what());
+    }
+    return tables;
+}
+
 void Atmosphere::finishJob() {
     tables_ = job_->takeResult();
     current_ = pending_;
-    glNamedBufferSubData(uniforms_.id(), 0, sizeof current_.uniforms, &current_.uniforms);
+    writeUniforms();
     job_.reset();
+}
+
+void Atmosphere::writeUniforms() {
+    AtmosphereUniforms u = current_.uniforms;
+    u.mieScattering.w = elek3dTable_ ? 1.0f : 0.0f;
+    glNamedBufferSubData(uniforms_.id(), 0, sizeof u, &u);
 }
 
 void Atmosphere::bind() const {
     const GLuint textures[] = {tables_->transmittance.id(), tables_->scattering.id(), tables_->singleMie.id(),
                                tables_->irradiance.id()};
     glBindTextures(kFirstTableUnit, 4, textures);
+    const GLuint elekTextures[] = {tables_->elekScattering.id(), tables_->elekSingleMie.id()};
+    glBindTextures(kFirstElekTableUnit, 2, elekTextures);
     glBindBufferBase(GL_UNIFORM_BUFFER, kAtmosphereUniformBinding, uniforms_.id());
 }
 

@@ -1,12 +1,18 @@
 // The atmosphere at run time: the tables in use, the parameters they were
 // made for (uniform block, binding 1), and a rebuild in progress.
 //
-// The first update() makes tables before returning (from the cache when a
-// valid one exists, else precomputed on the GPU with progress in the log).
+// The first update() makes tables before returning: from the disk cache
+// (table_cache.h) when a valid entry exists, else precomputed on the GPU with
+// progress in the log and then cached. Rebuilds while tuning are not cached.
 // Later, when the scene's atmosphere changes, update() runs one chunk of a
 // rebuild per call -- the explorer calls it once a frame -- while the old
 // tables and their parameters stay in use, and swaps when the rebuild is done.
 // So tuning never freezes the window and never shows half-built tables.
+//
+// The tables include Elek's 3D table (elek_table.glsl), built as the last step
+// of every precomputation. Which parametrization the frame uses is the preset's
+// atmosphere.elek_3d_table, a render-time choice: it only sets the w of the
+// uniform block's mieScattering, never rebuilds.
 #pragma once
 
 #include <filesystem>
@@ -21,6 +27,7 @@ namespace planet::atmosphere {
 
 // Texture units the atmosphere's tables are bound to for rendering.
 constexpr unsigned kFirstTableUnit = 4;  // transmittance 4, scattering 5, single Mie 6, irradiance 7
+constexpr unsigned kFirstElekTableUnit = 8;  // Elek scattering 8, Elek single Mie 9
 
 class Atmosphere {
 public:
@@ -28,13 +35,15 @@ public:
 
     // Brings the tables towards the scene's atmosphere (see above).
     void update(const Scene& scene);
-    // Binds the tables (units kFirstTableUnit..+3) and the parameter block.
+    // Binds the tables (units kFirstTableUnit..+3, kFirstElekTableUnit..+1) and the parameter block.
     void bind() const;
 
     bool rebuilding() const { return job_.has_value(); }
     double rebuildProgress() const { return job_ ? job_->progress() : 1.0; }
     const TableSizes& sizes() const { return precompute_.sizes(); }
     const GpuTables& tables() const { return *tables_; }
+    // Whether the uniform block asks for Elek's 3D table (the scene's atmosphere.elek_3d_table).
+    bool usesElekTable() const { return elek3dTable_; }
 
 private:
     struct Target {
@@ -43,13 +52,16 @@ private:
         bool operator==(const Target& o) const;
     };
     static Target targetFor(const Scene& scene);
+    GpuTables loadOrCompute(const AtmosphereParameters& parameters, int orders);
     void finishJob();
+    void writeUniforms();  // current_.uniforms with the Elek flag
 
     GpuPrecompute precompute_;
     std::optional<GpuTables> tables_;
     Target current_{};                 // what tables_ hold
     std::optional<GpuPrecomputeJob> job_;
     Target pending_{};                 // what job_ computes
+    bool elek3dTable_ = false;          // render-time choice, not part of Target
     gl::Buffer uniforms_;
 };
 

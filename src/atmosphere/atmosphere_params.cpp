@@ -46,6 +46,9 @@ void addAtmosphereParams(std::vector<ParamSpec>& table) {
         [](Scene& s) { return ParamRef{&s.atmosphere.min_sun_elevation_deg}; });
     add("elek_rayleigh_phase", "", 0.0, 1.0, "Use Elek's ad hoc Rayleigh phase function (Eq. 15) instead of Eq. 2.",
         [](Scene& s) { return ParamRef{&s.atmosphere.elek_rayleigh_phase}; });
+    add("elek_3d_table", "", 0.0, 1.0,
+        "Render with Elek's 3D table (altitude, view and sun zenith; azimuth dropped) instead of the 4D one.",
+        [](Scene& s) { return ParamRef{&s.atmosphere.elek_3d_table}; });
 }
 
 }  // namespace planet

@@ -27,6 +27,7 @@ struct AtmosphereParams {
     int scattering_orders = 4;                                          // single + multiple, [1, 10]
     double min_sun_elevation_deg = -12.0;  // lowest sun the tables cover (Bruneton's mu_s_min), [-90, 0]
     bool elek_rayleigh_phase = false;      // Elek Eq. 15 ad hoc phase instead of Eq. 2
+    bool elek_3d_table = false;            // render with Elek's 3D table (no azimuth) instead of the 4D one
 };
 
 }  // namespace planet

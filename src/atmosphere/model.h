@@ -1,6 +1,6 @@
 // The atmosphere model's shared GLSL compiled as C++ in double precision.
 //
-// shaders/atmosphere/{definitions,functions,rendering}.glsl are written in the
+// shaders/atmosphere/{definitions,functions,rendering,elek_table}.glsl are written in the
 // subset of GLSL that is also C++. Here they are included into a class whose
 // members stand in for the GLSL globals (the table sizes) and whose member
 // functions are then exactly the GPU's functions, evaluated in double. This is
@@ -31,6 +31,7 @@ using glm::dot;
 using glm::exp;
 using glm::floor;
 using glm::length;
+using glm::log;
 using glm::max;
 using glm::min;
 using glm::mix;
@@ -55,7 +56,10 @@ public:
           SCATTERING_TEXTURE_MU_S_SIZE(sizes.scattering_mu_s),
           SCATTERING_TEXTURE_NU_SIZE(sizes.scattering_nu),
           IRRADIANCE_TEXTURE_WIDTH(sizes.irradiance_width),
-          IRRADIANCE_TEXTURE_HEIGHT(sizes.irradiance_height) {}
+          IRRADIANCE_TEXTURE_HEIGHT(sizes.irradiance_height),
+          ELEK_TEXTURE_R_SIZE(sizes.elek_r),
+          ELEK_TEXTURE_MU_SIZE(sizes.elek_mu),
+          ELEK_TEXTURE_MU_S_SIZE(sizes.elek_mu_s) {}
 
     using TransmittanceTexture = Table2D;
     using ScatteringTexture = Table3D;
@@ -69,10 +73,14 @@ public:
     const int SCATTERING_TEXTURE_NU_SIZE;
     const int IRRADIANCE_TEXTURE_WIDTH;
     const int IRRADIANCE_TEXTURE_HEIGHT;
+    const int ELEK_TEXTURE_R_SIZE;
+    const int ELEK_TEXTURE_MU_SIZE;
+    const int ELEK_TEXTURE_MU_S_SIZE;
 
     // The shared functions, as members (`const Number PI` becomes a constant member).
 #include "shaders/atmosphere/functions.glsl"
 #include "shaders/atmosphere/rendering.glsl"
+#include "shaders/atmosphere/elek_table.glsl"
 };
 
 #undef IN

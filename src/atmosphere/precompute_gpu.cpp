@@ -27,6 +27,8 @@ enum SamplerUnit : GLuint {
     kDeltaMultipleUnit = 3,
     kDeltaIrradianceUnit = 4,
     kDeltaDensityUnit = 5,
+    kScatteringInputUnit = 1,  // Elek pass: the finished scattering table
+    kSingleMieInputUnit = 2,   // Elek pass: the finished single Mie table
 };
 
 // Rough cost of one texel of each pass, in table lookups / density evaluations,
@@ -37,6 +39,7 @@ constexpr double kSingleScatteringCost = 51 * 4;
 constexpr double kScatteringDensityCost = 16 * 32 * 5;
 constexpr double kIndirectIrradianceCost = 16 * 64 * 4;
 constexpr double kMultipleScatteringCost = 51 * 4;
+constexpr double kElekTableCost = 4;
 
 gl::Texture makeTable2D(int width, int height, const char* label) {
     gl::Texture t(GL_TEXTURE_2D);
@@ -108,6 +111,16 @@ std::vector<float> toFloats(const std::vector<glm::dvec4>& texels) {
     return floats;
 }
 
+// Layers [first, first + count) of Elek's 3D table from the finished 4D tables.
+void dispatchElekTable(GLuint program, const GpuTables& tables, int first, int count) {
+    glUseProgram(program);
+    glBindTextureUnit(kScatteringInputUnit, tables.scattering.id());
+    glBindTextureUnit(kSingleMieInputUnit, tables.singleMie.id());
+    bindImage3D(0, tables.elekScattering, GL_WRITE_ONLY);
+    bindImage3D(1, tables.elekSingleMie, GL_WRITE_ONLY);
+    dispatch3D(program, tables.sizes.elekSize(), first, count);
+}
+
 }  // namespace
 
 // ------------------------------------------------------------------ tables
@@ -119,6 +132,8 @@ GpuTables makeGpuTables(const TableSizes& sizes) {
     t.scattering = makeTable3D(sizes.scatteringSize(), "atmosphere scattering");
     t.singleMie = makeTable3D(sizes.scatteringSize(), "atmosphere single Mie");
     t.irradiance = makeTable2D(sizes.irradiance_width, sizes.irradiance_height, "atmosphere irradiance");
+    t.elekScattering = makeTable3D(sizes.elekSize(), "atmosphere Elek 3D scattering");
+    t.elekSingleMie = makeTable3D(sizes.elekSize(), "atmosphere Elek 3D single Mie");
     return t;
 }
 
@@ -250,6 +265,7 @@ GpuPrecompute::GpuPrecompute(const std::filesystem::path& shaderRoot, const Tabl
                                     "atmosphere/precompute/indirect_irradiance.comp")),
       multipleScattering_(buildPass(shaderRoot, sizes, "atmosphere multiple scattering",
                                     "atmosphere/precompute/multiple_scattering.comp")),
+      elekTable_(buildPass(shaderRoot, sizes, "atmosphere Elek 3D table", "atmosphere/precompute/elek_table.comp")),
       deltaIrradiance_(makeTable2D(sizes.irradiance_width, sizes.irradiance_height, "atmosphere delta irradiance")),
       deltaRayleigh_(makeTable3D(sizes.scatteringSize(), "atmosphere delta Rayleigh")),
       deltaMie_(makeTable3D(sizes.scatteringSize(), "atmosphere delta Mie")),
@@ -257,7 +273,7 @@ GpuPrecompute::GpuPrecompute(const std::filesystem::path& shaderRoot, const Tabl
       deltaDensity_(makeTable3D(sizes.scatteringSize(), "atmosphere delta scattering density")) {}
 
 GpuPrecomputeJob GpuPrecompute::start(const AtmosphereParameters& atmosphere, int scatteringOrders,
-                                      const ProgressFn& progress, int layersPerChunk) {
+                                      const ProgressFn& progress, int layersPerChunk, bool elekTable) {
     if (layersPerChunk < 1) throw std::invalid_argument("GpuPrecompute::start: layersPerChunk must be >= 1");
     auto state = std::make_unique<GpuPrecomputeJob::State>();
     GpuPrecomputeJob::State& s = *state;
@@ -355,14 +371,37 @@ GpuPrecomputeJob GpuPrecompute::start(const AtmosphereParameters& atmosphere, in
                   bindImage3D(1, out->scattering, GL_READ_WRITE);
               });
     }
+    if (elekTable) {
+        // Reads the finished 4D tables (scattering, single Mie), so it comes last.
+        const int elekStep = addStep("Elek 3D table");
+        const glm::ivec3 elekSize = sz.elekSize();
+        const GLuint program = elekTable_.id();
+        for (int first = 0; first < elekSize.z; first += layersPerChunk) {
+            const int count = std::min(layersPerChunk, elekSize.z - first);
+            s.chunks.push_back({elekStep, "Elek 3D table", kElekTableCost * elekSize.x * elekSize.y * count,
+                                [program, out, first, count] { dispatchElekTable(program, *out, first, count); }});
+        }
+    }
     for (const GpuPrecomputeJob::State::Chunk& c : s.chunks) s.totalCost += c.cost;
     return GpuPrecomputeJob(std::move(state));
 }
 
+void GpuPrecompute::computeElekTable(const AtmosphereParameters& atmosphere, const GpuTables& tables) {
+    if (!(tables.sizes == sizes_)) throw std::invalid_argument("GpuPrecompute::computeElekTable: table sizes differ");
+    gl::Buffer uniforms;
+    const AtmosphereUniforms u = makeAtmosphereUniforms(atmosphere);
+    glNamedBufferStorage(uniforms.id(), sizeof u, &u, 0);
+    gl::DebugGroup group("atmosphere precompute: Elek 3D table");
+    glBindBufferBase(GL_UNIFORM_BUFFER, kAtmosphereUniformBinding, uniforms.id());
+    dispatchElekTable(elekTable_.id(), tables, 0, sizes_.elek_r);
+    glFinish();
+}
+
 GpuTables GpuPrecompute::compute(const AtmosphereParameters& atmosphere, int scatteringOrders,
-                                 const ProgressFn& progress) {
+                                 const ProgressFn& progress, bool elekTable) {
     // Whole 3D passes per chunk: nothing else needs the GPU in between.
-    GpuPrecomputeJob job = start(atmosphere, scatteringOrders, progress, sizes_.scattering_r);
+    GpuPrecomputeJob job =
+        start(atmosphere, scatteringOrders, progress, std::max(sizes_.scattering_r, sizes_.elek_r), elekTable);
     while (!job.step()) {
     }
     return job.takeResult();

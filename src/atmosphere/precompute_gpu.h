@@ -11,6 +11,8 @@
 //   order k = 2..N       -> scattering density of order k (delta density),
 //                           indirect irradiance of order k-1 (delta irradiance, += irradiance),
 //                           multiple scattering of order k (delta multiple, += scattering / RayleighPhase)
+//   Elek 3D table        -> elekScattering, elekSingleMie (optional last step, elek_table.glsl;
+//                           CPU counterpart computeElekTables in elek_table.h)
 //
 // Work is cut into chunks (one 2D pass, or a few r layers of a 3D pass) so a
 // window can run one chunk per frame (GpuPrecomputeJob::step) and stay
@@ -33,20 +35,26 @@
 
 namespace planet::atmosphere {
 
-// The four tables as RGBA32F textures, GL_LINEAR, GL_CLAMP_TO_EDGE, labelled.
+// The four tables as RGBA32F textures, GL_LINEAR, GL_CLAMP_TO_EDGE, labelled,
+// plus Elek's two 3D tables (sizes.elekSize(), zero unless the precomputation
+// was asked for them; see elek_table.h for their CPU side).
 struct GpuTables {
     TableSizes sizes;
     gl::Texture transmittance{GL_TEXTURE_2D};
     gl::Texture scattering{GL_TEXTURE_3D};
     gl::Texture singleMie{GL_TEXTURE_3D};
     gl::Texture irradiance{GL_TEXTURE_2D};
+    gl::Texture elekScattering{GL_TEXTURE_3D};
+    gl::Texture elekSingleMie{GL_TEXTURE_3D};
 };
 
-// Allocates the four tables (contents zero).
+// Allocates the six tables (contents zero).
 GpuTables makeGpuTables(const TableSizes& sizes);
-// glGetTextureImage into double tables (tests, the disk cache).
+// glGetTextureImage of the four 4D-model tables into double tables (tests, the
+// disk cache); readBackElek() in elek_table.h reads the Elek tables.
 AtmosphereTables readBack(const GpuTables& tables);
-// The reverse: textures from CPU tables (loading from a cache).
+// The reverse: textures from CPU tables (loading from a cache). The Elek
+// tables stay zero; uploadElek() in elek_table.h fills them.
 GpuTables upload(const AtmosphereTables& tables);
 
 class GpuPrecompute;
@@ -81,7 +89,7 @@ private:
 
 class GpuPrecompute {
 public:
-    // Builds the six programs (preamble: shaderPreamble() + atmosphereShaderDefines(sizes))
+    // Builds the seven programs (preamble: shaderPreamble() + atmosphereShaderDefines(sizes))
     // and allocates the delta tables. Throws gl::ShaderError.
     GpuPrecompute(const std::filesystem::path& shaderRoot, const TableSizes& sizes);
     GpuPrecompute(const GpuPrecompute&) = delete;
@@ -91,17 +99,25 @@ public:
 
     // Starts an incremental precomputation; `layersPerChunk` r layers of the
     // 3D passes per step() (>= 1). `progress` is called after each named step.
+    // With `elekTable`, a last step "Elek 3D table" fills the Elek tables from
+    // the finished 4D tables (off by default: the model's own steps only).
     GpuPrecomputeJob start(const AtmosphereParameters& atmosphere, int scatteringOrders,
-                           const ProgressFn& progress = {}, int layersPerChunk = 4);
+                           const ProgressFn& progress = {}, int layersPerChunk = 4, bool elekTable = false);
 
     // The whole precomputation, blocking. Calls `progress` after each step
-    // ("transmittance", "direct irradiance", "single scattering", "order 2", ...).
-    GpuTables compute(const AtmosphereParameters& atmosphere, int scatteringOrders, const ProgressFn& progress = {});
+    // ("transmittance", "direct irradiance", "single scattering", "order 2", ...,
+    // then "Elek 3D table" with `elekTable`).
+    GpuTables compute(const AtmosphereParameters& atmosphere, int scatteringOrders, const ProgressFn& progress = {},
+                      bool elekTable = false);
+
+    // Only the "Elek 3D table" step, blocking, on tables whose 4D part is done
+    // (e.g. just uploaded from the disk cache, which stores the 4D tables only).
+    void computeElekTable(const AtmosphereParameters& atmosphere, const GpuTables& tables);
 
 private:
     TableSizes sizes_;
     gl::Program transmittance_, directIrradiance_, singleScattering_, scatteringDensity_, indirectIrradiance_,
-        multipleScattering_;
+        multipleScattering_, elekTable_;
     // Temporary tables, as in the reference.
     gl::Texture deltaIrradiance_{GL_TEXTURE_2D};
     gl::Texture deltaRayleigh_{GL_TEXTURE_3D};

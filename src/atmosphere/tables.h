@@ -6,6 +6,8 @@
 //   scattering     3D  (nu * mu_s, mu, r)           RGB: Rayleigh + multiple orders, phase-free
 //   single_mie     3D  same                         RGB: single Mie, phase-free
 //   irradiance     2D  (mu_s, r)                    RGB: sky irradiance (direct sun excluded)
+//   Elek 3D        3D  (mu_s, mu, r), azimuth 0     RGB: the scattering / single Mie tables at
+//                                                   omega = 0 (Elek §4.1.1; elek_table.h)
 #pragma once
 
 #include <cstddef>
@@ -25,11 +27,16 @@ struct TableSizes {
     int scattering_nu = 8;
     int irradiance_width = 64;       // mu_s
     int irradiance_height = 16;      // r
+    // Elek's 3D table (shaders/atmosphere/elek_table.glsl): no nu axis.
+    int elek_r = 32;
+    int elek_mu = 128;               // even: ground and sky halves
+    int elek_mu_s = 32;
 
     // Small tables for tests and interactive tuning on software renderers.
-    static TableSizes reduced() { return {64, 16, 8, 32, 8, 4, 16, 4}; }
+    static TableSizes reduced() { return {64, 16, 8, 32, 8, 4, 16, 4, 8, 32, 8}; }
     glm::ivec3 scatteringSize() const { return {scattering_nu * scattering_mu_s, scattering_mu, scattering_r}; }
-    // Bytes of the four tables as RGBA32F textures.
+    glm::ivec3 elekSize() const { return {elek_mu_s, elek_mu, elek_r}; }
+    // Bytes of the four 4D-model tables as RGBA32F textures (the Elek tables not included).
     std::size_t bytes() const;
     bool operator==(const TableSizes&) const = default;
 };

@@ -19,7 +19,7 @@ AtmosphereUniforms makeAtmosphereUniforms(const AtmosphereParameters& p) {
     u.solarIrradiance = glm::vec4(glm::vec3(p.solar_irradiance), p.sun_angular_radius);
     u.radii = glm::vec4(p.bottom_radius, p.top_radius, p.mie_phase_function_g, p.mu_s_min);
     u.rayleighScattering = glm::vec4(glm::vec3(p.rayleigh_scattering), p.elek_rayleigh_phase);
-    u.mieScattering = glm::vec4(glm::vec3(p.mie_scattering), 0.0f);
+    u.mieScattering = glm::vec4(glm::vec3(p.mie_scattering), 0.0f);  // w: Elek 3D table flag, set by Atmosphere
     u.mieExtinction = glm::vec4(glm::vec3(p.mie_extinction), 0.0f);
     u.absorptionExtinction = glm::vec4(glm::vec3(p.absorption_extinction), 0.0f);
     u.groundAlbedo = glm::vec4(glm::vec3(p.ground_albedo), 0.0f);
@@ -38,6 +38,8 @@ std::string atmosphereShaderDefines(const TableSizes& s) {
            define("SCATTERING_TEXTURE_NU_SIZE", s.scattering_nu) +
            define("IRRADIANCE_TEXTURE_WIDTH", s.irradiance_width) +
            define("IRRADIANCE_TEXTURE_HEIGHT", s.irradiance_height) +
+           define("ELEK_TEXTURE_R_SIZE", s.elek_r) + define("ELEK_TEXTURE_MU_SIZE", s.elek_mu) +
+           define("ELEK_TEXTURE_MU_S_SIZE", s.elek_mu_s) +
            "#define TransmittanceTexture sampler2D\n#define ScatteringTexture sampler3D\n"
            "#define IrradianceTexture sampler2D\n";
 }

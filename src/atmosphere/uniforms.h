@@ -20,7 +20,7 @@ struct AtmosphereUniforms {
     glm::vec4 solarIrradiance;        // rgb; w: sun angular radius (rad)
     glm::vec4 radii;                  // x: bottom, y: top (km); z: Mie g; w: mu_s_min
     glm::vec4 rayleighScattering;     // rgb (1/km); w: 1 for Elek's Rayleigh phase (Eq. 15)
-    glm::vec4 mieScattering;          // rgb (1/km)
+    glm::vec4 mieScattering;          // rgb (1/km); w: 1 to render with Elek's 3D table (render-time choice)
     glm::vec4 mieExtinction;          // rgb (1/km)
     glm::vec4 absorptionExtinction;   // rgb (1/km)
     glm::vec4 groundAlbedo;           // rgb
