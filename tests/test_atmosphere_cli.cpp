@@ -73,7 +73,7 @@ TEST_F(AtmosphereCli, PrecomputeTimesStepsAndCachesTables) {
     const auto r = runCommand(planet("precompute --tables reduced --cache c"));
     ASSERT_EQ(r.exitCode, 0) << r.output;
     for (const char* word : {"transmittance", "direct irradiance", "single scattering", "order 2", "order 4", "total",
-                             "MiB", "64x16", "wrote"})
+                             "MiB", "64x16", "wrote", "3D Elek", "mean relative error"})
         EXPECT_TRUE(contains(r.output, word)) << word << ":\n" << r.output;
     const fs::path cached = entry(dir / "c");
     EXPECT_EQ(cached.filename().string().size(), 16u);

@@ -114,5 +114,40 @@ TEST_F(AtmosphereRenderTest, ChangingTheAtmosphereRebuildsWithoutShowingHalfBuil
     const auto after = atmosphere::readBack(renderer->atmosphere().tables());
     EXPECT_LT(after.transmittance.at(0, 0).b, before.transmittance.at(0, 0).b);  // denser air: less light through
     s.scene.atmosphere.rayleigh_scattering_per_m /= 2.0;  // leave the shared renderer as it was
-    while (renderer->atmosphere().rebuilding() || frames == 0) render(s, {16, 9});
+    render(s, {16, 9});
+    while (renderer->atmosphere().rebuilding()) render(s, {16, 9});
+}
+
+// atmosphere.elek_3d_table: the same frame through Elek's 3D table (a render-time
+// switch, no rebuild) is finite, blue at the noon zenith, and really another lookup.
+TEST_F(AtmosphereRenderTest, ElekTableSkyIsFiniteAndBlueAtNoon) {
+    Session zenith4D = groundLooking(89.0, 70.0);
+    Session zenithElek = zenith4D;
+    zenithElek.scene.atmosphere.elek_3d_table = true;
+    for (int frames = 0; frames == 0 || renderer->atmosphere().rebuilding(); ++frames) {  // tables for this air
+        ASSERT_LT(frames, 1000);
+        render(zenith4D, {16, 9});
+    }
+    const ImageRGBAF imageElek = render(zenithElek);
+    EXPECT_TRUE(renderer->atmosphere().usesElekTable());
+    EXPECT_FALSE(renderer->atmosphere().rebuilding());
+    EXPECT_TRUE(test::allFinite(imageElek));
+    const glm::vec3 zenith = rgb(imageElek, kSize.x / 2, kSize.y / 2);
+    EXPECT_GT(zenith.b, zenith.r);
+    const glm::vec3 zenith4 = rgb(render(zenith4D), kSize.x / 2, kSize.y / 2);
+    EXPECT_FALSE(renderer->atmosphere().usesElekTable());
+    EXPECT_NEAR(zenith.b / zenith4.b, 1.0, 0.1);  // near the sun's vertical plane: the same sky
+
+    // Looking away from the sun at dusk, where the dropped azimuth shows.
+    Session dusk = groundLooking(10.0, 5.0);
+    View v = dusk.view;
+    v.sun_azimuth_deg = v.heading_deg + 180.0;
+    applyView(v, dusk);
+    const ImageRGBAF dusk4D = render(dusk);
+    dusk.scene.atmosphere.elek_3d_table = true;
+    const ImageRGBAF duskElek = render(dusk);
+    EXPECT_TRUE(test::allFinite(duskElek));
+    EXPECT_NE(duskElek.pixels, dusk4D.pixels);
+    dusk.scene.atmosphere.elek_3d_table = false;  // leave the shared renderer as it was
+    render(dusk, {16, 9});
 }

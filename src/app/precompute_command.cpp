@@ -14,6 +14,7 @@
 
 #include "app/commands.h"
 #include "app/session.h"
+#include "atmosphere/elek_table.h"
 #include "atmosphere/parameters.h"
 #include "atmosphere/precompute_gpu.h"
 #include "atmosphere/reference_tables.h"
@@ -129,8 +130,14 @@ int runPrecompute(const PrecomputeOptions& options) {
     const TableSizes sizes = commandTableSizes(common.tables, context.has_value());
     std::cout << "planet precompute: preset " << session.presetName << ", tables " << common.tables << " ("
               << describeSizes(sizes) << ")\n";
-    loadOrPrecomputeTables(session.scene, sizes, options.cache, paths.shaders(), options.reference, options.force,
-                           std::cout);
+    const AtmosphereTables tables = loadOrPrecomputeTables(session.scene, sizes, options.cache, paths.shaders(),
+                                                           options.reference, options.force, std::cout);
+    // Elek's 3D parametrization (no nu, phase deferred), built from these tables
+    // on the CPU: its memory and its sky radiance error against the 4D lookups.
+    const AtmosphereParameters params = makeAtmosphereParameters(session.scene);
+    std::cout << "Elek 3D table vs 4D:\n"
+              << describeElekComparison(compareElekWith4D(params, tables, computeElekTables(params, tables)));
+    std::cout.flush();
     if (messages.errors > 0) throw std::runtime_error("GL errors were reported during the precomputation");
     return 0;
 }
