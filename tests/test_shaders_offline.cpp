@@ -32,11 +32,20 @@ TEST(ShadersOffline, EveryStageValidatesWithGlslang) {
             expanded = planet::gl::expandShader(
                 root, file,
                 planet::gl::shaderPreamble() + planet::atmosphere::atmosphereShaderDefines(planet::atmosphere::TableSizes{}));
-        const fs::path out = tmp / ("shader." + stage);
-        std::ofstream(out) << expanded.text;
-        const auto r = planet::test::runCommand(std::string(GLSLANG_VALIDATOR) + " " + out.string());
-        EXPECT_EQ(r.exitCode, 0) << file << ":\n" << planet::gl::translateShaderLog(r.output, expanded.files);
-        ++validated;
+        // Programs compiled in variants (the atmosphere pass: ELEK_TABLE 0 and 1) are checked in each.
+        std::vector<std::string> variants{""};
+        if (expanded.text.find("ELEK_TABLE") != std::string::npos)
+            variants = {"#define ELEK_TABLE 0\n", "#define ELEK_TABLE 1\n"};
+        for (const std::string& variant : variants) {
+            std::string text = expanded.text;
+            text.insert(text.find('\n') + 1, variant);  // after #version
+            const fs::path out = tmp / ("shader." + stage);
+            std::ofstream(out) << text;
+            const auto r = planet::test::runCommand(std::string(GLSLANG_VALIDATOR) + " " + out.string());
+            EXPECT_EQ(r.exitCode, 0) << file << " " << variant << ":\n"
+                                     << planet::gl::translateShaderLog(r.output, expanded.files);
+            ++validated;
+        }
     }
     fs::remove_all(tmp);
     EXPECT_GE(validated, 4);  // fullscreen.vert, placeholder_sphere.frag, lighting.frag, tonemap.frag

@@ -112,27 +112,22 @@ Spectrum GetSkyRadianceToPointAlongRay(IN(AtmosphereParameters) atmosphere,
     // of it, interpolate between rays just above and just below.
     const Number EPS = 0.004;
     Number mu_horizon = -SafeSqrt(1.0 - (atmosphere.bottom_radius / r) * (atmosphere.bottom_radius / r));
+    bool near_horizon = abs(mu - mu_horizon) < EPS;
     Spectrum single_mie_scattering;
-    Spectrum scattering;
-    if (abs(mu - mu_horizon) < EPS) {
+    Spectrum scattering = ScatteringBetween(atmosphere, transmittance_texture, scattering_texture,
+                                            single_mie_scattering_texture, r,
+                                            near_horizon ? mu_horizon - EPS : mu, mu_s, nu, d, transmittance,
+                                            single_mie_scattering);
+    if (near_horizon) {  // one more lookup, written once, so the shader holds two copies of it and not three
         Number a = (mu - mu_horizon + EPS) / (2.0 * EPS);
-        Spectrum transmittance_below;
-        Spectrum mie_below;
-        Spectrum below = ScatteringBetween(atmosphere, transmittance_texture, scattering_texture,
-                                           single_mie_scattering_texture, r, mu_horizon - EPS, mu_s, nu, d,
-                                           transmittance_below, mie_below);
         Spectrum transmittance_above;
         Spectrum mie_above;
         Spectrum above = ScatteringBetween(atmosphere, transmittance_texture, scattering_texture,
                                            single_mie_scattering_texture, r, mu_horizon + EPS, mu_s, nu, d,
                                            transmittance_above, mie_above);
-        scattering = mix(below, above, a);
-        single_mie_scattering = mix(mie_below, mie_above, a);
-        transmittance = mix(transmittance_below, transmittance_above, a);
-    } else {
-        scattering = ScatteringBetween(atmosphere, transmittance_texture, scattering_texture,
-                                       single_mie_scattering_texture, r, mu, mu_s, nu, d, transmittance,
-                                       single_mie_scattering);
+        scattering = mix(scattering, above, a);
+        single_mie_scattering = mix(single_mie_scattering, mie_above, a);
+        transmittance = mix(transmittance, transmittance_above, a);
     }
     // Sperlhofer 5.1.3: single Mie scattering is unreliable once the sun has set.
     single_mie_scattering = single_mie_scattering * smoothstep(Number(0.0), Number(0.01), mu_s);

@@ -7,9 +7,11 @@
 // the camera and plus the light scattered in between (Sperlhofer Eq. 4-18).
 // Sky: radiance scattered along the view ray (Sperlhofer Eq. 2-16) plus the
 // sun disc with limb darkening, seen through the atmosphere (Elek §4.2.2).
-// In-scattering comes from Bruneton's 4D table or, when the uniform block's
-// mieScattering.w is set (preset atmosphere.elek_3d_table), from Elek's 3D
-// table (elek_table.glsl); transmittance and irradiance are shared.
+// In-scattering comes from Bruneton's 4D table or, in the variant compiled with
+// ELEK_TABLE 1 (preset atmosphere.elek_3d_table), from Elek's 3D table
+// (elek_table.glsl); transmittance and irradiance are shared. Two programs
+// rather than a run-time branch: software renderers execute both sides of
+// even a uniform branch, and a GPU is spared the registers of the unused one.
 #include "common/frame_uniforms.glsl"
 #include "common/constants.glsl"
 #include "atmosphere/definitions.glsl"
@@ -50,7 +52,7 @@ vec3 sunDiscRadiance(vec3 dir, vec3 sun, float angularRadius, vec3 irradiance) {
 
 void main() {
     AtmosphereParameters atmosphere = atmosphereParameters();
-    bool elek = atmosphereUniforms.mieScattering.w > 0.5;  // uniform: no divergence
+    const bool elek = ELEK_TABLE != 0;
     ivec2 pixel = ivec2(gl_FragCoord.xy);
     vec3 dir = worldRayFromNdc(vNdc);
     vec3 sun = frame.sunDirection.xyz;

@@ -5,12 +5,19 @@
 
 namespace planet {
 
+namespace {
+gl::ShaderSources lightingSources(const std::filesystem::path& root, const atmosphere::TableSizes& sizes, bool elek) {
+    return {root, gl::shaderPreamble() + atmosphere::atmosphereShaderDefines(sizes) +
+                      "#define ELEK_TABLE " + (elek ? "1" : "0") + "\n"};
+}
+}  // namespace
+
 Renderer::Renderer(const std::filesystem::path& shaderRoot, const atmosphere::TableSizes& atmosphereTables)
     : sources_{shaderRoot, gl::shaderPreamble()},
       atmosphere_(shaderRoot, atmosphereTables),
       terrain_(sources_),
-      lighting_(gl::ShaderSources{shaderRoot, gl::shaderPreamble() + atmosphere::atmosphereShaderDefines(atmosphereTables)},
-                "lighting", "render/lighting.frag"),
+      lighting4D_(lightingSources(shaderRoot, atmosphereTables, false), "atmosphere 4D", "render/lighting.frag"),
+      lightingElek_(lightingSources(shaderRoot, atmosphereTables, true), "atmosphere Elek 3D", "render/lighting.frag"),
       tonemap_(sources_, "tonemap", "render/tonemap.frag") {
     glNamedBufferStorage(frameUniforms_.id(), sizeof(FrameUniforms), nullptr, GL_DYNAMIC_STORAGE_BIT);
     frameUniforms_.label("FrameUniforms");
@@ -57,7 +64,7 @@ void Renderer::render(const Scene& scene, const Camera& camera, glm::ivec2 size,
         const GLuint inputs[] = {g.normal.id(), g.albedo.id(), g.material.id(), g.depth.id()};
         glBindTextures(0, 4, inputs);
         atmosphere_.bind();
-        lighting_.draw();
+        (atmosphere_.usesElekTable() ? lightingElek_ : lighting4D_).draw();
     }
     {
         gl::DebugGroup group("tonemap");
@@ -77,7 +84,7 @@ void Renderer::render(const Scene& scene, const Camera& camera, glm::ivec2 size,
 }
 
 std::vector<gl::HotProgram*> Renderer::programs() {
-    return {&terrain_.program(), &lighting_.program(), &tonemap_.program()};
+    return {&terrain_.program(), &lighting4D_.program(), &lightingElek_.program(), &tonemap_.program()};
 }
 
 bool Renderer::reloadShaders(bool force) {

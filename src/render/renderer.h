@@ -58,7 +58,8 @@ private:
     gl::ShaderSources sources_;
     atmosphere::Atmosphere atmosphere_;
     PlaceholderSphere terrain_;
-    FullscreenPass lighting_;
+    FullscreenPass lighting4D_;    // the atmosphere pass with Bruneton's 4D table
+    FullscreenPass lightingElek_;  // ... with Elek's 3D table (ELEK_TABLE 1)
     FullscreenPass tonemap_;
     gl::Buffer frameUniforms_;
     gl::VertexArray emptyVertexArray_;
