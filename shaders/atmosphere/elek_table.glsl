@@ -132,22 +132,15 @@ Spectrum GetSkyRadianceElek(IN(AtmosphereParameters) atmosphere, IN(Transmittanc
                             IN(ScatteringTexture) elek_scattering_texture,
                             IN(ScatteringTexture) elek_single_mie_scattering_texture, IN(vec3) camera_position,
                             IN(vec3) view_ray, IN(vec3) sun_direction, OUT(Spectrum) transmittance) {
-    vec3 camera = camera_position;
-    Length r = length(camera);
-    Length rmu = dot(camera, view_ray);
-    Length distance_to_top_atmosphere_boundary =
-        -rmu - sqrt(rmu * rmu - r * r + atmosphere.top_radius * atmosphere.top_radius);
-    if (distance_to_top_atmosphere_boundary > 0.0) {
-        camera = camera + view_ray * distance_to_top_atmosphere_boundary;
-        r = atmosphere.top_radius;
-        rmu += distance_to_top_atmosphere_boundary;
-    } else if (r > atmosphere.top_radius) {
+    ViewRay ray = ViewRayInAtmosphere(atmosphere, camera_position, view_ray, sun_direction);
+    if (!ray.inside) {
         transmittance = Spectrum(1.0);
         return Spectrum(0.0);
     }
-    Number mu = rmu / r;
-    Number mu_s = dot(camera, sun_direction) / r;
-    Number nu = dot(view_ray, sun_direction);
+    Length r = ray.r;
+    Number mu = ray.mu;
+    Number mu_s = ray.mu_s;
+    Number nu = ray.nu;
     bool ray_r_mu_intersects_ground = RayIntersectsGround(atmosphere, r, mu);
 
     transmittance = ray_r_mu_intersects_ground
@@ -191,21 +184,16 @@ Spectrum GetSkyRadianceToPointAlongRayElek(IN(AtmosphereParameters) atmosphere,
                                            IN(ScatteringTexture) elek_single_mie_scattering_texture,
                                            IN(vec3) camera_position, IN(vec3) view_ray, Length distance,
                                            IN(vec3) sun_direction, OUT(Spectrum) transmittance) {
-    vec3 camera = camera_position;
-    Length d = distance;
-    Length r = length(camera);
-    Length rmu = dot(camera, view_ray);
-    Length distance_to_top_atmosphere_boundary =
-        -rmu - sqrt(rmu * rmu - r * r + atmosphere.top_radius * atmosphere.top_radius);
-    if (distance_to_top_atmosphere_boundary > 0.0) {
-        camera = camera + view_ray * distance_to_top_atmosphere_boundary;
-        r = atmosphere.top_radius;
-        rmu += distance_to_top_atmosphere_boundary;
-        d = max(d - distance_to_top_atmosphere_boundary, Length(0.0));
+    ViewRay ray = ViewRayInAtmosphere(atmosphere, camera_position, view_ray, sun_direction);
+    if (!ray.inside) {
+        transmittance = Spectrum(1.0);
+        return Spectrum(0.0);
     }
-    Number mu = rmu / r;
-    Number mu_s = dot(camera, sun_direction) / r;
-    Number nu = dot(view_ray, sun_direction);
+    Length r = ray.r;
+    Number mu = ray.mu;
+    Number mu_s = ray.mu_s;
+    Number nu = ray.nu;
+    Length d = max(distance - ray.skipped, Length(0.0));
 
     const Number EPS = 0.004;
     Number mu_horizon = ElekHorizonMu(atmosphere, r);

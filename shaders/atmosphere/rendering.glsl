@@ -24,6 +24,43 @@ Spectrum ApplyPhaseFunctions(IN(AtmosphereParameters) atmosphere, IN(Spectrum) s
            single_mie_scattering * MiePhaseFunction(atmosphere.mie_phase_function_g, nu);
 }
 
+// A view ray as the tables parametrize it: radius, view, sun and view-sun
+// cosines. A camera in space is moved to where its ray enters the atmosphere
+// (`skipped` km on); `inside` is false when the ray never enters it.
+struct ViewRay {
+    Length r;
+    Number mu;
+    Number mu_s;
+    Number nu;
+    Length skipped;
+    bool inside;
+};
+
+ViewRay ViewRayInAtmosphere(IN(AtmosphereParameters) atmosphere, IN(vec3) camera_position, IN(vec3) view_ray,
+                            IN(vec3) sun_direction) {
+    ViewRay ray;
+    vec3 camera = camera_position;
+    Length r = length(camera);
+    Length rmu = dot(camera, view_ray);
+    Length distance_to_top_atmosphere_boundary =
+        -rmu - sqrt(rmu * rmu - r * r + atmosphere.top_radius * atmosphere.top_radius);
+    ray.skipped = 0.0;
+    ray.inside = true;
+    if (distance_to_top_atmosphere_boundary > 0.0) {
+        camera = camera + view_ray * distance_to_top_atmosphere_boundary;
+        r = atmosphere.top_radius;
+        rmu += distance_to_top_atmosphere_boundary;
+        ray.skipped = distance_to_top_atmosphere_boundary;
+    } else if (r > atmosphere.top_radius) {
+        ray.inside = false;
+    }
+    ray.r = r;
+    ray.mu = rmu / r;
+    ray.mu_s = dot(camera, sun_direction) / r;
+    ray.nu = dot(view_ray, sun_direction);
+    return ray;
+}
+
 // Radiance scattered towards a camera at `camera` along `view_ray` up to the
 // ground or space, without the ground's own reflected light or the sun disc.
 // `transmittance` is that of the whole ray (0 if it hits the ground).
@@ -31,23 +68,15 @@ Spectrum GetSkyRadiance(IN(AtmosphereParameters) atmosphere, IN(TransmittanceTex
                         IN(ScatteringTexture) scattering_texture, IN(ScatteringTexture) single_mie_scattering_texture,
                         IN(vec3) camera_position, IN(vec3) view_ray, IN(vec3) sun_direction,
                         OUT(Spectrum) transmittance) {
-    vec3 camera = camera_position;
-    Length r = length(camera);
-    Length rmu = dot(camera, view_ray);
-    Length distance_to_top_atmosphere_boundary =
-        -rmu - sqrt(rmu * rmu - r * r + atmosphere.top_radius * atmosphere.top_radius);
-    // From space, start where the ray enters the atmosphere.
-    if (distance_to_top_atmosphere_boundary > 0.0) {
-        camera = camera + view_ray * distance_to_top_atmosphere_boundary;
-        r = atmosphere.top_radius;
-        rmu += distance_to_top_atmosphere_boundary;
-    } else if (r > atmosphere.top_radius) {
+    ViewRay ray = ViewRayInAtmosphere(atmosphere, camera_position, view_ray, sun_direction);
+    if (!ray.inside) {
         transmittance = Spectrum(1.0);  // the ray misses the atmosphere
         return Spectrum(0.0);
     }
-    Number mu = rmu / r;
-    Number mu_s = dot(camera, sun_direction) / r;
-    Number nu = dot(view_ray, sun_direction);
+    Length r = ray.r;
+    Number mu = ray.mu;
+    Number mu_s = ray.mu_s;
+    Number nu = ray.nu;
     bool ray_r_mu_intersects_ground = RayIntersectsGround(atmosphere, r, mu);
 
     transmittance = ray_r_mu_intersects_ground
@@ -91,21 +120,16 @@ Spectrum GetSkyRadianceToPointAlongRay(IN(AtmosphereParameters) atmosphere,
                                        IN(ScatteringTexture) single_mie_scattering_texture, IN(vec3) camera_position,
                                        IN(vec3) view_ray, Length distance, IN(vec3) sun_direction,
                                        OUT(Spectrum) transmittance) {
-    vec3 camera = camera_position;
-    Length d = distance;
-    Length r = length(camera);
-    Length rmu = dot(camera, view_ray);
-    Length distance_to_top_atmosphere_boundary =
-        -rmu - sqrt(rmu * rmu - r * r + atmosphere.top_radius * atmosphere.top_radius);
-    if (distance_to_top_atmosphere_boundary > 0.0) {
-        camera = camera + view_ray * distance_to_top_atmosphere_boundary;
-        r = atmosphere.top_radius;
-        rmu += distance_to_top_atmosphere_boundary;
-        d = max(d - distance_to_top_atmosphere_boundary, Length(0.0));
+    ViewRay ray = ViewRayInAtmosphere(atmosphere, camera_position, view_ray, sun_direction);
+    if (!ray.inside) {
+        transmittance = Spectrum(1.0);
+        return Spectrum(0.0);
     }
-    Number mu = rmu / r;
-    Number mu_s = dot(camera, sun_direction) / r;
-    Number nu = dot(view_ray, sun_direction);
+    Length r = ray.r;
+    Number mu = ray.mu;
+    Number mu_s = ray.mu_s;
+    Number nu = ray.nu;
+    Length d = max(distance - ray.skipped, Length(0.0));
 
     // Sperlhofer 5.1.2: the table's two halves meet at the horizon, where the
     // difference of two large, nearly equal lookups is unreliable. Within EPS
