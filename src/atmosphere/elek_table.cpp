@@ -15,15 +15,6 @@ constexpr std::size_t kTexelBytes = 4 * sizeof(float);  // RGBA32F
 
 std::size_t texels(glm::ivec3 s) { return static_cast<std::size_t>(s.x) * s.y * s.z; }
 
-std::vector<glm::dvec4> readTexels(const gl::Texture& t, std::size_t count) {
-    std::vector<float> floats(count * 4);
-    glGetTextureImage(t.id(), 0, GL_RGBA, GL_FLOAT, static_cast<GLsizei>(floats.size() * sizeof(float)),
-                      floats.data());
-    std::vector<glm::dvec4> out(count);
-    for (std::size_t i = 0; i < count; ++i)
-        out[i] = glm::dvec4(floats[4 * i], floats[4 * i + 1], floats[4 * i + 2], floats[4 * i + 3]);
-    return out;
-}
 
 void writeTexels(const gl::Texture& t, const Table3D& table) {
     std::vector<float> floats(table.texels.size() * 4);

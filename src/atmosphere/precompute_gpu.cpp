@@ -94,16 +94,6 @@ void dispatch3D(GLuint program, glm::ivec3 size, int first, int count) {
     barrier();
 }
 
-std::vector<glm::dvec4> readTexels(const gl::Texture& t, std::size_t count) {
-    std::vector<float> floats(count * 4);
-    glGetTextureImage(t.id(), 0, GL_RGBA, GL_FLOAT, static_cast<GLsizei>(floats.size() * sizeof(float)),
-                      floats.data());
-    std::vector<glm::dvec4> out(count);
-    for (std::size_t i = 0; i < count; ++i)
-        out[i] = glm::dvec4(floats[4 * i], floats[4 * i + 1], floats[4 * i + 2], floats[4 * i + 3]);
-    return out;
-}
-
 std::vector<float> toFloats(const std::vector<glm::dvec4>& texels) {
     std::vector<float> floats(texels.size() * 4);
     for (std::size_t i = 0; i < texels.size(); ++i)
@@ -137,14 +127,19 @@ GpuTables makeGpuTables(const TableSizes& sizes) {
     return t;
 }
 
+std::vector<glm::dvec4> readTexels(const gl::Texture& t, std::size_t count) {
+    std::vector<float> floats(count * 4);
+    glGetTextureImage(t.id(), 0, GL_RGBA, GL_FLOAT, static_cast<GLsizei>(floats.size() * sizeof(float)),
+                      floats.data());
+    std::vector<glm::dvec4> out(count);
+    for (std::size_t i = 0; i < count; ++i)
+        out[i] = glm::dvec4(floats[4 * i], floats[4 * i + 1], floats[4 * i + 2], floats[4 * i + 3]);
+    return out;
+}
+
 AtmosphereTables readBack(const GpuTables& gpu) {
     const TableSizes& s = gpu.sizes;
-    AtmosphereTables t;
-    t.sizes = s;
-    t.transmittance = Table2D(s.transmittance_width, s.transmittance_height);
-    t.scattering = Table3D(s.scatteringSize());
-    t.singleMie = Table3D(s.scatteringSize());
-    t.irradiance = Table2D(s.irradiance_width, s.irradiance_height);
+    AtmosphereTables t(s);
     t.transmittance.texels = readTexels(gpu.transmittance, t.transmittance.texels.size());
     t.scattering.texels = readTexels(gpu.scattering, t.scattering.texels.size());
     t.singleMie.texels = readTexels(gpu.singleMie, t.singleMie.texels.size());

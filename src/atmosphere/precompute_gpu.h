@@ -53,6 +53,8 @@ GpuTables makeGpuTables(const TableSizes& sizes);
 // glGetTextureImage of the four 4D-model tables into double tables (tests, the
 // disk cache); readBackElek() in elek_table.h reads the Elek tables.
 AtmosphereTables readBack(const GpuTables& tables);
+// The texels of an RGBA32F texture (count of them), as doubles.
+std::vector<glm::dvec4> readTexels(const gl::Texture& texture, std::size_t count);
 // The reverse: textures from CPU tables (loading from a cache). The Elek
 // tables stay zero; uploadElek() in elek_table.h fills them.
 GpuTables upload(const AtmosphereTables& tables);

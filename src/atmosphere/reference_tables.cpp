@@ -69,12 +69,8 @@ ReferenceResult computeReferenceTables(const AtmosphereParameters& atmosphere, c
     if (threads <= 0) threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
     Model model(sizes);
     ReferenceResult result;
+    result.tables = AtmosphereTables(sizes);
     AtmosphereTables& out = result.tables;
-    out.sizes = sizes;
-    out.transmittance = Table2D(sizes.transmittance_width, sizes.transmittance_height);
-    out.scattering = Table3D(sizes.scatteringSize());
-    out.singleMie = Table3D(sizes.scatteringSize());
-    out.irradiance = Table2D(sizes.irradiance_width, sizes.irradiance_height);
 
     Table2D deltaIrradiance(sizes.irradiance_width, sizes.irradiance_height);
     Table3D deltaRayleigh(sizes.scatteringSize());

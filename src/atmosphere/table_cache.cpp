@@ -312,12 +312,7 @@ std::optional<AtmosphereTables> loadTables(const fs::path& dir, const std::strin
         return reject(quote(keyPath) + " holds sizes '" + field("sizes") + "', expected '" +
                       sizesText(sizes) + "'");
 
-    AtmosphereTables tables;
-    tables.sizes = sizes;
-    tables.transmittance = Table2D(sizes.transmittance_width, sizes.transmittance_height);
-    tables.scattering = Table3D(sizes.scatteringSize());
-    tables.singleMie = Table3D(sizes.scatteringSize());
-    tables.irradiance = Table2D(sizes.irradiance_width, sizes.irradiance_height);
+    AtmosphereTables tables(sizes);
     std::vector<glm::dvec4>* texels[4] = {&tables.transmittance.texels, &tables.scattering.texels,
                                           &tables.singleMie.texels, &tables.irradiance.texels};
     const std::vector<TableImage> images = tableImages(sizes);

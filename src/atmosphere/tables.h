@@ -77,6 +77,11 @@ glm::dvec4 texture(const Table3D& table, const glm::dvec3& uvw);
 
 // The full set of precomputed tables.
 struct AtmosphereTables {
+    AtmosphereTables() = default;
+    explicit AtmosphereTables(const TableSizes& s)  // zero-filled tables of these sizes
+        : sizes(s), transmittance(s.transmittance_width, s.transmittance_height), scattering(s.scatteringSize()),
+          singleMie(s.scatteringSize()), irradiance(s.irradiance_width, s.irradiance_height) {}
+
     TableSizes sizes;
     Table2D transmittance;
     Table3D scattering;
