@@ -1,8 +1,12 @@
-// Runs a command line in a shell and captures its exit code and output (stdout + stderr).
+// Running the planet executable from tests: a shell command's exit code and
+// output (stdout + stderr), and a fixture giving each test its own folder.
 #pragma once
+
+#include <gtest/gtest.h>
 
 #include <array>
 #include <cstdio>
+#include <filesystem>
 #include <string>
 #include <sys/wait.h>
 
@@ -24,5 +28,23 @@ inline ProcessResult runCommand(const std::string& command) {
     result.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
     return result;
 }
+
+// A test that runs the `planet` executable in a fresh folder of its own
+// (named after the test), without a display or a cache override.
+class CliFixture : public ::testing::Test {
+protected:
+    void SetUp() override {
+        const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+        dir = std::filesystem::path(PLANET_TEST_OUT) / (std::string(info->test_suite_name()) + "." + info->name());
+        std::filesystem::remove_all(dir);
+        std::filesystem::create_directories(dir);
+    }
+    // A shell command running planet with `args` in the test's folder.
+    std::string planet(const std::string& args) const {
+        return "cd '" + dir.string() + "' && env -u DISPLAY -u WAYLAND_DISPLAY -u PLANET_CACHE '" PLANET_EXE "' " +
+               args;
+    }
+    std::filesystem::path dir;
+};
 
 }  // namespace planet::test

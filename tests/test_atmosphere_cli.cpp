@@ -22,18 +22,8 @@ using planet::test::runCommand;
 
 namespace {
 
-class AtmosphereCli : public ::testing::Test {
+class AtmosphereCli : public planet::test::CliFixture {
 protected:
-    void SetUp() override {
-        const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-        dir = fs::path(PLANET_TEST_OUT) / info->name();
-        fs::remove_all(dir);
-        fs::create_directories(dir);
-    }
-    std::string planet(const std::string& args) const {
-        return "cd '" + dir.string() + "' && env -u DISPLAY -u WAYLAND_DISPLAY -u PLANET_CACHE '" PLANET_EXE "' " +
-               args;
-    }
     // The one cache entry under root.
     fs::path entry(const fs::path& root) const {
         std::vector<fs::path> entries;
@@ -41,7 +31,6 @@ protected:
         EXPECT_EQ(entries.size(), 1u);
         return entries.empty() ? fs::path() : entries[0];
     }
-    fs::path dir;
 };
 
 struct ProbeValues {

@@ -18,19 +18,7 @@ using planet::test::runCommand;
 
 namespace {
 
-class CliTest : public ::testing::Test {
-protected:
-    void SetUp() override {
-        const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-        dir = fs::path(PLANET_TEST_OUT) / info->name();
-        fs::remove_all(dir);
-        fs::create_directories(dir);
-    }
-    std::string planet(const std::string& args) const {
-        return "cd '" + dir.string() + "' && env -u DISPLAY -u WAYLAND_DISPLAY '" PLANET_EXE "' " + args;
-    }
-    fs::path dir;
-};
+using CliTest = planet::test::CliFixture;
 
 using planet::test::contains;
 
