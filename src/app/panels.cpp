@@ -35,12 +35,18 @@ void historyGraph(const char* label, const RollingStats& stats) {
                      ImVec2(ImGui::GetContentRegionAvail().x, 70.0f));
 }
 
+// Drag speed per pixel: half a percent of the value, so coefficients of 5e-6 and
+// radii of 6360 both tune smoothly; a floor keeps zero values movable.
+float dragSpeed(const ParamSpec& spec, double magnitude) {
+    return static_cast<float>(std::max(magnitude * 5e-3, (spec.max - spec.min) * 1e-7));
+}
+
 bool paramWidget(const ParamSpec& spec, Scene& scene) {
     const std::string label = spec.key + (spec.unit.empty() ? "" : " [" + spec.unit + "]");
     const ParamRef ref = spec.field(scene);
     bool changed = false;
     if (auto* d = std::get_if<double*>(&ref)) {
-        const float speed = static_cast<float>((spec.max - spec.min) * 1e-3);
+        const float speed = dragSpeed(spec, std::abs(**d));
         changed = ImGui::DragScalar(label.c_str(), ImGuiDataType_Double, *d, speed, &spec.min, &spec.max, "%.6g",
                                     ImGuiSliderFlags_AlwaysClamp);
     } else if (auto* i = std::get_if<int*>(&ref)) {
@@ -51,7 +57,7 @@ bool paramWidget(const ParamSpec& spec, Scene& scene) {
             changed = ImGui::ColorEdit3(label.c_str(), c, ImGuiColorEditFlags_Float);
             if (changed) **v = glm::clamp(glm::dvec3(c[0], c[1], c[2]), 0.0, 1.0);
         } else {
-            const float speed = static_cast<float>((spec.max - spec.min) * 1e-3);
+            const float speed = dragSpeed(spec, glm::max(std::abs((**v).x), glm::max(std::abs((**v).y), std::abs((**v).z))));
             changed = ImGui::DragScalarN(label.c_str(), ImGuiDataType_Double, &(**v).x, 3, speed, &spec.min,
                                          &spec.max, "%.5g", ImGuiSliderFlags_AlwaysClamp);
         }
@@ -87,12 +93,13 @@ void drawProfilerPanel(const Profiler& profiler, const std::string& renderer) {
 
 bool drawSceneParams(Scene& scene, double rebuildProgress) {
     ImGui::SetNextWindowPos(ImVec2(10, 330), ImGuiCond_FirstUseEver);
-    ImGui::SetNextWindowSize(ImVec2(430, 0), ImGuiCond_FirstUseEver);
+    ImGui::SetNextWindowSize(ImVec2(560, 420), ImGuiCond_FirstUseEver);
     bool changed = false;
     if (!ImGui::Begin("Scene")) {
         ImGui::End();
         return false;
     }
+    ImGui::PushItemWidth(-260.0f);  // room for the longest label with its unit
     std::string section;
     bool open = false;
     for (const ParamSpec& spec : sceneParams()) {
@@ -107,6 +114,7 @@ bool drawSceneParams(Scene& scene, double rebuildProgress) {
         changed = paramWidget(spec, scene) || changed;
         ImGui::PopID();
     }
+    ImGui::PopItemWidth();
     ImGui::End();
     return changed;
 }
