@@ -25,6 +25,7 @@
 #include "render/readback.h"
 #include "render/renderer.h"
 #include "scene/preset.h"
+#include "scene/scene_params.h"
 #include "scene/toml_error.h"
 #include "util/log.h"
 
@@ -140,6 +141,7 @@ public:
         : options_(options), window_(window), session_(std::move(session)), renderer_(paths.shaders(), atmosphere::tableSizesFor(options.common.tables, gl::rendererDescription())),
           rendererName_(gl::rendererDescription()),
           presetPath_("out/presets/" + session_.presetName + ".toml"),  // never the shipped preset by default
+          lastValidScene_(session_.scene),
           showUi_(!options.noPanels) {
         glfwSetWindowUserPointer(window_, &pending_);
         glfwSetScrollCallback(window_, [](GLFWwindow* w, double, double dy) {
@@ -155,6 +157,8 @@ public:
 private:
     void handleKeys();
     void drawUi();
+    void acceptOrRevertEdit();
+    void jumpToView(std::size_t index);
     void savePreset();
     void pollShaders();
 
@@ -166,6 +170,7 @@ private:
     std::string rendererName_;
     std::string presetPath_;
     std::string status_;
+    Scene lastValidScene_;  // what the panels last produced that passed validateScene
     bool showUi_;
     bool screenshotRequested_ = false;
     PendingInput pending_;
@@ -185,7 +190,7 @@ void Explorer::handleKeys() {
             controller_.mode = controller_.mode == CameraMode::Fly ? CameraMode::Orbit : CameraMode::Fly;
         const int index = key - GLFW_KEY_1;
         if (index >= 0 && index < 9 && index < static_cast<int>(session_.views.size()))
-            applyView(session_.views[static_cast<std::size_t>(index)], session_);
+            jumpToView(static_cast<std::size_t>(index));
     }
     pending_.keys.clear();
 }
@@ -212,16 +217,35 @@ void Explorer::savePreset() {
     logInfo(status_);
 }
 
+void Explorer::jumpToView(std::size_t index) {
+    applyView(session_.views[index], session_);
+    lastValidScene_ = session_.scene;  // the view's sun is part of the scene now
+}
+
+// A panel edit that breaks a rule between parameters (the atmosphere's top
+// below the ground, say) is undone and explained, so the frame never renders
+// an impossible scene.
+void Explorer::acceptOrRevertEdit() {
+    const std::vector<SceneProblem> problems = validateScene(session_.scene);
+    if (problems.empty()) {
+        lastValidScene_ = session_.scene;
+        return;
+    }
+    session_.scene = lastValidScene_;
+    status_ = "not applied: " + problems.front().field + ": " + problems.front().message;
+    logWarning(status_);
+}
+
 void Explorer::drawUi() {
     ImGui_ImplOpenGL3_NewFrame();
     ImGui_ImplGlfw_NewFrame();
     ImGui::NewFrame();
     if (showUi_) {
         drawProfilerPanel(renderer_.profiler(), rendererName_);
-        drawSceneParams(session_.scene, renderer_.atmosphere().rebuildProgress());
+        if (drawSceneParams(session_.scene, renderer_.atmosphere().rebuildProgress())) acceptOrRevertEdit();
         const CameraPanelResult r = drawCameraPanel(session_.camera, controller_, session_.scene.planetRadiusM(),
                                                     session_.views, presetPath_, status_);
-        if (r.jumpToView >= 0) applyView(session_.views[static_cast<std::size_t>(r.jumpToView)], session_);
+        if (r.jumpToView >= 0) jumpToView(static_cast<std::size_t>(r.jumpToView));
         if (r.savePreset) savePreset();
     }
     drawShaderErrors(renderer_.shaderErrors());
