@@ -3,7 +3,7 @@
 // This file and functions.glsl are written in the subset of GLSL that is also
 // C++ (STYLE habit 1, after Bruneton's atmosphere/definitions.glsl): the GPU
 // precomputation and rendering compile them as GLSL in single precision, and
-// src/atmosphere/reference_model.h compiles the very same text as C++ in
+// src/atmosphere/model.h compiles the very same text as C++ in
 // double precision for the CPU reference. Differences are hidden behind the
 // names below, defined for each language.
 //

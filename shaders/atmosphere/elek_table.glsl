@@ -48,9 +48,8 @@ Number ElekNuAtZeroAzimuth(Number mu, Number mu_s) {
 // Texture coordinates (x: mu_s, y: mu, z: r) of Elek's table.
 vec3 GetElekTextureUvwFromRMuMuS(IN(AtmosphereParameters) atmosphere, Length r, Number mu, Number mu_s,
                                  bool ray_r_mu_intersects_ground) {
-    Length H = sqrt(atmosphere.top_radius * atmosphere.top_radius -
-                    atmosphere.bottom_radius * atmosphere.bottom_radius);
-    Length rho = SafeSqrt(r * r - atmosphere.bottom_radius * atmosphere.bottom_radius);
+    Length H = sqrt((atmosphere.top_radius - atmosphere.bottom_radius) * (atmosphere.top_radius + atmosphere.bottom_radius));
+    Length rho = SafeSqrt((r - atmosphere.bottom_radius) * (r + atmosphere.bottom_radius));
     Number u_r = GetTextureCoordFromUnitRange(clamp(rho / H, Number(0.0), Number(1.0)), ELEK_TEXTURE_R_SIZE);
 
     Number mu_horizon = ElekHorizonMu(atmosphere, r);
@@ -71,8 +70,7 @@ vec3 GetElekTextureUvwFromRMuMuS(IN(AtmosphereParameters) atmosphere, Length r, 
 // The inverse, for texture coordinates in the table's range.
 void GetRMuMuSFromElekTextureUvw(IN(AtmosphereParameters) atmosphere, IN(vec3) uvw, OUT(Length) r, OUT(Number) mu,
                                  OUT(Number) mu_s, OUT(bool) ray_r_mu_intersects_ground) {
-    Length H = sqrt(atmosphere.top_radius * atmosphere.top_radius -
-                    atmosphere.bottom_radius * atmosphere.bottom_radius);
+    Length H = sqrt((atmosphere.top_radius - atmosphere.bottom_radius) * (atmosphere.top_radius + atmosphere.bottom_radius));
     Length rho = H * GetUnitRangeFromTextureCoord(uvw.z, ELEK_TEXTURE_R_SIZE);
     r = sqrt(rho * rho + atmosphere.bottom_radius * atmosphere.bottom_radius);
 
@@ -150,7 +148,7 @@ Spectrum GetSkyRadianceElek(IN(AtmosphereParameters) atmosphere, IN(Transmittanc
     Spectrum scattering =
         GetCombinedScatteringElek(atmosphere, elek_scattering_texture, elek_single_mie_scattering_texture, r, mu,
                                   mu_s, ray_r_mu_intersects_ground, single_mie_scattering);
-    return ApplyPhaseFunctionsElek(atmosphere, scattering, single_mie_scattering, nu);
+    return ApplyPhaseFunctionsElek(atmosphere, scattering, single_mie_scattering, nu) * NightFade(atmosphere, mu_s);
 }
 
 // ScatteringBetween (rendering.glsl) with Elek's table: phase-free in-scattering
@@ -220,5 +218,5 @@ Spectrum GetSkyRadianceToPointAlongRayElek(IN(AtmosphereParameters) atmosphere,
                                            single_mie_scattering);
     }
     single_mie_scattering = single_mie_scattering * smoothstep(Number(0.0), Number(0.01), mu_s);
-    return ApplyPhaseFunctionsElek(atmosphere, scattering, single_mie_scattering, nu);
+    return ApplyPhaseFunctionsElek(atmosphere, scattering, single_mie_scattering, nu) * NightFade(atmosphere, mu_s);
 }

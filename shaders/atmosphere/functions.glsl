@@ -98,8 +98,7 @@ Number GetUnitRangeFromTextureCoord(Number u, int texture_size) {
 // mu through the distance to the top boundary, both mapped linearly, which puts
 // samples where the function changes fastest (near the horizon).
 vec2 GetTransmittanceTextureUvFromRMu(IN(AtmosphereParameters) atmosphere, Length r, Number mu) {
-    Length H = sqrt(atmosphere.top_radius * atmosphere.top_radius -
-                    atmosphere.bottom_radius * atmosphere.bottom_radius);
+    Length H = sqrt((atmosphere.top_radius - atmosphere.bottom_radius) * (atmosphere.top_radius + atmosphere.bottom_radius));
     Length rho = SafeSqrt(r * r - atmosphere.bottom_radius * atmosphere.bottom_radius);
     Length d = DistanceToTopAtmosphereBoundary(atmosphere, r, mu);
     Length d_min = atmosphere.top_radius - r;
@@ -114,8 +113,7 @@ void GetRMuFromTransmittanceTextureUv(IN(AtmosphereParameters) atmosphere, IN(ve
                                       OUT(Number) mu) {
     Number x_mu = GetUnitRangeFromTextureCoord(uv.x, TRANSMITTANCE_TEXTURE_WIDTH);
     Number x_r = GetUnitRangeFromTextureCoord(uv.y, TRANSMITTANCE_TEXTURE_HEIGHT);
-    Length H = sqrt(atmosphere.top_radius * atmosphere.top_radius -
-                    atmosphere.bottom_radius * atmosphere.bottom_radius);
+    Length H = sqrt((atmosphere.top_radius - atmosphere.bottom_radius) * (atmosphere.top_radius + atmosphere.bottom_radius));
     Length rho = H * x_r;
     r = sqrt(rho * rho + atmosphere.bottom_radius * atmosphere.bottom_radius);
     Length d_min = atmosphere.top_radius - r;
@@ -245,13 +243,12 @@ void ComputeSingleScattering(IN(AtmosphereParameters) atmosphere, IN(Transmittan
 
 vec4 GetScatteringTextureUvwzFromRMuMuSNu(IN(AtmosphereParameters) atmosphere, Length r, Number mu, Number mu_s,
                                           Number nu, bool ray_r_mu_intersects_ground) {
-    Length H = sqrt(atmosphere.top_radius * atmosphere.top_radius -
-                    atmosphere.bottom_radius * atmosphere.bottom_radius);
+    Length H = sqrt((atmosphere.top_radius - atmosphere.bottom_radius) * (atmosphere.top_radius + atmosphere.bottom_radius));
     Length rho = SafeSqrt(r * r - atmosphere.bottom_radius * atmosphere.bottom_radius);
     Number u_r = GetTextureCoordFromUnitRange(rho / H, SCATTERING_TEXTURE_R_SIZE);
 
     Length r_mu = r * mu;
-    Area discriminant = r_mu * r_mu - r * r + atmosphere.bottom_radius * atmosphere.bottom_radius;
+    Area discriminant = RaySphereDiscriminant(r, mu, atmosphere.bottom_radius);
     Number u_mu;
     if (ray_r_mu_intersects_ground) {
         Length d = -r_mu - SafeSqrt(discriminant);
@@ -281,8 +278,7 @@ vec4 GetScatteringTextureUvwzFromRMuMuSNu(IN(AtmosphereParameters) atmosphere, L
 void GetRMuMuSNuFromScatteringTextureUvwz(IN(AtmosphereParameters) atmosphere, IN(vec4) uvwz, OUT(Length) r,
                                           OUT(Number) mu, OUT(Number) mu_s, OUT(Number) nu,
                                           OUT(bool) ray_r_mu_intersects_ground) {
-    Length H = sqrt(atmosphere.top_radius * atmosphere.top_radius -
-                    atmosphere.bottom_radius * atmosphere.bottom_radius);
+    Length H = sqrt((atmosphere.top_radius - atmosphere.bottom_radius) * (atmosphere.top_radius + atmosphere.bottom_radius));
     Length rho = H * GetUnitRangeFromTextureCoord(uvwz.w, SCATTERING_TEXTURE_R_SIZE);
     r = sqrt(rho * rho + atmosphere.bottom_radius * atmosphere.bottom_radius);
 

@@ -8,6 +8,13 @@
 // is interpolated from samples above and below it (5.1.2) and single Mie
 // scattering fades out as the sun sets (5.1.3).
 
+// The tables end at the lowest sun they cover (mu_s_min, about -12 deg on
+// Earth) and clamp beyond it, which would repeat that twilight all night.
+// Below it, fade to the dark night sky instead.
+Number NightFade(IN(AtmosphereParameters) atmosphere, Number mu_s) {
+    return smoothstep(atmosphere.mu_s_min - 0.05, atmosphere.mu_s_min, mu_s);
+}
+
 // Scattering table lookup returning the Rayleigh + multiple part and the single
 // Mie part, both without phase functions.
 Spectrum GetCombinedScattering(IN(AtmosphereParameters) atmosphere, IN(ScatteringTexture) scattering_texture,
@@ -43,7 +50,7 @@ ViewRay ViewRayInAtmosphere(IN(AtmosphereParameters) atmosphere, IN(vec3) camera
     Length r = length(camera);
     Length rmu = dot(camera, view_ray);
     Length distance_to_top_atmosphere_boundary =
-        -rmu - sqrt(rmu * rmu - r * r + atmosphere.top_radius * atmosphere.top_radius);
+        -rmu - sqrt(rmu * rmu - (r - atmosphere.top_radius) * (r + atmosphere.top_radius));
     ray.skipped = 0.0;
     ray.inside = true;
     if (distance_to_top_atmosphere_boundary > 0.0) {
@@ -85,7 +92,21 @@ Spectrum GetSkyRadiance(IN(AtmosphereParameters) atmosphere, IN(TransmittanceTex
     Spectrum single_mie_scattering;
     Spectrum scattering = GetCombinedScattering(atmosphere, scattering_texture, single_mie_scattering_texture, r, mu,
                                                 mu_s, nu, ray_r_mu_intersects_ground, single_mie_scattering);
-    return ApplyPhaseFunctions(atmosphere, scattering, single_mie_scattering, nu);
+    return ApplyPhaseFunctions(atmosphere, scattering, single_mie_scattering, nu) * NightFade(atmosphere, mu_s);
+}
+
+// Transmittance from the camera to the end of its view ray: the ground where
+// the ray hits it, else the top of the atmosphere (1 for a ray missing it).
+// GetSkyRadiance reports 0 for ground rays, because the sky behind the ground
+// is hidden; this is what `planet sky-probe` reports.
+Spectrum GetViewRayTransmittance(IN(AtmosphereParameters) atmosphere, IN(TransmittanceTexture) transmittance_texture,
+                                 IN(vec3) camera_position, IN(vec3) view_ray) {
+    ViewRay ray = ViewRayInAtmosphere(atmosphere, camera_position, view_ray, view_ray);
+    if (!ray.inside) return Spectrum(1.0);
+    if (!RayIntersectsGround(atmosphere, ray.r, ray.mu))
+        return GetTransmittanceToTopAtmosphereBoundary(atmosphere, transmittance_texture, ray.r, ray.mu);
+    return GetTransmittance(atmosphere, transmittance_texture, ray.r, ray.mu,
+                            DistanceToBottomAtmosphereBoundary(atmosphere, ray.r, ray.mu), true);
 }
 
 // In-scattering between (r, mu) and the point at distance d along the ray
@@ -155,7 +176,7 @@ Spectrum GetSkyRadianceToPointAlongRay(IN(AtmosphereParameters) atmosphere,
     }
     // Sperlhofer 5.1.3: single Mie scattering is unreliable once the sun has set.
     single_mie_scattering = single_mie_scattering * smoothstep(Number(0.0), Number(0.01), mu_s);
-    return ApplyPhaseFunctions(atmosphere, scattering, single_mie_scattering, nu);
+    return ApplyPhaseFunctions(atmosphere, scattering, single_mie_scattering, nu) * NightFade(atmosphere, mu_s);
 }
 
 // The same for two points (positions relative to the planet centre, km).
@@ -177,7 +198,8 @@ Spectrum GetSunAndSkyIrradiance(IN(AtmosphereParameters) atmosphere, IN(Transmit
                                 IN(vec3) sun_direction, OUT(Spectrum) sky_irradiance) {
     Length r = length(point);
     Number mu_s = dot(point, sun_direction) / r;
-    sky_irradiance = GetIrradiance(atmosphere, irradiance_texture, r, mu_s) * (1.0 + dot(normal, point) / r) * 0.5;
+    sky_irradiance = GetIrradiance(atmosphere, irradiance_texture, r, mu_s) * (1.0 + dot(normal, point) / r) * 0.5 *
+                     NightFade(atmosphere, mu_s);
     return atmosphere.solar_irradiance * GetTransmittanceToSun(atmosphere, transmittance_texture, r, mu_s) *
            max(dot(normal, sun_direction), Number(0.0));
 }

@@ -36,6 +36,7 @@ void main() {
     vec3 transmittance;
     vec3 radiance = GetSkyRadiance(atmosphere, transmittanceTable, scatteringTable, singleMieTable, camera, view_ray,
                                    sun_direction, transmittance);
+    transmittance = GetViewRayTransmittance(atmosphere, transmittanceTable, camera, view_ray);  // to the ground too
     results[2 * row] = vec4(radiance, 0.0);
     results[2 * row + 1] = vec4(transmittance, 0.0);
 }

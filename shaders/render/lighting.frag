@@ -35,7 +35,8 @@ layout(binding = 9) uniform sampler3D elek_single_mie_scattering_texture;
 layout(location = 0) out vec4 outRadiance;
 
 const float M_PER_KM = 1000.0;
-const float LIMB_DARKENING_U = 0.6;  // linear law I(mu) = 1 - u (1 - mu), visible light
+const float LIMB_DARKENING_U = 0.6;
+const float MAX_HDR_RADIANCE = 6.0e4;  // below the largest half float (65504)  // linear law I(mu) = 1 - u (1 - mu), visible light
 
 // Sun disc radiance towards `dir`, before the atmosphere. Normalised so the
 // disc delivers the solar irradiance: the mean of the linear law over the disc
@@ -47,7 +48,8 @@ vec3 sunDiscRadiance(vec3 dir, vec3 sun, float angularRadius, vec3 irradiance) {
     float x = angle / angularRadius;
     float mu = sqrt(1.0 - x * x);
     float discSolidAngle = PI * angularRadius * angularRadius;
-    return irradiance / discSolidAngle * (1.0 - LIMB_DARKENING_U * (1.0 - mu)) / (1.0 - LIMB_DARKENING_U / 3.0);
+    vec3 radiance = irradiance / discSolidAngle * (1.0 - LIMB_DARKENING_U * (1.0 - mu)) / (1.0 - LIMB_DARKENING_U / 3.0);
+    return min(radiance, vec3(MAX_HDR_RADIANCE));  // a tiny disc must not overflow the RGBA16F target
 }
 
 void main() {

@@ -239,6 +239,7 @@ std::vector<ProbeResult> probeOnCpu(const std::vector<ProbeRow>& rows, const Ses
         glm::dvec3 transmittance(0.0);
         const glm::dvec3 radiance = model.GetSkyRadiance(params, t.transmittance, t.scattering, t.singleMie,
                                                          r.camera, r.view, r.sun, transmittance);
+        transmittance = model.GetViewRayTransmittance(params, t.transmittance, r.camera, r.view);  // to the ground too
         results[i] = {radiance, transmittance};
         if ((i + 1) % kRowsPerDispatch == 0 || i + 1 == rows.size()) reportProgress(i + 1, rows.size());
     }

@@ -14,7 +14,9 @@ bool Atmosphere::Target::operator==(const Target& o) const {
 }
 
 Atmosphere::Target Atmosphere::targetFor(const Scene& scene) {
-    return {makeAtmosphereUniforms(makeAtmosphereParameters(scene)), scene.atmosphere.scattering_orders};
+    Target t{makeAtmosphereUniforms(makeAtmosphereParameters(scene)), scene.atmosphere.scattering_orders};
+    t.uniforms.rayleighScattering.w = 0.0f;  // Elek's Rayleigh phase is applied at render time, not in the tables
+    return t;
 }
 
 Atmosphere::Atmosphere(const std::filesystem::path& shaderRoot, const TableSizes& sizes)
@@ -25,23 +27,24 @@ Atmosphere::Atmosphere(const std::filesystem::path& shaderRoot, const TableSizes
 
 void Atmosphere::update(const Scene& scene) {
     const Target wanted = targetFor(scene);
-    const bool elek = scene.atmosphere.elek_3d_table;
+    const RenderFlags flags{scene.atmosphere.elek_3d_table, scene.atmosphere.elek_rayleigh_phase};
     if (!tables_) {  // first use: tables now
         tables_ = loadOrCompute(makeAtmosphereParameters(scene), wanted.orders);
         // Elek's 3D table from the 4D ones (the cache holds only those), one short pass.
         precompute_.computeElekTable(makeAtmosphereParameters(scene), *tables_);
         current_ = wanted;
-        elek3dTable_ = elek;
+        flags_ = flags;
         writeUniforms();
         return;
     }
-    if (elek != elek3dTable_) {  // a render-time switch: same tables, new flag
-        elek3dTable_ = elek;
+    if (!(flags == flags_)) {  // render-time switches: same tables, new flags
+        flags_ = flags;
         writeUniforms();
     }
     if (job_ && !(pending_ == wanted)) job_.reset();  // parameters moved on: restart with the newest
     if (!job_ && !(current_ == wanted)) {
-        job_ = precompute_.start(makeAtmosphereParameters(scene), wanted.orders, {}, 4, /*elekTable=*/true);
+        // One r layer per chunk: the longest stall a rebuild adds to a frame.
+        job_ = precompute_.start(makeAtmosphereParameters(scene), wanted.orders, {}, 1, /*elekTable=*/true);
         pending_ = wanted;
     }
     if (job_ && job_->step()) finishJob();
@@ -81,7 +84,8 @@ void Atmosphere::finishJob() {
 
 void Atmosphere::writeUniforms() {
     AtmosphereUniforms u = current_.uniforms;
-    u.mieScattering.w = elek3dTable_ ? 1.0f : 0.0f;
+    u.mieScattering.w = flags_.elek3dTable ? 1.0f : 0.0f;
+    u.rayleighScattering.w = flags_.elekRayleighPhase ? 1.0f : 0.0f;
     glNamedBufferSubData(uniforms_.id(), 0, sizeof u, &u);
 }
 

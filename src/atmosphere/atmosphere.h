@@ -43,7 +43,7 @@ public:
     const TableSizes& sizes() const { return precompute_.sizes(); }
     const GpuTables& tables() const { return *tables_; }
     // Whether the uniform block asks for Elek's 3D table (the scene's atmosphere.elek_3d_table).
-    bool usesElekTable() const { return elek3dTable_; }
+    bool usesElekTable() const { return flags_.elek3dTable; }
 
 private:
     struct Target {
@@ -61,7 +61,12 @@ private:
     Target current_{};                 // what tables_ hold
     std::optional<GpuPrecomputeJob> job_;
     Target pending_{};                 // what job_ computes
-    bool elek3dTable_ = false;          // render-time choice, not part of Target
+    struct RenderFlags {  // switches applied when rendering; they do not change the tables
+        bool elek3dTable = false;
+        bool elekRayleighPhase = false;
+        bool operator==(const RenderFlags&) const = default;
+    };
+    RenderFlags flags_;
     gl::Buffer uniforms_;
 };
 

@@ -216,7 +216,7 @@ std::string tableCacheKey(const AtmosphereParameters& a, const TableSizes& s, in
     h.spectrum(a.absorption_extinction);
     h.spectrum(a.ground_albedo);
     h.number(a.mu_s_min);
-    h.number(a.elek_rayleigh_phase);
+    // elek_rayleigh_phase is left out: it applies at render time and does not change the tables.
     for (int v : {s.transmittance_width, s.transmittance_height, s.scattering_r, s.scattering_mu, s.scattering_mu_s,
                   s.scattering_nu, s.irradiance_width, s.irradiance_height})
         h.integer(v);

@@ -1,0 +1,42 @@
+// Noise on the CPU: the very GLSL the shaders run, compiled as C++ in float.
+//
+// shaders/noise/simplex.glsl and shaders/noise/worley.glsl are written in the subset of
+// GLSL that is also C++ (STYLE habit 1). noise.cpp includes them into
+// namespace planet::noise::glsl, with GLM's float vectors standing in for GLSL's, and the
+// functions below forward to them. Both sides compute in single precision, so the CPU
+// values match the GPU's to float rounding (tests/test_noise.cpp measures the difference
+// with shaders/noise/noise_probe.comp; numbers in noise/README.md). The GLSL names are
+// given next to each function.
+#pragma once
+
+#include <glm/vec3.hpp>
+#include <glm/ext/vector_int3.hpp>
+
+namespace planet::noise {
+
+// 3D simplex noise, lattice spacing 1, in [-1, 1]. GLSL: simplexNoise(p).
+float simplex(glm::vec3 p);
+
+// Simplex noise and its analytic gradient d noise / d p. GLSL: simplexNoiseGrad(p, gradient).
+float simplexGrad(glm::vec3 p, glm::vec3& gradient);
+
+// fBm: sum of gain^k simplex(lacunarity^k p) over octaves in [1, 10] (clamped), divided by
+// the sum of amplitudes: in [-1, 1], and octaves = 1 gives simplex(p). GLSL: fbm(...).
+float fbm(glm::vec3 p, int octaves, float lacunarity = 2.0f, float gain = 0.5f);
+
+// fBm and its analytic gradient. GLSL: fbmGrad(p, octaves, lacunarity, gain, gradient).
+float fbmGrad(glm::vec3 p, int octaves, float lacunarity, float gain, glm::vec3& gradient);
+
+// Ridged fBm: the same sum of (1 - |simplex|)^2, in [0, 1]. GLSL: ridgedFbm(...).
+float ridgedFbm(glm::vec3 p, int octaves, float lacunarity = 2.0f, float gain = 0.5f);
+
+// Worley F1: distance from p to the nearest feature point (one per unit cell), in cells.
+// period > 0 (an integer number of cells) makes it tile: worley(p + period e) = worley(p).
+// GLSL: worleyNoise(p), worleyNoiseTiled(p, period).
+float worley(glm::vec3 p, float period = 0.0f);
+
+// The feature point of a lattice cell, in [cell, cell + 1)^3 (for tests and debugging).
+// GLSL: worleyFeaturePoint(cell, period) with an int period.
+glm::vec3 worleyFeaturePoint(glm::ivec3 cell, float period = 0.0f);
+
+}  // namespace planet::noise
