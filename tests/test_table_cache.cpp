@@ -150,6 +150,11 @@ TEST_F(TableCache, KeyIsStableAndChangesWithEveryInput) {
     AtmosphereParameters elek = base;
     elek.elek_rayleigh_phase = 1.0 - elek.elek_rayleigh_phase;
     EXPECT_EQ(tableCacheKey(elek, sizes, 4), key);
+    // An edited model (its shader text) gives another key.
+    const std::string source = atmosphereModelSource(fs::path(PLANET_SOURCE_DIR) / "shaders");
+    EXPECT_NE(source.find("ComputeScatteringDensity"), std::string::npos);
+    EXPECT_NE(source.find("multiple_scattering.comp"), std::string::npos);
+    EXPECT_NE(tableCacheKey(base, sizes, 4, source), tableCacheKey(base, sizes, 4, source + " "));
 }
 
 TEST_F(TableCache, DefaultRootFollowsPlanetCache) {

@@ -71,7 +71,7 @@ AtmosphereTables loadOrPrecomputeTables(const Scene& scene, const TableSizes& si
                                         const fs::path& shaderRoot, bool reference, bool force, std::ostream& out) {
     const AtmosphereParameters params = makeAtmosphereParameters(scene);
     const int orders = scene.atmosphere.scattering_orders;
-    const std::string key = tableCacheKey(params, sizes, orders);
+    const std::string key = tableCacheKey(params, sizes, orders, atmosphereModelSource(shaderRoot));
     const fs::path dir = (cacheRoot.empty() ? defaultTableCacheRoot() : fs::path(cacheRoot)) / key;
     const std::string where = fs::absolute(dir).lexically_normal().string();
 

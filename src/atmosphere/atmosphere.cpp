@@ -20,7 +20,7 @@ Atmosphere::Target Atmosphere::targetFor(const Scene& scene) {
 }
 
 Atmosphere::Atmosphere(const std::filesystem::path& shaderRoot, const TableSizes& sizes)
-    : precompute_(shaderRoot, sizes) {
+    : shaderRoot_(shaderRoot), precompute_(shaderRoot, sizes) {
     glNamedBufferStorage(uniforms_.id(), sizeof(AtmosphereUniforms), nullptr, GL_DYNAMIC_STORAGE_BIT);
     uniforms_.label("AtmosphereUniforms");
 }
@@ -51,7 +51,7 @@ void Atmosphere::update(const Scene& scene) {
 }
 
 GpuTables Atmosphere::loadOrCompute(const AtmosphereParameters& parameters, int orders) {
-    const std::string key = tableCacheKey(parameters, sizes(), orders);
+    const std::string key = tableCacheKey(parameters, sizes(), orders, atmosphereModelSource(shaderRoot_));
     const std::filesystem::path dir = defaultTableCacheRoot() / key;
     std::string reason;
     if (std::filesystem::exists(dir)) {

@@ -56,6 +56,7 @@ private:
     void finishJob();
     void writeUniforms();  // current_.uniforms with the Elek flag
 
+    std::filesystem::path shaderRoot_;  // the model's sources are part of the cache key
     GpuPrecompute precompute_;
     std::optional<GpuTables> tables_;
     Target current_{};                 // what tables_ hold

@@ -12,6 +12,9 @@
 #include <cstdint>
 #include <cstdlib>
 #include <cstring>
+#include <iterator>
+#include <fstream>
+#include <algorithm>
 #include <map>
 #include <sstream>
 #include <unistd.h>
@@ -199,9 +202,26 @@ std::map<std::string, std::string> parseKeyFile(const std::string& text) {
 
 }  // namespace
 
-std::string tableCacheKey(const AtmosphereParameters& a, const TableSizes& s, int scatteringOrders) {
+std::string atmosphereModelSource(const fs::path& shaderRoot) {
+    std::vector<fs::path> files{shaderRoot / "atmosphere" / "definitions.glsl",
+                                shaderRoot / "atmosphere" / "functions.glsl"};
+    std::error_code ec;
+    for (const auto& entry : fs::directory_iterator(shaderRoot / "atmosphere" / "precompute", ec))
+        if (entry.path().extension() == ".comp") files.push_back(entry.path());
+    std::sort(files.begin() + 2, files.end());
+    std::string text;
+    for (const fs::path& f : files) {
+        std::ifstream in(f, std::ios::binary);
+        text += f.filename().string() + "\n" + std::string(std::istreambuf_iterator<char>(in), {});
+    }
+    return text;
+}
+
+std::string tableCacheKey(const AtmosphereParameters& a, const TableSizes& s, int scatteringOrders,
+                          const std::string& modelSource) {
     Fnv1a h;
     h.integer(kModelVersion);
+    h.bytes(modelSource.data(), modelSource.size());
     h.spectrum(a.solar_irradiance);
     h.number(a.sun_angular_radius);
     h.number(a.bottom_radius);

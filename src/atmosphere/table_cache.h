@@ -36,7 +36,14 @@ constexpr int kModelVersion = 1;
 
 // 16 lower-case hex digits of a 64-bit FNV-1a hash of the parameters (each
 // double field by field), the sizes, the orders and kModelVersion.
-std::string tableCacheKey(const AtmosphereParameters& atmosphere, const TableSizes& sizes, int scatteringOrders);
+// `modelSource` (atmosphereModelSource()) is hashed too, so editing the model's
+// shaders makes old entries stop matching even when kModelVersion was not bumped.
+std::string tableCacheKey(const AtmosphereParameters& atmosphere, const TableSizes& sizes, int scatteringOrders,
+                          const std::string& modelSource = {});
+
+// The text of the files the tables are computed from: atmosphere/definitions.glsl,
+// atmosphere/functions.glsl and atmosphere/precompute/*.comp under the shaders root.
+std::string atmosphereModelSource(const std::filesystem::path& shaderRoot);
 
 // Where cache entries live: $PLANET_CACHE if set and not empty, else
 // cache/atmosphere under the current directory.
