@@ -56,11 +56,21 @@ struct SkyProbeOptions {
     std::string cache;       // as PrecomputeOptions::cache
 };
 
+struct BakeOptions {
+    int size = 512;            // cube face size, texels, [16, 4096]
+    int seed = 1;              // noise domain offset
+    double seaFraction = 0.6;  // fraction of the surface under water, [0, 1]
+    bool force = false;        // rebake even when a valid cache entry exists
+    std::string cache;         // cache root (empty: noise::defaultContinentsCacheRoot())
+    std::string preview;       // equirectangular PNG of the map (empty: none)
+};
+
 int runExplore(const ExploreOptions& options);
 int runRender(const RenderOptions& options);
 int runBench(const BenchOptions& options);
 int runPrecompute(const PrecomputeOptions& options);
 int runSkyProbe(const SkyProbeOptions& options);
+int runBake(const BakeOptions& options);
 
 // Renders one still headlessly (shared by `render` and explore's no-display fallback).
 void renderStill(const CommonOptions& common, const std::vector<std::string>& outputs,

@@ -80,6 +80,22 @@ int main(int argc, char** argv) {
     skyProbeCmd->add_option("--cache", skyProbe.cache,
                             "Table cache root (default: $PLANET_CACHE, else cache/atmosphere)");
 
+    planet::BakeOptions bake;
+    CLI::App* bakeCmd = app.add_subcommand(
+        "bake", "Bake the continents cube map (fBm simplex elevation) into the cache; optional preview PNG");
+    bakeCmd->add_option("--size", bake.size, "Cube face size in texels, [16, 4096]")
+        ->check(CLI::Range(16, 4096))
+        ->capture_default_str();
+    bakeCmd->add_option("--seed", bake.seed, "Noise seed (an offset of the noise domain)")->capture_default_str();
+    bakeCmd->add_option("--sea-fraction", bake.seaFraction, "Fraction of the surface under water, [0, 1]")
+        ->check(CLI::Range(0.0, 1.0))
+        ->capture_default_str();
+    bakeCmd->add_flag("--force", bake.force, "Rebake even when a valid cached map exists");
+    bakeCmd->add_option("--cache", bake.cache,
+                        "Cache root; the map goes to DIR/<key>/ (default: cache/continents, or "
+                        "continents beside $PLANET_CACHE)");
+    bakeCmd->add_option("--preview", bake.preview, "Write an equirectangular preview PNG (1024x512)");
+
     app.require_subcommand(0, 1);
     CLI11_PARSE(app, argc, argv);
 
@@ -88,6 +104,7 @@ int main(int argc, char** argv) {
         if (benchCmd->parsed()) return planet::runBench(bench);
         if (precomputeCmd->parsed()) return planet::runPrecompute(precompute);
         if (skyProbeCmd->parsed()) return planet::runSkyProbe(skyProbe);
+        if (bakeCmd->parsed()) return planet::runBake(bake);
         return planet::runExplore(explore);
     } catch (const std::exception& e) {  // InputError, FileError, ContextError, ShaderError, ...
         std::cerr << "planet: error: " << e.what() << "\n";

@@ -1,0 +1,244 @@
+// Terrain height, normal and material over the sphere, shared by GLSL and C++.
+//
+// Include after noise/simplex.glsl. Written in the subset of GLSL that is also C++
+// (STYLE habit 1, see noise/simplex.glsl for the rules): terrain/height.cpp includes the
+// very same text into namespace planet::terrain::glsl, so tests/test_terrain_height.cpp
+// checks what the GPU runs, in float on both sides.
+//
+// The height field (Michelic §3: layered 3D simplex noise sampled at the direction, so
+// there are no seams and no polar distortion):
+//   continent c = continentValue(d): fBm at d * continentFrequency, in [-1, 1];
+//   e = c - TERRAIN_COAST_CONTINENT: the coast is e = 0, e > 0 is land;
+//   sea  (e < 0): h = -oceanDepth * S(0, TERRAIN_SHELF_WIDTH, -e), a continental shelf
+//                 falling to a flat abyssal plain at exactly -oceanDepth;
+//   land (e >= 0): h = maxHeight * (TERRAIN_LOWLAND_SHARE * S(0, TERRAIN_LOWLAND_WIDTH, e)
+//                       + (1 - TERRAIN_LOWLAND_SHARE) * S(0, TERRAIN_INLAND_WIDTH, e) * m),
+//                 m = mountains (mix of fBm and ridged fBm at d * mountainFrequency, squared, in [0, 1])
+//                 weighted by how far inland we are, so coasts are gentle;
+// S is smoothstep (zero slope at both ends), so h and its gradient are continuous across
+// the coast, and h lies in [-oceanDepth, maxHeight] (clamped against float rounding).
+//
+// The normal (terrainNormal) is analytic: the 3D gradient of h (chain rule through the
+// smoothsteps and the noise gradients of simplexNoiseGrad / fbmGrad), projected onto the
+// tangent plane, gives the normal of the surface r(d) = R + h(d):
+//   n = normalize(d - grad_T h / (R + h)),
+// exact for the height field, independent of any mesh, so lighting does not change when the
+// tessellation does. Caveat: ridged fBm has a crease at each crest (|noise| at noise = 0);
+// there the normal jumps, as the surface does.
+//
+// Materials (terrainMaterial): a hard rule in priority order, and terrainMaterialWeight, its
+// smooth version for blending (weights sum to 1, equal to the hard rule away from thresholds).
+
+// Material ids, numbered in the order the rule tests them (see terrainMaterial).
+const int TERRAIN_MATERIAL_SEA_FLOOR = 0;
+const int TERRAIN_MATERIAL_ROCK = 1;
+const int TERRAIN_MATERIAL_SNOW = 2;
+const int TERRAIN_MATERIAL_SAND = 3;  // beach sand
+const int TERRAIN_MATERIAL_GRASS = 4;
+const int TERRAIN_MATERIAL_COUNT = 5;
+
+// Shape of the height field. Continent value of the coastline, about 35 % land with the
+// fBm's distribution (tests/test_terrain_height.cpp measures the fraction).
+const float TERRAIN_COAST_CONTINENT = 0.05f;
+// Continent-value distances from the coast: the shelf's descent to the abyssal plain,
+// the lowlands' rise, and the rise of the mountains' weight from 0 at the coast to 1.
+const float TERRAIN_SHELF_WIDTH = 0.15f;
+const float TERRAIN_LOWLAND_WIDTH = 0.3f;
+const float TERRAIN_INLAND_WIDTH = 0.25f;
+// Share of maxHeight that lowlands take; mountains take the rest.
+const float TERRAIN_LOWLAND_SHARE = 0.1f;
+
+// Material rule thresholds (see terrainMaterial).
+const float TERRAIN_BEACH_DEPTH_M = 20.0f;          // sand down to 20 m below sea level, sea floor below
+const float TERRAIN_BEACH_HEIGHT_M = 20.0f;         // sand up to 20 m above sea level
+// Rise over run above which the ground is bare rock: 0.2, about 11 deg. Low for a real slope,
+// but this height field has no detail finer than its last octave (about 30 km across at the
+// default 6 octaves of frequency 40), and slopes averaged over that are gentle: on the default
+// planet's land the median is 0.05, the 99th percentile 0.24 (0.06 and 0.29 at 10 octaves),
+// so 0.2 leaves the steepest few percent rock.
+const float TERRAIN_ROCK_SLOPE = 0.2f;
+const float TERRAIN_SNOW_LINE_EQUATOR_M = 4500.0f;  // snow line at the equator ...
+const float TERRAIN_SNOW_FREE_LATITUDE = 1.2217305f;  // ... falling linearly to 0 m at 70 deg (rad)
+// Half widths of the blend bands around each threshold (terrainMaterialWeight).
+const float TERRAIN_BLEND_HEIGHT_M = 5.0f;   // sea floor / sand / grass
+const float TERRAIN_BLEND_SNOW_M = 100.0f;   // snow line
+const float TERRAIN_BLEND_SLOPE = 0.02f;     // rock
+
+// The parameters of terrain/terrain_params.h in float. A std140 uniform block can hold it:
+// every member sits at its std140 offset (vec4s first, then 4-byte scalars, padded to 64
+// bytes), and terrain/height.cpp static_asserts the same layout for the C++ mirror.
+struct TerrainShape {
+    vec4 continentOffset;      // noise-space offset of the continents (xyz; from the seed), w unused
+    vec4 mountainOffset;       // noise-space offset of the mountains (xyz), w unused
+    float maxHeight;           // m above sea level, >= 0
+    float oceanDepth;          // m below sea level, >= 0
+    float continentFrequency;  // per planet radius
+    float mountainFrequency;   // per planet radius
+    float ridgedWeight;        // [0, 1]
+    int octaves;               // [1, 10]
+    float padding0;
+    float padding1;
+};
+
+vec3 terrainXyz(vec4 v) { return vec3(v.x, v.y, v.z); }
+
+// smoothstep(edge0, edge1, x) and its derivative d/dx.
+float terrainSmoothstepGrad(float edge0, float edge1, float x, OUT(float) derivative) {
+    float t = clamp((x - edge0) / (edge1 - edge0), 0.0f, 1.0f);
+    derivative = 6.0f * t * (1.0f - t) / (edge1 - edge0);
+    return t * t * (3.0f - 2.0f * t);
+}
+
+// The continent value at a direction, in [-1, 1] (> TERRAIN_COAST_CONTINENT is land), and its
+// gradient with respect to the direction (as a point in R^3). Procedural fBm for now; a baked
+// cube map of the same function can replace this pair (the gradient then from the texture's
+// finite differences or a baked gradient channel).
+float continentValueGrad(vec3 unitDirection, TerrainShape shape, OUT(vec3) gradient) {
+    vec3 noiseGradient;
+    float value = fbmGrad(unitDirection * shape.continentFrequency + terrainXyz(shape.continentOffset), shape.octaves,
+                          2.0f, 0.5f, noiseGradient);
+    gradient = shape.continentFrequency * noiseGradient;
+    return value;
+}
+
+float continentValue(vec3 unitDirection, TerrainShape shape) {
+    vec3 unused;
+    return continentValueGrad(unitDirection, shape, unused);
+}
+
+// Mountains at noise-space point p, in [0, 1], and the gradient d/dp: per octave (lacunarity 2,
+// gain 0.5) mix(0.5 + 0.5 n, (1 - |n|)^2, ridgedWeight) of simplex noise n, normalised like
+// fbm; ridgedWeight 0 is 0.5 + 0.5 fbm(p), 1 is ridgedFbm(p). One noise evaluation per octave.
+float terrainMountainsGrad(vec3 p, int octaves, float ridgedWeight, OUT(vec3) gradient) {
+    int count = clamp(octaves, 1, 10);
+    float sum = 0.0f;
+    float total = 0.0f;
+    float amplitude = 1.0f;
+    float frequency = 1.0f;
+    gradient = vec3(0.0f);
+    for (int k = 0; k < 10; k++) {
+        if (k >= count) break;
+        vec3 g;
+        float n = simplexNoiseGrad(p * frequency, g);
+        float ridge = 1.0f - abs(n);
+        float value = (1.0f - ridgedWeight) * (0.5f + 0.5f * n) + ridgedWeight * ridge * ridge;
+        float slope = (1.0f - ridgedWeight) * 0.5f - ridgedWeight * 2.0f * ridge * sign(n);
+        sum += amplitude * value;
+        gradient += (amplitude * frequency * slope) * g;
+        total += amplitude;
+        frequency *= 2.0f;
+        amplitude *= 0.5f;
+    }
+    gradient /= total;
+    return sum / total;
+}
+
+// Height above sea level in metres at a direction, in [-oceanDepth, maxHeight], and its
+// gradient with respect to the direction as a point in R^3 (m per unit; only the tangential
+// part is meaningful on the sphere: m per radian).
+float terrainHeightGrad(vec3 unitDirection, TerrainShape shape, OUT(vec3) gradient) {
+    vec3 continentGradient;
+    float e = continentValueGrad(unitDirection, shape, continentGradient) - TERRAIN_COAST_CONTINENT;
+    float height;
+    if (e < 0.0f) {
+        float dShelf;
+        float shelf = terrainSmoothstepGrad(0.0f, TERRAIN_SHELF_WIDTH, -e, dShelf);
+        height = -shape.oceanDepth * shelf;
+        gradient = (shape.oceanDepth * dShelf) * continentGradient;  // d(-D S(-e)) = D S'(-e) de
+    } else {
+        float dLowland;
+        float dInland;
+        float lowland = terrainSmoothstepGrad(0.0f, TERRAIN_LOWLAND_WIDTH, e, dLowland);
+        float inland = terrainSmoothstepGrad(0.0f, TERRAIN_INLAND_WIDTH, e, dInland);
+        // Mountains squared: most of the land stays low, peaks are rare (mean land height
+        // about 1/4 of maxHeight instead of 1/2).
+        vec3 noiseGradient;
+        float noise = terrainMountainsGrad(unitDirection * shape.mountainFrequency + terrainXyz(shape.mountainOffset),
+                                           shape.octaves, shape.ridgedWeight, noiseGradient);
+        float mountains = noise * noise;
+        vec3 mountainGradient = (2.0f * noise) * noiseGradient;
+        float mountainShare = 1.0f - TERRAIN_LOWLAND_SHARE;
+        height = shape.maxHeight * (TERRAIN_LOWLAND_SHARE * lowland + mountainShare * inland * mountains);
+        gradient = shape.maxHeight * ((TERRAIN_LOWLAND_SHARE * dLowland + mountainShare * dInland * mountains) *
+                                          continentGradient +
+                                      (mountainShare * inland * shape.mountainFrequency) * mountainGradient);
+    }
+    return clamp(height, -shape.oceanDepth, shape.maxHeight);
+}
+
+float terrainHeight(vec3 unitDirection, TerrainShape shape) {
+    vec3 unused;
+    return terrainHeightGrad(unitDirection, shape, unused);
+}
+
+// Unit normal of the terrain surface r(d) = planetRadius + h(d) at direction d (planetRadius
+// in metres): the height gradient projected onto the tangent plane, n = normalize(d - grad_T h / r).
+vec3 terrainNormal(vec3 unitDirection, TerrainShape shape, float planetRadius) {
+    vec3 gradient;
+    float height = terrainHeightGrad(unitDirection, shape, gradient);
+    vec3 tangential = gradient - dot(gradient, unitDirection) * unitDirection;
+    return normalize(unitDirection - tangential / (planetRadius + height));
+}
+
+// Slope as rise over run (tan of the angle between the normal and the local vertical up):
+// 0 flat, 1 at 45 deg. |n x up| / (n . up) keeps precision on gentle slopes.
+float terrainSlope(vec3 normal, vec3 up) {
+    return length(cross(normal, up)) / max(dot(normal, up), 1.0e-6f);
+}
+
+// Latitude of a direction in radians, [-pi/2, pi/2] (world +Z is north).
+float terrainLatitude(vec3 unitDirection) { return asin(clamp(unitDirection.z, -1.0f, 1.0f)); }
+
+// Height of the snow line at a latitude (rad): TERRAIN_SNOW_LINE_EQUATOR_M at the equator,
+// falling linearly to sea level at TERRAIN_SNOW_FREE_LATITUDE and staying there poleward.
+float terrainSnowLine(float latitude) {
+    return TERRAIN_SNOW_LINE_EQUATOR_M * max(1.0f - abs(latitude) / TERRAIN_SNOW_FREE_LATITUDE, 0.0f);
+}
+
+// The material at a point, from its height (m above sea level), slope (rise over run,
+// terrainSlope) and latitude (rad). The first rule that holds:
+//   1. height < -TERRAIN_BEACH_DEPTH_M              -> sea floor
+//   2. slope > TERRAIN_ROCK_SLOPE                   -> rock (too steep for soil or snow)
+//   3. height > terrainSnowLine(latitude)           -> snow (high, or anywhere above sea level
+//                                                      poleward of TERRAIN_SNOW_FREE_LATITUDE)
+//   4. height < TERRAIN_BEACH_HEIGHT_M              -> sand (the beach, and shallow water)
+//   5. otherwise                                    -> grass
+int terrainMaterial(float height, float slope, float latitude) {
+    if (height < -TERRAIN_BEACH_DEPTH_M) return TERRAIN_MATERIAL_SEA_FLOOR;
+    if (slope > TERRAIN_ROCK_SLOPE) return TERRAIN_MATERIAL_ROCK;
+    if (height > terrainSnowLine(latitude)) return TERRAIN_MATERIAL_SNOW;
+    if (height < TERRAIN_BEACH_HEIGHT_M) return TERRAIN_MATERIAL_SAND;
+    return TERRAIN_MATERIAL_GRASS;
+}
+
+// How fully rule `material` of terrainMaterial holds, in [0, 1]: a smoothstep across its
+// threshold, 0.5 exactly on it, 0 or 1 further than the blend half width from it.
+float terrainMaterialCoverage(int material, float height, float slope, float latitude) {
+    if (material == TERRAIN_MATERIAL_SEA_FLOOR)
+        return 1.0f - smoothstep(-TERRAIN_BEACH_DEPTH_M - TERRAIN_BLEND_HEIGHT_M,
+                                 -TERRAIN_BEACH_DEPTH_M + TERRAIN_BLEND_HEIGHT_M, height);
+    if (material == TERRAIN_MATERIAL_ROCK)
+        return smoothstep(TERRAIN_ROCK_SLOPE - TERRAIN_BLEND_SLOPE, TERRAIN_ROCK_SLOPE + TERRAIN_BLEND_SLOPE, slope);
+    if (material == TERRAIN_MATERIAL_SNOW) {
+        float snowLine = terrainSnowLine(latitude);
+        return smoothstep(snowLine - TERRAIN_BLEND_SNOW_M, snowLine + TERRAIN_BLEND_SNOW_M, height);
+    }
+    if (material == TERRAIN_MATERIAL_SAND)
+        return 1.0f - smoothstep(TERRAIN_BEACH_HEIGHT_M - TERRAIN_BLEND_HEIGHT_M,
+                                 TERRAIN_BEACH_HEIGHT_M + TERRAIN_BLEND_HEIGHT_M, height);
+    return 1.0f;  // grass: whatever the rules above leave
+}
+
+// Blend weight of `material` at a point: coverage of its rule times what the earlier rules
+// leave, w_i = c_i * prod_{j < i} (1 - c_j). The weights of all materials sum to 1, vary
+// smoothly, and equal the hard rule (1 for terrainMaterial's id, 0 for the others) wherever
+// every threshold is further than its blend half width.
+float terrainMaterialWeight(int material, float height, float slope, float latitude) {
+    float remaining = 1.0f;
+    for (int id = 0; id < TERRAIN_MATERIAL_COUNT; id++) {
+        float coverage = terrainMaterialCoverage(id, height, slope, latitude);
+        if (id == material) return remaining * coverage;
+        remaining *= 1.0f - coverage;
+    }
+    return 0.0f;
+}

@@ -1,0 +1,133 @@
+// `planet bake`: the continents cube map (noise/continents.h) baked on the CPU into its
+// cache, with the time taken and the sea fraction achieved, and optionally an
+// equirectangular preview PNG. A valid cache entry is reused unless --force; a damaged
+// one is reported and rebaked. Progress goes to stderr once the bake has run a second.
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "app/commands.h"
+#include "app/session.h"
+#include "noise/continents.h"
+#include "render/image_io.h"
+#include "scene/scene.h"
+#include "util/log.h"
+
+namespace planet {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+constexpr int kPreviewWidth = 1024, kPreviewHeight = 512;
+
+// Elevation in [-1, 1] to a map colour: sea from light to deep blue, land from green
+// over brown to pale rock.
+glm::dvec3 elevationColour(double e) {
+    const glm::dvec3 shallow(70, 130, 200), deep(10, 30, 90);
+    const glm::dvec3 lowland(60, 140, 60), hills(140, 110, 70), peaks(225, 215, 200);
+    if (e < 0.0) return glm::mix(shallow, deep, std::min(1.0, -e));
+    if (e < 0.5) return glm::mix(lowland, hills, e / 0.5);
+    return glm::mix(hills, peaks, std::min(1.0, (e - 0.5) / 0.5));
+}
+
+// Equirectangular (longitude -180..180 left to right, latitude 90..-90 top to bottom),
+// directions as directionFromLatLon (z north, longitude 0 on +x).
+ImageRGBA8 previewImage(const noise::CubeMap& map) {
+    ImageRGBA8 image;
+    image.width = kPreviewWidth;
+    image.height = kPreviewHeight;
+    image.pixels.resize(static_cast<std::size_t>(kPreviewWidth) * kPreviewHeight * 4);
+    for (int j = 0; j < kPreviewHeight; ++j) {
+        const double lat = 90.0 - 180.0 * (j + 0.5) / kPreviewHeight;
+        for (int i = 0; i < kPreviewWidth; ++i) {
+            const double lon = -180.0 + 360.0 * (i + 0.5) / kPreviewWidth;
+            const glm::dvec3 c = elevationColour(noise::sampleContinents(map, directionFromLatLon(lat, lon)));
+            std::uint8_t* p = &image.pixels[(static_cast<std::size_t>(j) * kPreviewWidth + i) * 4];
+            for (int k = 0; k < 3; ++k) p[k] = static_cast<std::uint8_t>(std::clamp(std::lround(c[k]), 0L, 255L));
+            p[3] = 255;
+        }
+    }
+    return image;
+}
+
+std::string seconds(double s) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.3f s", s);
+    return text;
+}
+
+}  // namespace
+
+int runBake(const BakeOptions& options) {
+    if (options.size < 16 || options.size > 4096)
+        throw std::invalid_argument("--size " + std::to_string(options.size) + " is outside [16, 4096]");
+    if (!(options.seaFraction >= 0.0 && options.seaFraction <= 1.0))
+        throw std::invalid_argument("--sea-fraction " + std::to_string(options.seaFraction) + " is outside [0, 1]");
+    if (!options.preview.empty()) checkOutputsWritable({options.preview});
+
+    noise::ContinentParams params;
+    params.seed = options.seed;
+    params.seaFraction = options.seaFraction;
+    const std::string key = noise::continentsCacheKey(params, options.size);
+    const fs::path dir = (options.cache.empty() ? noise::defaultContinentsCacheRoot() : fs::path(options.cache)) / key;
+    const std::string where = fs::absolute(dir).lexically_normal().string();
+    std::cout << "planet bake: continents cube map, 6 faces of " << options.size << "x" << options.size << ", seed "
+              << params.seed << ", frequency " << params.frequency << ", " << params.octaves
+              << " octaves, sea fraction " << params.seaFraction << "\n";
+
+    std::optional<noise::CubeMap> map;
+    if (!options.force) {
+        std::string reason;
+        map = noise::loadContinents(dir, key, options.size, &reason);
+        if (map)
+            std::cout << "cache hit: valid map in " << where << " (key " << key << ")\n";
+        else if (fs::exists(dir))
+            std::cout << "cache at " << where << " is not usable, rebaking: " << reason << "\n";
+        else
+            std::cout << "no cached map for key " << key << ", baking\n";
+    } else {
+        std::cout << "--force: rebaking the map for key " << key << "\n";
+    }
+    std::cout.flush();
+
+    if (!map) {
+        const auto start = std::chrono::steady_clock::now();
+        int reported = 0;  // last percentage reported, in steps of 10
+        const noise::BakeProgress progress = [&](double fraction) {
+            const int percent = static_cast<int>(100.0 * fraction);
+            if (percent < reported + 10 || std::chrono::steady_clock::now() - start < std::chrono::seconds(1)) return;
+            reported = percent / 10 * 10;
+            logInfo("bake: " + std::to_string(reported) + "%");
+        };
+        map = noise::bakeContinents(params, options.size, progress);
+        const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        std::cout << "baked in " << seconds(elapsed) << " ("
+                  << static_cast<double>(map->texels.size() * sizeof(float)) / (1024.0 * 1024.0) << " MiB as R32F)\n";
+        noise::saveContinents(*map, params, dir, key);
+        std::cout << "wrote " << where << "\n";
+    }
+
+    char fraction[96];
+    std::snprintf(fraction, sizeof fraction, "sea fraction: %.5f achieved (by solid angle), %.5f requested\n",
+                  noise::seaFractionOf(*map), params.seaFraction);
+    std::cout << fraction;
+
+    if (!options.preview.empty()) {
+        writePng(previewImage(*map), options.preview);
+        std::cout << "wrote preview " << fs::absolute(options.preview).lexically_normal().string() << " ("
+                  << kPreviewWidth << "x" << kPreviewHeight << ", equirectangular)\n";
+    }
+    return 0;
+}
+
+}  // namespace planet

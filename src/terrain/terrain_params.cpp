@@ -1,0 +1,32 @@
+// The [terrain] rows of the scene parameter table: unit, inclusive range and
+// help text for every field of TerrainParams (terrain_params.h, whose comments
+// the ranges here repeat).
+#include "terrain/terrain_params_table.h"
+
+namespace planet {
+
+void addTerrainParams(std::vector<ParamSpec>& table, TerrainOf terrainOf) {
+    // Each row reaches its field as terrainOf(scene).field.
+    auto add = [&](const char* key, const char* unit, double lo, double hi, const char* help, auto member) {
+        table.push_back(ParamSpec{"terrain", key, unit, lo, hi, help,
+                                  [terrainOf, member](Scene& s) { return ParamRef{&(terrainOf(s).*member)}; }});
+    };
+    add("max_height_m", "m", 0.0, 50000.0, "Highest possible terrain above sea level (mountain peaks reach it).",
+        &TerrainParams::max_height_m);
+    add("ocean_depth_m", "m", 0.0, 20000.0, "Depth of the ocean floor below sea level, away from the coasts.",
+        &TerrainParams::ocean_depth_m);
+    add("noise_octaves", "", 1.0, 10.0, "Octaves of the continent and mountain noise; each adds detail at half the size.",
+        &TerrainParams::noise_octaves);
+    add("mountain_frequency", "1/radius", 0.1, 10000.0,
+        "Frequency of the largest mountain features, per planet radius.",
+        &TerrainParams::mountain_frequency);
+    add("ridged_weight", "", 0.0, 1.0, "Mountain shape: 0 rounded fBm hills, 1 sharp ridged crests.",
+        &TerrainParams::ridged_weight);
+    add("continent_frequency", "1/radius", 0.01, 100.0,
+        "Frequency of the continents, per planet radius: larger gives more, smaller land masses.",
+        &TerrainParams::continent_frequency);
+    add("seed", "", 0.0, 1e6, "Noise seed: another value gives another planet with the same statistics.",
+        &TerrainParams::seed);
+}
+
+}  // namespace planet

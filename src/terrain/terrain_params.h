@@ -1,0 +1,26 @@
+// Terrain parameters as a user sets them (preset [terrain] section).
+//
+// The terrain is a height field over the sphere, in metres above sea level
+// (planet.radius_km), evaluated by shaders/terrain/height.glsl: a low-frequency
+// continent fBm decides land and sea and the depth of the oceans; ridged fBm
+// mountains rise inland, weighted by the distance from the coast (Michelic §3:
+// layered 3D simplex noise sampled at the point's direction). Frequencies are
+// per planet radius: the noise is sampled at unitDirection * frequency, so a
+// frequency f has features about 2 pi R / f across whatever the radius.
+// makeTerrainShape (terrain/height.h) turns these into the float TerrainShape
+// the shader and its C++ twin take.
+#pragma once
+
+namespace planet {
+
+struct TerrainParams {
+    double max_height_m = 8000.0;       // highest possible terrain above sea level, m, [0, 50000]
+    double ocean_depth_m = 4000.0;      // depth of the abyssal plains below sea level, m, [0, 20000]
+    int noise_octaves = 6;              // fBm octaves of continents and mountains, [1, 10]
+    double mountain_frequency = 40.0;   // lowest mountain octave, per planet radius, [0.1, 10000]
+    double ridged_weight = 0.6;         // mountains: 0 rounded fBm hills, 1 sharp ridged crests, [0, 1]
+    double continent_frequency = 1.5;   // lowest continent octave, per planet radius, [0.01, 100]
+    int seed = 1;                       // picks the noise domain offset: another planet, [0, 1000000]
+};
+
+}  // namespace planet
