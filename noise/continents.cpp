@@ -31,6 +31,7 @@
 #include <utility>
 
 #include "noise/noise.h"
+#include "util/cache_entry.h"
 #include "util/file_util.h"
 
 namespace planet::noise {
@@ -38,56 +39,6 @@ namespace planet::noise {
 namespace fs = std::filesystem;
 
 namespace {
-
-// ------------------------------------------------------------------ hashing
-
-// 64-bit FNV-1a, as the atmosphere table cache's key (src/atmosphere/table_cache.cpp);
-// numbers hashed as little-endian 64-bit words so keys are portable.
-class Fnv1a {
-public:
-    void bytes(const void* data, std::size_t size) {
-        const auto* p = static_cast<const unsigned char*>(data);
-        for (std::size_t i = 0; i < size; ++i) {
-            hash_ ^= p[i];
-            hash_ *= 0x100000001b3ull;
-        }
-    }
-    void number(double v) {
-        std::uint64_t bits = 0;
-        std::memcpy(&bits, &v, sizeof bits);
-        word(bits);
-    }
-    void integer(std::int64_t v) { word(static_cast<std::uint64_t>(v)); }
-    std::uint64_t value() const { return hash_; }
-
-private:
-    void word(std::uint64_t w) {
-        unsigned char b[8];
-        for (int i = 0; i < 8; ++i) b[i] = static_cast<unsigned char>(w >> (8 * i));
-        bytes(b, sizeof b);
-    }
-    std::uint64_t hash_ = 0xcbf29ce484222325ull;
-};
-
-std::string hex16(std::uint64_t v) {
-    static const char digits[] = "0123456789abcdef";
-    std::string s(16, '0');
-    for (int i = 15; i >= 0; --i, v >>= 4) s[static_cast<std::size_t>(i)] = digits[v & 15];
-    return s;
-}
-
-std::string checksum(const std::string& bytes) {
-    Fnv1a h;
-    h.bytes(bytes.data(), bytes.size());
-    return hex16(h.value());
-}
-
-std::string quote(const fs::path& path) {
-    std::string s = "'";
-    s += path.string();
-    s += '\'';
-    return s;
-}
 
 // SplitMix64 (Steele, Lea, Flood 2014): a well-mixed 64-bit value per call.
 std::uint64_t splitMix64(std::uint64_t& state) {
@@ -179,18 +130,6 @@ std::string decodeExr(const std::string& bytes, const std::string& key, CubeMap&
     } catch (const std::exception& e) {
         return std::string("OpenEXR cannot read it: ") + e.what();
     }
-}
-
-std::map<std::string, std::string> parseKeyFile(const std::string& text) {
-    std::map<std::string, std::string> fields;
-    std::istringstream in(text);
-    std::string line;
-    while (std::getline(in, line)) {
-        if (line.empty() || line[0] == '#') continue;
-        const std::size_t space = line.find(' ');
-        if (space != std::string::npos) fields[line.substr(0, space)] = line.substr(space + 1);
-    }
-    return fields;
 }
 
 }  // namespace

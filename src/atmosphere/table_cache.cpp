@@ -1,5 +1,7 @@
 #include "atmosphere/table_cache.h"
 
+#include "util/cache_entry.h"
+
 #include <ImfChannelList.h>
 #include <ImfFrameBuffer.h>
 #include <ImfHeader.h>
@@ -28,67 +30,19 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// ------------------------------------------------------------------ hashing
-
-// 64-bit FNV-1a (Fowler, Noll, Vo): offset basis and prime from the reference.
-class Fnv1a {
-public:
-    void bytes(const void* data, std::size_t size) {
-        const auto* p = static_cast<const unsigned char*>(data);
-        for (std::size_t i = 0; i < size; ++i) {
-            hash_ ^= p[i];
-            hash_ *= 0x100000001b3ull;
-        }
-    }
-    void number(double v) {
-        std::uint64_t bits = 0;
-        std::memcpy(&bits, &v, sizeof bits);
-        word(bits);
-    }
-    void integer(std::int64_t v) { word(static_cast<std::uint64_t>(v)); }
-    void spectrum(const glm::dvec3& s) {
-        for (int c = 0; c < 3; ++c) number(s[c]);
-    }
-    void profile(const DensityProfile& p) {
-        for (const DensityProfileLayer& l : p.layers) {
-            number(l.width);
-            number(l.exp_term);
-            number(l.exp_scale);
-            number(l.linear_term);
-            number(l.constant_term);
-        }
-    }
-    std::uint64_t value() const { return hash_; }
-
-private:
-    // Little-endian bytes whatever the host, so keys are portable.
-    void word(std::uint64_t w) {
-        unsigned char b[8];
-        for (int i = 0; i < 8; ++i) b[i] = static_cast<unsigned char>(w >> (8 * i));
-        bytes(b, sizeof b);
-    }
-    std::uint64_t hash_ = 0xcbf29ce484222325ull;
-};
-
-std::string hex16(std::uint64_t v) {
-    static const char digits[] = "0123456789abcdef";
-    std::string s(16, '0');
-    for (int i = 15; i >= 0; --i, v >>= 4) s[static_cast<std::size_t>(i)] = digits[v & 15];
-    return s;
+// The key hashes every parameter field by field (not the struct's bytes: padding).
+void hashSpectrum(Fnv1a& h, const glm::dvec3& s) {
+    for (int c = 0; c < 3; ++c) h.number(s[c]);
 }
 
-std::string fileChecksum(const std::string& bytes) {
-    Fnv1a h;
-    h.bytes(bytes.data(), bytes.size());
-    return hex16(h.value());
-}
-
-// 'path', built by appending (GCC 12 warns falsely about "'" + std::string&&, -Wrestrict).
-std::string quote(const fs::path& path) {
-    std::string s = "'";
-    s += path.string();
-    s += '\'';
-    return s;
+void hashProfile(Fnv1a& h, const DensityProfile& p) {
+    for (const DensityProfileLayer& l : p.layers) {
+        h.number(l.width);
+        h.number(l.exp_term);
+        h.number(l.exp_scale);
+        h.number(l.linear_term);
+        h.number(l.constant_term);
+    }
 }
 
 std::string sizesText(const TableSizes& s) {
@@ -186,20 +140,6 @@ std::string decodeExr(const std::string& bytes, const TableImage& image, const s
     }
 }
 
-// key.txt: "name value" lines; '#' starts a comment line.
-std::map<std::string, std::string> parseKeyFile(const std::string& text) {
-    std::map<std::string, std::string> fields;
-    std::istringstream in(text);
-    std::string line;
-    while (std::getline(in, line)) {
-        if (line.empty() || line[0] == '#') continue;
-        const std::size_t space = line.find(' ');
-        if (space == std::string::npos) continue;
-        fields[line.substr(0, space)] = line.substr(space + 1);
-    }
-    return fields;
-}
-
 }  // namespace
 
 std::string atmosphereModelSource(const fs::path& shaderRoot) {
@@ -222,19 +162,19 @@ std::string tableCacheKey(const AtmosphereParameters& a, const TableSizes& s, in
     Fnv1a h;
     h.integer(kModelVersion);
     h.bytes(modelSource.data(), modelSource.size());
-    h.spectrum(a.solar_irradiance);
+    hashSpectrum(h, a.solar_irradiance);
     h.number(a.sun_angular_radius);
     h.number(a.bottom_radius);
     h.number(a.top_radius);
-    h.profile(a.rayleigh_density);
-    h.spectrum(a.rayleigh_scattering);
-    h.profile(a.mie_density);
-    h.spectrum(a.mie_scattering);
-    h.spectrum(a.mie_extinction);
+    hashProfile(h, a.rayleigh_density);
+    hashSpectrum(h, a.rayleigh_scattering);
+    hashProfile(h, a.mie_density);
+    hashSpectrum(h, a.mie_scattering);
+    hashSpectrum(h, a.mie_extinction);
     h.number(a.mie_phase_function_g);
-    h.profile(a.absorption_density);
-    h.spectrum(a.absorption_extinction);
-    h.spectrum(a.ground_albedo);
+    hashProfile(h, a.absorption_density);
+    hashSpectrum(h, a.absorption_extinction);
+    hashSpectrum(h, a.ground_albedo);
     h.number(a.mu_s_min);
     // elek_rayleigh_phase is left out: it applies at render time and does not change the tables.
     for (int v : {s.transmittance_width, s.transmittance_height, s.scattering_r, s.scattering_mu, s.scattering_mu_s,
@@ -275,7 +215,7 @@ void saveTables(const AtmosphereTables& tables, const fs::path& dir, const std::
                 throw FileError("could not encode OpenEXR " + quote(target / image.file) + ": " + e.what());
             }
             writeFileAtomic(tmp / image.file, bytes);
-            keyFile << image.file << " " << fileChecksum(bytes) << "\n";
+            keyFile << image.file << " " << checksum(bytes) << "\n";
         }
         writeFileAtomic(tmp / "key.txt", keyFile.str());
     } catch (...) {
@@ -346,8 +286,8 @@ std::optional<AtmosphereTables> loadTables(const fs::path& dir, const std::strin
         }
         const std::string expected = field(images[i].file);
         if (expected.empty()) return reject(quote(keyPath) + " has no checksum for " + images[i].file);
-        if (fileChecksum(bytes) != expected)
-            return reject(quote(path) + " is damaged (checksum " + fileChecksum(bytes) + ", expected " +
+        if (checksum(bytes) != expected)
+            return reject(quote(path) + " is damaged (checksum " + checksum(bytes) + ", expected " +
                           expected + ")");
         const std::string why = decodeExr(bytes, images[i], expectedKey, *texels[i]);
         if (!why.empty()) return reject(quote(path) + ": " + why);
