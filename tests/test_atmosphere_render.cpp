@@ -90,6 +90,26 @@ TEST_F(AtmosphereRenderTest, NoNanOrInfForAnyCameraAltitudeOrSun) {
     }
 }
 
+TEST_F(AtmosphereRenderTest, PlanetRadiusChangeRendersFiniteFramesWhileTablesCatchUp) {
+    // The frame uses the new radius at once, the tables the old one until the
+    // rebuild is done: a camera can be below the old ground for a while.
+    Session s = session("ground");
+    render(s);
+    const double radius = s.scene.planet.radius_km;
+    for (double r : {radius - 5.0, radius + 5.0}) {
+        s.scene.planet.radius_km = r;
+        s.scene.atmosphere.top_radius_km = r + 60.0;
+        applyView(s.view, s);  // the camera follows the new ground
+        for (int frame = 0; frame < 3; ++frame) ASSERT_TRUE(test::allFinite(render(s, {32, 18}))) << r;
+        while (renderer->atmosphere().rebuilding()) render(s, {8, 8});
+        EXPECT_TRUE(test::allFinite(render(s, {32, 18})));
+    }
+    s.scene.planet.radius_km = radius;  // leave the shared renderer as it was
+    s.scene.atmosphere.top_radius_km = radius + 60.0;
+    render(s, {8, 8});
+    while (renderer->atmosphere().rebuilding()) render(s, {8, 8});
+}
+
 TEST_F(AtmosphereRenderTest, NightSideIsBlack) {
     // Well below the lowest sun the tables cover (-12 deg), nothing is lit: not
     // the sky, not the ground, not the limb seen from orbit.
@@ -117,8 +137,10 @@ TEST_F(AtmosphereRenderTest, ChangingTheAtmosphereRebuildsWithoutShowingHalfBuil
     int frames = 1;
     while (renderer->atmosphere().rebuilding() && frames < 1000) {
         // Until the rebuild is done the frame uses the complete old tables.
-        EXPECT_EQ(atmosphere::readBack(renderer->atmosphere().tables()).transmittance.texels,
-                  before.transmittance.texels);
+        const auto inUse = atmosphere::readBack(renderer->atmosphere().tables());
+        EXPECT_EQ(inUse.transmittance.texels, before.transmittance.texels);
+        EXPECT_EQ(inUse.scattering.texels, before.scattering.texels);
+        EXPECT_EQ(inUse.irradiance.texels, before.irradiance.texels);
         render(s, {16, 9});
         ++frames;
     }
