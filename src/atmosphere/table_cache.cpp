@@ -223,25 +223,7 @@ void saveTables(const AtmosphereTables& tables, const fs::path& dir, const std::
         throw;
     }
 
-    // Swap the finished folder into place; an old entry is moved aside first
-    // (rename() cannot replace a non-empty folder) and removed afterwards.
-    const fs::path old = target.string() + ".old" + pid;
-    fs::remove_all(old, ec);
-    if (fs::exists(target)) {
-        fs::rename(target, old, ec);
-        if (ec) {
-            fs::remove_all(tmp, ec);
-            throw FileError("cannot replace " + quote(target) + ": " + ec.message());
-        }
-    }
-    fs::rename(tmp, target, ec);
-    if (ec) {
-        const std::string why = ec.message();
-        fs::remove_all(tmp, ec);
-        // Another process may have put an entry there in between: that one is as good.
-        if (!fs::exists(target / "key.txt")) throw FileError("cannot move tables to " + quote(target) + ": " + why);
-    }
-    fs::remove_all(old, ec);
+    replaceFolder(tmp, target, "tables");
 }
 
 std::optional<AtmosphereTables> loadTables(const fs::path& dir, const std::string& expectedKey,

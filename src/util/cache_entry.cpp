@@ -1,6 +1,9 @@
 #include "util/cache_entry.h"
 
 #include <sstream>
+#include <unistd.h>
+
+#include "util/file_util.h"
 
 namespace planet {
 
@@ -35,6 +38,27 @@ std::map<std::string, std::string> parseKeyFile(const std::string& text) {
         if (space != std::string::npos) fields[line.substr(0, space)] = line.substr(space + 1);
     }
     return fields;
+}
+
+void replaceFolder(const std::filesystem::path& tmp, const std::filesystem::path& target, const std::string& what) {
+    namespace fs = std::filesystem;
+    std::error_code ec;
+    const fs::path old = target.string() + ".old" + std::to_string(::getpid());
+    fs::remove_all(old, ec);
+    if (fs::exists(target)) {
+        fs::rename(target, old, ec);
+        if (ec) {
+            fs::remove_all(tmp, ec);
+            throw FileError("cannot replace " + quote(target) + ": " + ec.message());
+        }
+    }
+    fs::rename(tmp, target, ec);
+    if (ec) {
+        const std::string why = ec.message();
+        fs::remove_all(tmp, ec);
+        if (!fs::exists(target / "key.txt")) throw FileError("cannot move " + what + " to " + quote(target) + ": " + why);
+    }
+    fs::remove_all(old, ec);
 }
 
 }  // namespace planet

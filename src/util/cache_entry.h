@@ -52,4 +52,10 @@ std::string quote(const std::filesystem::path& path);
 // The "name value" lines of a key.txt.
 std::map<std::string, std::string> parseKeyFile(const std::string& text);
 
+// Moves a finished entry folder `tmp` to `target`, replacing an old entry
+// (moved aside first: rename() cannot replace a non-empty folder, then
+// removed). If another process put an entry there in between, that one is
+// kept (it is as good). Throws FileError naming `what`; `tmp` is removed on failure.
+void replaceFolder(const std::filesystem::path& tmp, const std::filesystem::path& target, const std::string& what);
+
 }  // namespace planet
