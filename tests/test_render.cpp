@@ -57,10 +57,12 @@ TEST_F(RenderTest, OrbitViewIsLitBelowAndSpaceAbove) {
 }
 
 TEST_F(RenderTest, GroundDepthMatchesCpuRaySphereDistance) {
-    // From 2 m above the ground, the G-buffer depth of a pixel below the
+    // From 2 m above flat terrain, the G-buffer depth of a pixel below the
     // horizon must decode to the distance the double-precision ray-sphere
-    // intersection gives along that pixel's ray (GPU vs CPU reference).
-    const Session s = session("earth", "ground");
+    // intersection gives along that pixel's ray (GPU vs CPU reference): the
+    // projected grid, its tessellation and the depth setup together.
+    Session s = session("earth", "ground");
+    s.scene.terrain.max_height_m = s.scene.terrain.ocean_depth_m = 0.0;  // flat: the terrain is the sphere
     renderer->render(s.scene, s.camera, kSize);
     const int x = kSize.x / 2, y = 2;  // near the bottom edge (GL row 2), looking down at the ground
     float depth = 0.0f;

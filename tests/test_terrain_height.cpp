@@ -311,10 +311,9 @@ TEST(TerrainMaterial, TheDefaultPlanetHasEveryMaterial) {
 // ---------------------------------------------------------------- parameters
 
 TEST(TerrainParams, TableHasARowPerFieldWithTheDefaultsInRange) {
-    static TerrainParams terrainOfTest;
     std::vector<ParamSpec> table;
-    addTerrainParams(table, [](Scene&) -> TerrainParams& { return terrainOfTest; });
-    ASSERT_EQ(table.size(), 7u);
+    addTerrainParams(table);
+    ASSERT_EQ(table.size(), 8u);
     Scene scene;
     for (const ParamSpec& row : table) {
         EXPECT_EQ(row.section, "terrain");
@@ -327,7 +326,7 @@ TEST(TerrainParams, TableHasARowPerFieldWithTheDefaultsInRange) {
         EXPECT_LE(value, row.max) << row.key;
     }
     EXPECT_EQ(table.front().key, "max_height_m");
-    EXPECT_EQ(std::get<int*>(table.back().field(scene)), &terrainOfTest.seed);
+    EXPECT_EQ(std::get<int*>(table.back().field(scene)), &scene.terrain.grid_size);
 }
 
 // ---------------------------------------------------------------- GPU vs CPU

@@ -54,7 +54,7 @@ void Renderer::render(const Scene& scene, const Camera& camera, glm::ivec2 size,
         const float farDepth = 0.0f;  // reversed-Z: 0 is infinitely far
         glClearNamedFramebufferfv(fb, GL_DEPTH, 0, &farDepth);
         glBindFramebuffer(GL_FRAMEBUFFER, fb);
-        terrain_.draw(scene.planet);
+        terrain_.draw(scene, camera);
     }
     {
         gl::DebugGroup group("atmosphere");  // lighting + aerial perspective + sky, over the G-buffer

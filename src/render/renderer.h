@@ -3,7 +3,7 @@
 //
 //   pass        reads                         writes
 //   atmosphere tables  scene.atmosphere       the tables, only while they are rebuilt (a chunk a frame)
-//   terrain     frame uniforms, planet        G-buffer (normal, albedo, material, depth)
+//   terrain     frame uniforms, terrain, grid G-buffer (normal, albedo, material, depth)
 //   atmosphere  G-buffer, atmosphere tables   HDR radiance: surface light, aerial perspective, sky, sun
 //                                             (render/lighting.frag, a post-process over the G-buffer)
 //   tonemap     HDR radiance, exposure        LDR (display-ready sRGB)
@@ -27,7 +27,7 @@
 #include "render/profiler.h"
 #include "render/render_targets.h"
 #include "scene/scene.h"
-#include "terrain/placeholder_sphere.h"
+#include "terrain/terrain_pass.h"
 
 namespace planet {
 
@@ -57,7 +57,7 @@ private:
 
     gl::ShaderSources sources_;
     atmosphere::Atmosphere atmosphere_;
-    PlaceholderSphere terrain_;
+    TerrainPass terrain_;
     FullscreenPass lighting4D_;    // the atmosphere pass with Bruneton's 4D table
     FullscreenPass lightingElek_;  // ... with Elek's 3D table (ELEK_TABLE 1)
     FullscreenPass tonemap_;

@@ -14,12 +14,13 @@
 #include <glm/glm.hpp>
 
 #include "atmosphere/atmosphere_params.h"
+#include "terrain/terrain_params.h"
 
 namespace planet {
 
 struct PlanetParams {
     double radius_km = 6360.0;                     // km, [1, 100000]
-    glm::dvec3 albedo = {0.09, 0.12, 0.06};        // placeholder ground reflectance, [0, 1]
+    glm::dvec3 albedo = {0.09, 0.12, 0.06};        // lowland (grass) albedo, linear RGB, [0, 1]
 };
 
 struct SunParams {
@@ -40,6 +41,7 @@ struct RenderParams {
 struct Scene {
     PlanetParams planet;
     AtmosphereParams atmosphere;  // bottom radius is planet.radius_km
+    TerrainParams terrain;
     SunParams sun;
     RenderParams render;
 

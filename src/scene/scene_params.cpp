@@ -7,6 +7,7 @@
 #include <variant>
 
 #include "atmosphere/atmosphere_params_table.h"
+#include "terrain/terrain_params_table.h"
 #include "scene/toml_error.h"
 
 namespace planet {
@@ -29,9 +30,10 @@ std::vector<ParamSpec> buildTable() {
     };
     add("planet", "radius_km", "km", 1.0, 1e5, "Radius of the solid planet (sea level).",
         [](Scene& s) { return ParamRef{&s.planet.radius_km}; });
-    add("planet", "albedo", "", 0.0, 1.0, "Ground reflectance of the placeholder sphere, linear RGB.",
+    add("planet", "albedo", "", 0.0, 1.0, "Albedo of the lowlands (grass on Earth, dust on Mars), linear RGB; sand, rock and snow have their own.",
         [](Scene& s) { return ParamRef{&s.planet.albedo}; });
     addAtmosphereParams(t);
+    addTerrainParams(t);
     add("sun", "latitude_deg", "deg", -90.0, 90.0, "Latitude of the subsolar point.",
         [](Scene& s) { return ParamRef{&s.sun.latitude_deg}; });
     add("sun", "longitude_deg", "deg", -180.0, 180.0, "Longitude of the subsolar point.",

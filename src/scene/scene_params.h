@@ -33,7 +33,7 @@ struct ParamSpec {
 };
 
 // Every parameter of a Scene, grouped by section in a stable order
-// (planet, atmosphere, sun, render).
+// (planet, atmosphere, terrain, sun, render).
 const std::vector<ParamSpec>& sceneParams();
 
 // One reason a scene is not valid, blamed on one parameter.

@@ -5,11 +5,10 @@
 
 namespace planet {
 
-void addTerrainParams(std::vector<ParamSpec>& table, TerrainOf terrainOf) {
-    // Each row reaches its field as terrainOf(scene).field.
+void addTerrainParams(std::vector<ParamSpec>& table) {
     auto add = [&](const char* key, const char* unit, double lo, double hi, const char* help, auto member) {
         table.push_back(ParamSpec{"terrain", key, unit, lo, hi, help,
-                                  [terrainOf, member](Scene& s) { return ParamRef{&(terrainOf(s).*member)}; }});
+                                  [member](Scene& s) { return ParamRef{&(s.terrain.*member)}; }});
     };
     add("max_height_m", "m", 0.0, 50000.0, "Highest possible terrain above sea level (mountain peaks reach it).",
         &TerrainParams::max_height_m);
@@ -27,6 +26,8 @@ void addTerrainParams(std::vector<ParamSpec>& table, TerrainOf terrainOf) {
         &TerrainParams::continent_frequency);
     add("seed", "", 0.0, 1e6, "Noise seed: another value gives another planet with the same statistics.",
         &TerrainParams::seed);
+    add("grid_size", "", 8.0, 512.0, "Vertices per side of the projected grid (Michelic §3); tessellation refines it.",
+        &TerrainParams::grid_size);
 }
 
 }  // namespace planet

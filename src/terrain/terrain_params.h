@@ -21,6 +21,7 @@ struct TerrainParams {
     double ridged_weight = 0.6;         // mountains: 0 rounded fBm hills, 1 sharp ridged crests, [0, 1]
     double continent_frequency = 1.5;   // lowest continent octave, per planet radius, [0.01, 100]
     int seed = 1;                       // picks the noise domain offset: another planet, [0, 1000000]
+    int grid_size = 100;                // projected grid, N x N vertices (Michelic §3), [8, 512]
 };
 
 }  // namespace planet

@@ -16,11 +16,8 @@
 
 namespace planet {
 
-// Where a Scene keeps its terrain parameters, e.g. [](Scene& s) -> TerrainParams& { return s.terrain; }.
-using TerrainOf = TerrainParams& (*)(Scene&);
-
-// Appends one row per field of TerrainParams, section "terrain", in the
-// struct's order.
-void addTerrainParams(std::vector<ParamSpec>& table, TerrainOf terrainOf);
+// Appends one row per field of TerrainParams (Scene::terrain), section
+// "terrain", in the struct's order.
+void addTerrainParams(std::vector<ParamSpec>& table);
 
 }  // namespace planet

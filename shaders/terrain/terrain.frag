@@ -1,0 +1,45 @@
+// Terrain into the G-buffer: per-pixel normal from the height field's analytic
+// gradient (independent of tessellation), material by height, slope and
+// latitude (terrain/height.glsl), albedo per material.
+#include "common/constants.glsl"
+#include "noise/simplex.glsl"
+#include "terrain/height.glsl"
+
+in vec3 teDirection;
+in float teHeight;
+
+layout(std140, binding = 2) uniform TerrainBlock {
+    TerrainShape terrainShape;
+};
+uniform float uPlanetRadiusF;  // m
+uniform vec3 uLowlandAlbedo;   // preset planet.albedo: the grass material's albedo
+
+layout(location = 0) out vec4 outNormal;
+layout(location = 1) out vec4 outAlbedo;
+layout(location = 2) out vec4 outMaterial;
+
+// Linear albedo per material id (sea floor, rock, snow, sand; grass comes from the preset).
+const vec3 MATERIAL_ALBEDO[TERRAIN_MATERIAL_COUNT] =
+    vec3[](vec3(0.10, 0.09, 0.07), vec3(0.13, 0.11, 0.09), vec3(0.80, 0.82, 0.86), vec3(0.36, 0.31, 0.21),
+           vec3(0.0));  // grass: uLowlandAlbedo
+const vec3 WATER_ALBEDO = vec3(0.02, 0.035, 0.05);
+
+void main() {
+    vec3 up = normalize(teDirection);
+    if (teHeight < 0.0) {  // the sea surface stand-in
+        outNormal = vec4(up, 0.0);
+        outAlbedo = vec4(WATER_ALBEDO, 1.0);
+        outMaterial = vec4(float(MATERIAL_GROUND) / 255.0, 0.1, 0.0, 0.0);
+        return;
+    }
+    vec3 normal = terrainNormal(up, terrainShape, uPlanetRadiusF);
+    float slope = terrainSlope(normal, up);
+    float latitude = terrainLatitude(up);
+    vec3 albedo = vec3(0.0);
+    for (int m = 0; m < TERRAIN_MATERIAL_COUNT; ++m)
+        albedo += terrainMaterialWeight(m, teHeight, slope, latitude) *
+                  (m == TERRAIN_MATERIAL_GRASS ? uLowlandAlbedo : MATERIAL_ALBEDO[m]);
+    outNormal = vec4(normal, 0.0);
+    outAlbedo = vec4(albedo, 1.0);
+    outMaterial = vec4(float(MATERIAL_GROUND) / 255.0, 1.0, 0.0, 0.0);
+}

@@ -1,0 +1,29 @@
+// Terrain tessellation evaluation: grid coordinate -> direction on the sphere
+// (grid.glsl, Michelic Eq. 1-4) -> height from the shared height function ->
+// camera-relative position formed in double, then rotated and projected.
+// Below sea level the surface is held at the sea (a flat stand-in until the
+// ocean pass exists); the fragment stage shades it as water.
+#include "common/frame_uniforms.glsl"
+#include "terrain/grid.glsl"
+#include "noise/simplex.glsl"
+#include "terrain/height.glsl"
+
+layout(quads, fractional_odd_spacing, ccw) in;
+in vec2 tcGrid[];
+out vec3 teDirection;   // unit direction from the planet centre
+out float teHeight;     // m above sea level (negative: under water)
+
+layout(std140, binding = 2) uniform TerrainBlock {
+    TerrainShape terrainShape;
+};
+
+void main() {
+    vec2 uv = gl_TessCoord.xy;
+    vec2 g = mix(mix(tcGrid[0], tcGrid[1], uv.x), mix(tcGrid[3], tcGrid[2], uv.x), uv.y);
+    dvec3 direction = gridDirection(g);
+    float height = terrainHeight(vec3(direction), terrainShape);
+    vec3 position = cameraRelative(direction, uPlanetRadius + double(max(height, 0.0)));
+    teDirection = vec3(direction);
+    teHeight = height;
+    gl_Position = frame.clipFromView * (frame.viewFromWorld * vec4(position, 1.0));
+}
