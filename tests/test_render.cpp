@@ -162,3 +162,33 @@ TEST_F(RenderTest, ProfilerTimesEveryPassOnTheGpuAndCpu) {
     }
     EXPECT_EQ(names, (std::vector<std::string>{"terrain", "atmosphere", "tonemap"}));
 }
+
+TEST_F(RenderTest, TerrainLeavesNoHolesWhereTheGroundMustBe) {
+    // The terrain is never below the sea-level sphere (the sea is drawn flat
+    // there), so every pixel whose ray hits that sphere must hold terrain: a
+    // hole means the projected grid missed part of the visible planet (Michelic
+    // §3 coverage) or the culling dropped a visible patch.
+    for (const std::string view : {"ground", "beach", "aircraft", "orbit", "space"}) {
+        const Session s = session("earth", view);
+        renderer->render(s.scene, s.camera, kSize);
+        std::vector<std::uint8_t> material(static_cast<std::size_t>(kSize.x) * kSize.y * 4);
+        glGetTextureImage(renderer->targets().gbuffer().material.id(), 0, GL_RGBA, GL_UNSIGNED_BYTE,
+                          static_cast<GLsizei>(material.size()), material.data());
+        const glm::dmat4 viewFromClip = glm::inverse(s.camera.clipFromView(double(kSize.x) / kSize.y));
+        int mustBeGround = 0, holes = 0;
+        for (int y = 0; y < kSize.y; ++y) {
+            for (int x = 0; x < kSize.x; ++x) {
+                const glm::dvec2 ndc((x + 0.5) / kSize.x * 2 - 1, (y + 0.5) / kSize.y * 2 - 1);
+                const glm::dvec4 v = viewFromClip * glm::dvec4(ndc, 0.5, 1.0);
+                const glm::dvec3 dir = s.camera.worldFromView() * glm::normalize(glm::dvec3(v) / v.w);
+                // Skip rays within a pixel of grazing the sphere, where rasterisation decides.
+                const double t = test::nearestHitDouble(s.camera.position, dir, s.scene.planetRadiusM() - 50.0);
+                if (t < 0.0) continue;
+                ++mustBeGround;
+                holes += material[(static_cast<std::size_t>(y) * kSize.x + x) * 4] == 0;
+            }
+        }
+        EXPECT_GT(mustBeGround, 0) << view;
+        EXPECT_EQ(holes, 0) << view << ": " << holes << " of " << mustBeGround << " ground pixels empty";
+    }
+}

@@ -271,6 +271,7 @@ void Explorer::run() {
         pollShaders();
         handleKeys();
         controller_.update(session_.camera, pollControls(window_, pending_), dt, session_.scene.planetRadiusM());
+        keepAboveGround(session_.camera, session_.scene);
         renderer_.render(session_.scene, session_.camera, size, [&] {
             glBlitNamedFramebuffer(renderer_.targets().ldrFramebuffer(), 0, 0, 0, size.x, size.y, 0, 0, size.x,
                                    size.y, GL_COLOR_BUFFER_BIT, GL_NEAREST);

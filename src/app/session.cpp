@@ -8,6 +8,7 @@
 #include <regex>
 
 #include "scene/preset.h"
+#include "terrain/height.h"
 #include "scene/toml_error.h"
 #include "util/log.h"
 
@@ -31,8 +32,11 @@ void applyView(const View& view, Session& session) {
     session.view = view;
     session.scene.sun = session.presetScene.sun;  // a previous view's sun must not linger
     applyViewSun(view, session.scene);
-    session.camera = cameraAtGeographic(view.latitude_deg, view.longitude_deg, view.altitude_m, view.heading_deg,
-                                        view.pitch_deg, view.fov_deg, session.scene.planetRadiusM());
+    // A view's altitude is above the ground under it: the terrain, or the sea.
+    const double ground =
+        terrain::surfaceHeightM(session.scene.terrain, directionFromLatLon(view.latitude_deg, view.longitude_deg));
+    session.camera = cameraAtGeographic(view.latitude_deg, view.longitude_deg, ground + view.altitude_m,
+                                        view.heading_deg, view.pitch_deg, view.fov_deg, session.scene.planetRadiusM());
     const std::string fix = sanitizeCamera(session.camera, session.scene.planetRadiusM());
     if (!fix.empty()) logWarning("view '" + view.name + "': " + fix);
 }
@@ -63,6 +67,15 @@ void checkOutputsWritable(const std::vector<std::string>& outputs) {
         std::fclose(f);
         fs::remove(probe, ec);
     }
+}
+
+bool keepAboveGround(Camera& camera, const Scene& scene) {
+    const double radius = scene.planetRadiusM();
+    const double lowest = radius + terrain::surfaceHeightM(scene.terrain, camera.position) + kCameraMinAltitudeM;
+    const double distance = glm::length(camera.position);
+    if (!(distance > 0.0) || distance >= lowest) return false;
+    camera.position *= lowest / distance;
+    return true;
 }
 
 glm::ivec2 parseSize(const std::string& text) {

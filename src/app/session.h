@@ -43,6 +43,11 @@ Session loadSession(const DataPaths& paths, const std::string& preset, const std
 // Puts the camera (and the sun, when the view places it) where a view says.
 void applyView(const View& view, Session& session);
 
+// Lifts the camera radially to kCameraMinAltitudeM above the ground (terrain or
+// sea) under it; the fly controller only knows the sea-level sphere. Returns
+// true when it moved the camera.
+bool keepAboveGround(Camera& camera, const Scene& scene);
+
 // "640x360" -> {640, 360}; throws InputError for anything else or sides outside [1, 16384].
 glm::ivec2 parseSize(const std::string& text);
 

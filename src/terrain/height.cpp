@@ -4,6 +4,7 @@
 // translation unit, into namespace planet::terrain::glsl, the way noise/noise.cpp does:
 // GLM's float types and functions supply the GLSL names and OUT(x) is x&. (The noise
 // functions are compiled a second time here, into this namespace; they are small.)
+#include <algorithm>
 #include "terrain/height.h"
 
 #include <cmath>
@@ -125,6 +126,12 @@ float terrainMaterialWeight(Material material, float height, float slope, float 
 MaterialThresholds materialThresholds() {
     return {glsl::TERRAIN_BEACH_DEPTH_M, glsl::TERRAIN_BEACH_HEIGHT_M, glsl::TERRAIN_ROCK_SLOPE,
             glsl::TERRAIN_BLEND_HEIGHT_M, glsl::TERRAIN_BLEND_SNOW_M, glsl::TERRAIN_BLEND_SLOPE};
+}
+
+double surfaceHeightM(const TerrainParams& params, const glm::dvec3& position) {
+    const double length = glm::length(position);
+    if (!(length > 0.0)) return 0.0;
+    return std::max(0.0, static_cast<double>(terrainHeight(glm::vec3(position / length), makeTerrainShape(params))));
 }
 
 }  // namespace planet::terrain

@@ -40,6 +40,10 @@ TerrainShape makeTerrainShape(const TerrainParams& params);
 // Height above sea level, m. GLSL: terrainHeight(d, shape).
 float terrainHeight(glm::vec3 unitDirection, const TerrainShape& shape);
 
+// Height of the visible surface above sea level (m) under a world position:
+// the terrain, or 0 over the sea (the flat water stand-in the terrain pass draws).
+double surfaceHeightM(const TerrainParams& params, const glm::dvec3& position);
+
 // Height and its gradient with respect to the direction as a point in R^3 (only the
 // tangential part means anything: m per radian). GLSL: terrainHeightGrad.
 float terrainHeightGrad(glm::vec3 unitDirection, const TerrainShape& shape, glm::vec3& gradient);
