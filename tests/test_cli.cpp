@@ -3,6 +3,7 @@
 // input that must fail with a clear message and write nothing.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -129,6 +130,17 @@ TEST_F(CliTest, BenchWritesTableCsvAndPlot) {
     int w = 0, h = 0, n = 0;
     ASSERT_TRUE(stbi_info((dir / "b.png").c_str(), &w, &h, &n));
     EXPECT_GT(w, 100);
+}
+
+TEST_F(CliTest, BenchTerrainSuiteSweepsGridSizeAndOctaves) {
+    const auto r = runCommand(planet("bench --suite terrain --size 32x18 --frames 1 --warmup 0 --views '" PLANET_SOURCE_DIR
+                                     "/assets/views/orbit.toml' --csv t.csv --plot ''"));
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    std::ifstream csv(dir / "t.csv");
+    std::string text((std::istreambuf_iterator<char>(csv)), {});
+    for (const char* config : {"g50/o1", "g100/o5", "g200/o10"})
+        EXPECT_TRUE(contains(text, std::string(",") + config + ",terrain,1,")) << config << "\n" << text;
+    EXPECT_EQ(std::count(text.begin(), text.end(), '\n'), 1 + 9 * 4);  // header + 9 configurations x 4 rows
 }
 
 TEST_F(CliTest, ExploreWithoutDisplayRendersAStillAndSaysWhere) {

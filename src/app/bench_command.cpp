@@ -148,10 +148,24 @@ int runBench(const BenchOptions& o) {
     Renderer frame(paths.shaders(), atmosphere::tableSizesFor(o.common.tables, renderer));
 
     std::vector<BenchRow> rows;
-    for (const View& view : views) {
-        logInfo("bench view '" + view.name + "' (" + std::to_string(o.warmup + o.frames) + " frames)");
-        applyView(view, session);
-        for (BenchRow& r : measureView(frame, session, size, o)) rows.push_back(std::move(r));
+    if (o.suite == "terrain") {
+        // Michelic Table 1: the same view, grid size x noise octaves.
+        applyView(views.front(), session);
+        for (int grid : {50, 100, 200}) {
+            for (int octaves : {1, 5, 10}) {
+                session.scene.terrain.grid_size = grid;
+                session.scene.terrain.noise_octaves = octaves;
+                session.view.name = "g" + std::to_string(grid) + "/o" + std::to_string(octaves);
+                logInfo("bench terrain " + session.view.name + " on view '" + views.front().name + "'");
+                for (BenchRow& r : measureView(frame, session, size, o)) rows.push_back(std::move(r));
+            }
+        }
+    } else {
+        for (const View& view : views) {
+            logInfo("bench view '" + view.name + "' (" + std::to_string(o.warmup + o.frames) + " frames)");
+            applyView(view, session);
+            for (BenchRow& r : measureView(frame, session, size, o)) rows.push_back(std::move(r));
+        }
     }
     printTable(rows);
     if (!o.csv.empty()) {

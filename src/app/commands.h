@@ -35,6 +35,7 @@ struct RenderOptions {
 struct BenchOptions {
     CommonOptions common;
     std::vector<std::string> views;  // view files or folders of them
+    std::string suite = "views";     // "views": each view as it is; "terrain": Michelic's Table 1 sweep
     int frames = 60;
     int warmup = 10;
     std::string csv = "out/bench.csv";

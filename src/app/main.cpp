@@ -50,6 +50,11 @@ int main(int argc, char** argv) {
     CLI::App* benchCmd = app.add_subcommand("bench", "Time each pass over scripted views; table, CSV and plot");
     addCommon(*benchCmd, bench.common);
     benchCmd->add_option("--views", bench.views, "View files or folders of them (default: assets/views)");
+    benchCmd->add_option("--suite", bench.suite,
+                         "views: every view as set up; terrain: grid 50/100/200 x 1/5/10 noise octaves on the "
+                         "first view (Michelic Table 1)")
+        ->check(CLI::IsMember({"views", "terrain"}))
+        ->capture_default_str();
     benchCmd->add_option("--frames", bench.frames, "Recorded frames per view")->capture_default_str();
     benchCmd->add_option("--warmup", bench.warmup, "Unrecorded frames per view before recording")->capture_default_str();
     benchCmd->add_option("--csv", bench.csv, "CSV output (empty: none)")->capture_default_str();
