@@ -5,6 +5,7 @@
 #include "app/session.h"
 #include "gl_test_support.h"
 #include "render/renderer.h"
+#include "terrain/height.h"
 #include "shaders_ray_sphere_double.h"
 
 using namespace planet;
@@ -191,4 +192,56 @@ TEST_F(RenderTest, TerrainLeavesNoHolesWhereTheGroundMustBe) {
         EXPECT_GT(mustBeGround, 0) << view;
         EXPECT_EQ(holes, 0) << view << ": " << holes << " of " << mustBeGround << " ground pixels empty";
     }
+}
+
+namespace {
+
+// CPU reference of a terrain silhouette: does the ray hit the terrain (or the
+// sea surface)? Marched in double with the shared height function, in steps
+// that grow with distance (0.1 % of it, at least 10 m).
+bool rayHitsGround(const Scene& scene, const glm::dvec3& origin, const glm::dvec3& dir) {
+    const double radius = scene.planetRadiusM();
+    const double ceiling = radius + scene.terrain.max_height_m;
+    for (double t = 1.0; t < 2.0e6; t += std::max(10.0, 1e-3 * t)) {
+        const glm::dvec3 p = origin + dir * t;
+        const double r = glm::length(p);
+        if (r > ceiling && glm::dot(p, dir) > 0.0) return false;  // above every peak and climbing
+        if (r <= radius + terrain::surfaceHeightM(scene.terrain, p)) return true;
+    }
+    return false;
+}
+
+}  // namespace
+
+TEST_F(RenderTest, MountainSilhouetteMatchesTheCpuHeightField) {
+    // A range seen across 100-200 km: the GPU terrain's silhouette (first
+    // covered row from the top, per column) agrees with the CPU height field
+    // within 2 rows, and stands above the sea-level horizon, so peaks beyond
+    // the geometric horizon are drawn and not culled.
+    const Session s = session("earth", "mountains");
+    renderer->render(s.scene, s.camera, kSize);
+    std::vector<std::uint8_t> material(static_cast<std::size_t>(kSize.x) * kSize.y * 4);
+    glGetTextureImage(renderer->targets().gbuffer().material.id(), 0, GL_RGBA, GL_UNSIGNED_BYTE,
+                      static_cast<GLsizei>(material.size()), material.data());
+    const glm::dmat4 viewFromClip = glm::inverse(s.camera.clipFromView(double(kSize.x) / kSize.y));
+    auto rayAt = [&](int x, int glRow) {
+        const glm::dvec2 ndc((x + 0.5) / kSize.x * 2 - 1, (glRow + 0.5) / kSize.y * 2 - 1);
+        const glm::dvec4 v = viewFromClip * glm::dvec4(ndc, 0.5, 1.0);
+        return glm::normalize(s.camera.worldFromView() * glm::normalize(glm::dvec3(v) / v.w));
+    };
+    int agreeing = 0, aboveSeaHorizon = 0, columns = 0;
+    for (int x = 2; x < kSize.x; x += 6) {
+        int silhouette = -1;  // highest covered GL row (GL row 0 is the bottom)
+        for (int y = kSize.y - 1; y >= 0 && silhouette < 0; --y)
+            if (material[(static_cast<std::size_t>(y) * kSize.x + x) * 4] != 0) silhouette = y;
+        if (silhouette < 2 || silhouette > kSize.y - 3) continue;
+        ++columns;
+        const bool hitBelow = rayHitsGround(s.scene, s.camera.position, rayAt(x, silhouette - 2));
+        const bool missAbove = !rayHitsGround(s.scene, s.camera.position, rayAt(x, silhouette + 2));
+        agreeing += hitBelow && missAbove;
+        aboveSeaHorizon += test::nearestHitDouble(s.camera.position, rayAt(x, silhouette), s.scene.planetRadiusM()) < 0;
+    }
+    ASSERT_GT(columns, 20);
+    EXPECT_GE(agreeing, columns * 9 / 10) << agreeing << " of " << columns;
+    EXPECT_EQ(aboveSeaHorizon, columns);
 }
