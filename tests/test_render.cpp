@@ -245,3 +245,14 @@ TEST_F(RenderTest, MountainSilhouetteMatchesTheCpuHeightField) {
     EXPECT_GE(agreeing, columns * 9 / 10) << agreeing << " of " << columns;
     EXPECT_EQ(aboveSeaHorizon, columns);
 }
+
+TEST_F(RenderTest, CameraIsKeptAboveTheTerrainNotJustTheSphere) {
+    Session s = session("earth", "ground");  // on land, about 430 m up
+    const double ground = terrain::surfaceHeightM(s.scene.terrain, s.camera.position);
+    ASSERT_GT(ground, 100.0);
+    EXPECT_NEAR(s.camera.altitude(s.scene.planetRadiusM()), ground + 2.0, 1e-3);  // the view stands 2 m up
+    s.camera.position = glm::normalize(s.camera.position) * (s.scene.planetRadiusM() + 10.0);  // inside the hill
+    EXPECT_TRUE(keepAboveGround(s.camera, s.scene));
+    EXPECT_NEAR(s.camera.altitude(s.scene.planetRadiusM()), ground + kCameraMinAltitudeM, 1e-3);
+    EXPECT_FALSE(keepAboveGround(s.camera, s.scene));  // already above: unchanged
+}
