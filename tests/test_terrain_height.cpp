@@ -290,8 +290,12 @@ TEST(TerrainMaterial, FollowsTheDocumentedRule) {
     for (int k = 0; k < terrain::kMaterialCount; ++k) EXPECT_GT(counts[k], 1000) << "material " << k;
     // Snow: at the equator only above the equatorial snow line, near the poles down to the sea.
     EXPECT_EQ(terrain::terrainMaterial(4000.0f, 0.0f, 0.0f), Material::Grass);
-    EXPECT_EQ(terrain::terrainMaterial(5000.0f, 0.0f, 0.0f), Material::Snow);
+    EXPECT_EQ(terrain::terrainMaterial(5500.0f, 0.0f, 0.0f), Material::Snow);
     EXPECT_EQ(terrain::terrainMaterial(30.0f, 0.0f, 1.4f), Material::Snow);
+    // The snow line: 5200 m at the equator, 0 at 75 deg, quadratic in latitude between.
+    EXPECT_NEAR(terrain::terrainSnowLine(0.0f), 5200.0f, 1e-3f);
+    EXPECT_NEAR(terrain::terrainSnowLine(glm::radians(45.0f)), 5200.0f * (1.0f - 0.36f), 0.5f);
+    EXPECT_EQ(terrain::terrainSnowLine(glm::radians(80.0f)), 0.0f);
 }
 
 TEST(TerrainMaterial, TheDefaultPlanetHasEveryMaterial) {

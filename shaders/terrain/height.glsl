@@ -57,8 +57,8 @@ const float TERRAIN_BEACH_HEIGHT_M = 20.0f;         // sand up to 20 m above sea
 // planet's land the median is 0.05, the 99th percentile 0.24 (0.06 and 0.29 at 10 octaves),
 // so 0.2 leaves the steepest few percent rock.
 const float TERRAIN_ROCK_SLOPE = 0.2f;
-const float TERRAIN_SNOW_LINE_EQUATOR_M = 4500.0f;  // snow line at the equator ...
-const float TERRAIN_SNOW_FREE_LATITUDE = 1.2217305f;  // ... falling linearly to 0 m at 70 deg (rad)
+const float TERRAIN_SNOW_LINE_EQUATOR_M = 5200.0f;  // snow line at the equator ...
+const float TERRAIN_SNOW_FREE_LATITUDE = 1.3089969f;  // ... falling to 0 m at 75 deg (rad)
 // Half widths of the blend bands around each threshold (terrainMaterialWeight).
 const float TERRAIN_BLEND_HEIGHT_M = 5.0f;   // sea floor / sand / grass
 const float TERRAIN_BLEND_SNOW_M = 100.0f;   // snow line
@@ -190,9 +190,11 @@ float terrainSlope(vec3 normal, vec3 up) {
 float terrainLatitude(vec3 unitDirection) { return asin(clamp(unitDirection.z, -1.0f, 1.0f)); }
 
 // Height of the snow line at a latitude (rad): TERRAIN_SNOW_LINE_EQUATOR_M at the equator,
-// falling linearly to sea level at TERRAIN_SNOW_FREE_LATITUDE and staying there poleward.
+// falling as 1 - (lat / TERRAIN_SNOW_FREE_LATITUDE)^2 to sea level there and staying there
+// poleward: about 3300 m at 45 deg and 1300 m at 65 deg, close to Earth's climatic snow line.
 float terrainSnowLine(float latitude) {
-    return TERRAIN_SNOW_LINE_EQUATOR_M * max(1.0f - abs(latitude) / TERRAIN_SNOW_FREE_LATITUDE, 0.0f);
+    float x = min(abs(latitude) / TERRAIN_SNOW_FREE_LATITUDE, 1.0f);
+    return TERRAIN_SNOW_LINE_EQUATOR_M * (1.0f - x * x);
 }
 
 // The material at a point, from its height (m above sea level), slope (rise over run,
