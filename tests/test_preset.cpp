@@ -477,5 +477,15 @@ TEST(TomlInput, MessageOmitsUnknownLine) {
     EXPECT_EQ(std::string(InputError("", 0, "", "bad").what()), "bad");
 }
 
+TEST(Preset, GridExponentMustBeTwoOrFour) {
+    try {
+        parsePreset("[terrain]\ngrid_exponent = 3\n", "g.toml");
+        FAIL() << "expected an InputError";
+    } catch (const InputError& e) {
+        EXPECT_TRUE(contains(e.what(), "g.toml:2: terrain.grid_exponent")) << e.what();
+    }
+    EXPECT_NO_THROW(parsePreset("[terrain]\ngrid_exponent = 2\n", "g.toml"));
+}
+
 }  // namespace
 }  // namespace planet

@@ -317,7 +317,7 @@ TEST(TerrainMaterial, TheDefaultPlanetHasEveryMaterial) {
 TEST(TerrainParams, TableHasARowPerFieldWithTheDefaultsInRange) {
     std::vector<ParamSpec> table;
     addTerrainParams(table);
-    ASSERT_EQ(table.size(), 8u);
+    ASSERT_EQ(table.size(), 11u);
     Scene scene;
     for (const ParamSpec& row : table) {
         EXPECT_EQ(row.section, "terrain");
@@ -330,7 +330,7 @@ TEST(TerrainParams, TableHasARowPerFieldWithTheDefaultsInRange) {
         EXPECT_LE(value, row.max) << row.key;
     }
     EXPECT_EQ(table.front().key, "max_height_m");
-    EXPECT_EQ(std::get<int*>(table.back().field(scene)), &scene.terrain.grid_size);
+    EXPECT_EQ(std::get<double*>(table.back().field(scene)), &scene.terrain.target_edge_px);
 }
 
 // ---------------------------------------------------------------- GPU vs CPU

@@ -100,6 +100,9 @@ std::vector<SceneProblem> validateScene(const Scene& scene) {
                                 " 1/m; extinction is scattering + absorption, so at least scattering"});
         break;  // one problem per rule: the first component that breaks it
     }
+    if (scene.terrain.grid_exponent != 2 && scene.terrain.grid_exponent != 4)
+        problems.push_back({"terrain.grid_exponent", "must be 2 or 4 (Michelic Eq. 2), not " +
+                                                         std::to_string(scene.terrain.grid_exponent)});
     return problems;
 }
 

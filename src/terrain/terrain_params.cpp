@@ -28,6 +28,13 @@ void addTerrainParams(std::vector<ParamSpec>& table) {
         &TerrainParams::seed);
     add("grid_size", "", 8.0, 512.0, "Vertices per side of the projected grid (Michelic §3); tessellation refines it.",
         &TerrainParams::grid_size);
+    add("grid_exponent", "", 2.0, 4.0, "n of the grid's hemisphere pre-displacement (Michelic Eq. 2): 4, or 2.",
+        &TerrainParams::grid_exponent);
+    add("grid_hysteresis", "", 0.0, 1.0,
+        "The grid's projection camera follows the camera after it moved this fraction of its altitude.",
+        &TerrainParams::grid_hysteresis);
+    add("target_edge_px", "px", 1.0, 200.0, "Triangle edge length on screen the tessellation aims for.",
+        &TerrainParams::target_edge_px);
 }
 
 }  // namespace planet

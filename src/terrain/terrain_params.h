@@ -22,6 +22,9 @@ struct TerrainParams {
     double continent_frequency = 1.5;   // lowest continent octave, per planet radius, [0.01, 100]
     int seed = 1;                       // picks the noise domain offset: another planet, [0, 1000000]
     int grid_size = 100;                // projected grid, N x N vertices (Michelic §3), [8, 512]
+    int grid_exponent = 4;              // n of Eq. 2's hemisphere pre-displacement, 2 or 4, [2, 4]
+    double grid_hysteresis = 0.05;      // the anchor moves after this fraction of the altitude, [0, 1]
+    double target_edge_px = 12.0;       // tessellation aims at triangle edges this long on screen, [1, 200]
 };
 
 }  // namespace planet

@@ -8,7 +8,6 @@ namespace planet {
 
 namespace {
 constexpr GLuint kTerrainShapeBinding = 2;
-constexpr float kTargetEdgePixels = 12.0f;  // triangle edge on screen the tessellation aims for
 }  // namespace
 
 TerrainPass::TerrainPass(const gl::ShaderSources& sources)
@@ -53,6 +52,8 @@ void TerrainPass::rebuildMesh(int size) {
 
 void TerrainPass::draw(const Scene& scene, const Camera& camera) {
     grid_.size = scene.terrain.grid_size;
+    grid_.exponent = scene.terrain.grid_exponent == 2 ? 2 : 4;  // Eq. 2 is defined for these two
+    grid_.hysteresisFraction = scene.terrain.grid_hysteresis;
     if (grid_.size != meshSize_) rebuildMesh(grid_.size);
     const double radius = scene.planetRadiusM();
     const double maxHeight = scene.terrain.max_height_m;
@@ -71,7 +72,7 @@ void TerrainPass::draw(const Scene& scene, const Camera& camera) {
     glProgramUniform1d(p, glGetUniformLocation(p, "uPlanetRadius"), radius);
     glProgramUniform1f(p, glGetUniformLocation(p, "uPlanetRadiusF"), static_cast<float>(radius));
     glProgramUniform1f(p, glGetUniformLocation(p, "uMaxTerrainHeight"), static_cast<float>(maxHeight));
-    glProgramUniform1f(p, glGetUniformLocation(p, "uTargetEdgePixels"), kTargetEdgePixels);
+    glProgramUniform1f(p, glGetUniformLocation(p, "uTargetEdgePixels"), static_cast<float>(scene.terrain.target_edge_px));
     const glm::vec3 lowland(scene.planet.albedo);
     glProgramUniform3fv(p, glGetUniformLocation(p, "uLowlandAlbedo"), 1, &lowland.x);
 
