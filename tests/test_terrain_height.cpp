@@ -317,7 +317,7 @@ TEST(TerrainMaterial, TheDefaultPlanetHasEveryMaterial) {
 TEST(TerrainParams, TableHasARowPerFieldWithTheDefaultsInRange) {
     std::vector<ParamSpec> table;
     addTerrainParams(table);
-    ASSERT_EQ(table.size(), 11u);
+    ASSERT_EQ(table.size(), 12u);
     Scene scene;
     for (const ParamSpec& row : table) {
         EXPECT_EQ(row.section, "terrain");
@@ -325,12 +325,13 @@ TEST(TerrainParams, TableHasARowPerFieldWithTheDefaultsInRange) {
         double value = 0.0;
         if (const auto* d = std::get_if<double*>(&ref)) value = **d;
         else if (const auto* i = std::get_if<int*>(&ref)) value = **i;
-        else ADD_FAILURE() << row.key << " is neither double nor int";
+        else if (const auto* b = std::get_if<bool*>(&ref)) value = **b ? 1.0 : 0.0;
+        else ADD_FAILURE() << row.key << " is neither double, int nor bool";
         EXPECT_GE(value, row.min) << row.key;
         EXPECT_LE(value, row.max) << row.key;
     }
     EXPECT_EQ(table.front().key, "max_height_m");
-    EXPECT_EQ(std::get<double*>(table.back().field(scene)), &scene.terrain.target_edge_px);
+    EXPECT_EQ(std::get<bool*>(table.back().field(scene)), &scene.terrain.ocean);
 }
 
 // ---------------------------------------------------------------- GPU vs CPU

@@ -13,6 +13,7 @@ layout(std140, binding = 2) uniform TerrainBlock {
 };
 uniform float uPlanetRadiusF;  // m
 uniform vec3 uLowlandAlbedo;   // preset planet.albedo: the grass material's albedo
+uniform bool uOcean;           // water below sea level (else dry basins)
 
 layout(location = 0) out vec4 outNormal;
 layout(location = 1) out vec4 outAlbedo;
@@ -24,9 +25,16 @@ const vec3 MATERIAL_ALBEDO[TERRAIN_MATERIAL_COUNT] =
            vec3(0.0));  // grass: uLowlandAlbedo
 const vec3 WATER_ALBEDO = vec3(0.02, 0.035, 0.05);
 
+// The lowlands take the preset's albedo; so do a dry world's basins, a little darker.
+vec3 materialAlbedo(int material) {
+    if (material == TERRAIN_MATERIAL_GRASS) return uLowlandAlbedo;
+    if (material == TERRAIN_MATERIAL_SEA_FLOOR && !uOcean) return 0.7 * uLowlandAlbedo;
+    return MATERIAL_ALBEDO[material];
+}
+
 void main() {
     vec3 up = normalize(teDirection);
-    if (teHeight < 0.0) {  // the sea surface stand-in
+    if (uOcean && teHeight < 0.0) {  // the sea surface stand-in
         outNormal = vec4(up, 0.0);
         outAlbedo = vec4(WATER_ALBEDO, 1.0);
         outMaterial = vec4(float(MATERIAL_GROUND) / 255.0, 0.1, 0.0, 0.0);
@@ -37,8 +45,7 @@ void main() {
     float latitude = terrainLatitude(up);
     vec3 albedo = vec3(0.0);
     for (int m = 0; m < TERRAIN_MATERIAL_COUNT; ++m)
-        albedo += terrainMaterialWeight(m, teHeight, slope, latitude) *
-                  (m == TERRAIN_MATERIAL_GRASS ? uLowlandAlbedo : MATERIAL_ALBEDO[m]);
+        albedo += terrainMaterialWeight(m, teHeight, slope, latitude) * materialAlbedo(m);
     outNormal = vec4(normal, 0.0);
     outAlbedo = vec4(albedo, 1.0);
     outMaterial = vec4(float(MATERIAL_GROUND) / 255.0, 1.0, 0.0, 0.0);

@@ -13,6 +13,8 @@ in vec2 tcGrid[];
 out vec3 teDirection;   // unit direction from the planet centre
 out float teHeight;     // m above sea level (negative: under water)
 
+uniform bool uOcean;  // water below sea level (else dry basins)
+
 layout(std140, binding = 2) uniform TerrainBlock {
     TerrainShape terrainShape;
 };
@@ -22,7 +24,8 @@ void main() {
     vec2 g = mix(mix(tcGrid[0], tcGrid[1], uv.x), mix(tcGrid[3], tcGrid[2], uv.x), uv.y);
     dvec3 direction = gridDirection(g);
     float height = terrainHeight(vec3(direction), terrainShape);
-    vec3 position = cameraRelative(direction, uPlanetRadius + double(max(height, 0.0)));
+    float surface = uOcean ? max(height, 0.0) : height;  // the sea holds the surface at sea level
+    vec3 position = cameraRelative(direction, uPlanetRadius + double(surface));
     teDirection = vec3(direction);
     teHeight = height;
     gl_Position = frame.clipFromView * (frame.viewFromWorld * vec4(position, 1.0));

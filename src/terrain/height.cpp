@@ -131,7 +131,8 @@ MaterialThresholds materialThresholds() {
 double surfaceHeightM(const TerrainParams& params, const glm::dvec3& position) {
     const double length = glm::length(position);
     if (!(length > 0.0)) return 0.0;
-    return std::max(0.0, static_cast<double>(terrainHeight(glm::vec3(position / length), makeTerrainShape(params))));
+    const double height = terrainHeight(glm::vec3(position / length), makeTerrainShape(params));
+    return params.ocean ? std::max(0.0, height) : height;
 }
 
 }  // namespace planet::terrain

@@ -41,7 +41,8 @@ TerrainShape makeTerrainShape(const TerrainParams& params);
 float terrainHeight(glm::vec3 unitDirection, const TerrainShape& shape);
 
 // Height of the visible surface above sea level (m) under a world position:
-// the terrain, or 0 over the sea (the flat water stand-in the terrain pass draws).
+// the terrain, or 0 over the sea (the flat water stand-in the terrain pass
+// draws) when the world has an ocean.
 double surfaceHeightM(const TerrainParams& params, const glm::dvec3& position);
 
 // Height and its gradient with respect to the direction as a point in R^3 (only the

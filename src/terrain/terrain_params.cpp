@@ -35,6 +35,8 @@ void addTerrainParams(std::vector<ParamSpec>& table) {
         &TerrainParams::grid_hysteresis);
     add("target_edge_px", "px", 1.0, 200.0, "Triangle edge length on screen the tessellation aims for.",
         &TerrainParams::target_edge_px);
+    add("ocean", "", 0.0, 1.0, "Water fills everything below sea level; off for a dry world (basins stay ground).",
+        &TerrainParams::ocean);
 }
 
 }  // namespace planet

@@ -25,6 +25,7 @@ struct TerrainParams {
     int grid_exponent = 4;              // n of Eq. 2's hemisphere pre-displacement, 2 or 4, [2, 4]
     double grid_hysteresis = 0.05;      // the anchor moves after this fraction of the altitude, [0, 1]
     double target_edge_px = 12.0;       // tessellation aims at triangle edges this long on screen, [1, 200]
+    bool ocean = true;                  // water fills everything below sea level (false: dry basins, Mars)
 };
 
 }  // namespace planet

@@ -73,6 +73,7 @@ void TerrainPass::draw(const Scene& scene, const Camera& camera) {
     glProgramUniform1f(p, glGetUniformLocation(p, "uPlanetRadiusF"), static_cast<float>(radius));
     glProgramUniform1f(p, glGetUniformLocation(p, "uMaxTerrainHeight"), static_cast<float>(maxHeight));
     glProgramUniform1f(p, glGetUniformLocation(p, "uTargetEdgePixels"), static_cast<float>(scene.terrain.target_edge_px));
+    glProgramUniform1i(p, glGetUniformLocation(p, "uOcean"), scene.terrain.ocean ? 1 : 0);
     const glm::vec3 lowland(scene.planet.albedo);
     glProgramUniform3fv(p, glGetUniformLocation(p, "uLowlandAlbedo"), 1, &lowland.x);
 
