@@ -7,7 +7,6 @@ layout(std140, binding = 0) uniform FrameUniforms {
     vec4 planetCenterFromCamera;  // xyz: centre - camera (m); w: planet radius (m)
     vec4 cameraUp;                // xyz: radial up at the camera; w: camera altitude (m)
     vec4 sunDirection;            // xyz: towards the sun; w: angular radius (rad)
-    vec4 sunIrradiance;           // rgb: TOA irradiance
     vec4 viewport;                // w, h, 1/w, 1/h
     vec4 camera;                  // x: near plane (m); y: exposure
 } frame;

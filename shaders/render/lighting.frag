@@ -14,6 +14,7 @@
 // even a uniform branch, and a GPU is spared the registers of the unused one.
 #include "common/frame_uniforms.glsl"
 #include "common/constants.glsl"
+#include "common/gbuffer.glsl"
 #include "atmosphere/definitions.glsl"
 #include "atmosphere/uniforms.glsl"
 #include "atmosphere/functions.glsl"

@@ -2,6 +2,7 @@
 // gradient (independent of tessellation), material by height, slope and
 // latitude (terrain/height.glsl), albedo per material.
 #include "common/constants.glsl"
+#include "common/gbuffer.glsl"
 #include "noise/simplex.glsl"
 #include "terrain/height.glsl"
 

@@ -22,7 +22,6 @@ FrameUniforms makeFrameUniforms(const Scene& scene, const Camera& camera, glm::i
     u.planetCenterFromCamera = glm::vec4(glm::vec3(centreFromCamera), static_cast<float>(radius));
     u.cameraUp = glm::vec4(glm::vec3(up), static_cast<float>(distance - radius));
     u.sunDirection = glm::vec4(glm::vec3(scene.sunDirection()), static_cast<float>(scene.sun.angular_radius_rad));
-    u.sunIrradiance = glm::vec4(glm::vec3(scene.sun.irradiance), 0.0f);
     u.viewport = glm::vec4(size.x, size.y, 1.0f / static_cast<float>(size.x), 1.0f / static_cast<float>(size.y));
     u.camera = glm::vec4(static_cast<float>(camera.near_m), static_cast<float>(scene.render.exposure), 0.0f, 0.0f);
     return u;

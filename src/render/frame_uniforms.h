@@ -22,11 +22,10 @@ struct FrameUniforms {
     glm::vec4 planetCenterFromCamera; // xyz: centre - camera (m, world axes); w: planet radius (m)
     glm::vec4 cameraUp;               // xyz: radial unit up at the camera; w: camera altitude (m), from double
     glm::vec4 sunDirection;           // xyz: unit vector towards the sun (world axes); w: angular radius (rad)
-    glm::vec4 sunIrradiance;          // rgb: solar irradiance at the top of the atmosphere; w: unused
     glm::vec4 viewport;               // width, height, 1/width, 1/height (pixels)
     glm::vec4 camera;                 // x: near plane (m); y: exposure; zw: unused
 };
-static_assert(sizeof(FrameUniforms) == 4 * 64 + 6 * 16, "FrameUniforms must match the std140 GLSL block");
+static_assert(sizeof(FrameUniforms) == 4 * 64 + 5 * 16, "FrameUniforms must match the std140 GLSL block");
 
 // Per-frame uniforms for a scene seen by a camera at a frame size, formed in
 // double and rounded to float once (camera-relative rendering).

@@ -50,6 +50,24 @@ void TerrainPass::rebuildMesh(int size) {
     indexCount_ = static_cast<GLsizei>(patches.size());
 }
 
+const TerrainPass::Locations& TerrainPass::locations() {
+    const GLuint p = program_.id();
+    if (locations_.program == p) return locations_;
+    auto at = [p](const char* name) { return glGetUniformLocation(p, name); };
+    locations_ = {p,
+                  at("uWorldFromGrid"),
+                  at("uZShift"),
+                  at("uGridExponent"),
+                  at("uCameraPosition"),
+                  at("uPlanetRadius"),
+                  at("uPlanetRadiusF"),
+                  at("uMaxTerrainHeight"),
+                  at("uTargetEdgePixels"),
+                  at("uOcean"),
+                  at("uLowlandAlbedo")};
+    return locations_;
+}
+
 void TerrainPass::draw(const Scene& scene, const Camera& camera) {
     grid_.size = scene.terrain.grid_size;
     grid_.exponent = scene.terrain.grid_exponent == 2 ? 2 : 4;  // Eq. 2 is defined for these two
@@ -64,18 +82,19 @@ void TerrainPass::draw(const Scene& scene, const Camera& camera) {
     glNamedBufferSubData(shape_.id(), 0, sizeof shape, &shape);
     glBindBufferBase(GL_UNIFORM_BUFFER, kTerrainShapeBinding, shape_.id());
 
-    const GLuint p = program_.id();
-    glProgramUniformMatrix3dv(p, glGetUniformLocation(p, "uWorldFromGrid"), 1, GL_FALSE, &projection.worldFromGrid[0][0]);
-    glProgramUniform1d(p, glGetUniformLocation(p, "uZShift"), projection.zShift);
-    glProgramUniform1i(p, glGetUniformLocation(p, "uGridExponent"), grid_.exponent);
-    glProgramUniform3dv(p, glGetUniformLocation(p, "uCameraPosition"), 1, &camera.position.x);
-    glProgramUniform1d(p, glGetUniformLocation(p, "uPlanetRadius"), radius);
-    glProgramUniform1f(p, glGetUniformLocation(p, "uPlanetRadiusF"), static_cast<float>(radius));
-    glProgramUniform1f(p, glGetUniformLocation(p, "uMaxTerrainHeight"), static_cast<float>(maxHeight));
-    glProgramUniform1f(p, glGetUniformLocation(p, "uTargetEdgePixels"), static_cast<float>(scene.terrain.target_edge_px));
-    glProgramUniform1i(p, glGetUniformLocation(p, "uOcean"), scene.terrain.ocean ? 1 : 0);
+    const Locations& l = locations();
+    const GLuint p = l.program;
+    glProgramUniformMatrix3dv(p, l.worldFromGrid, 1, GL_FALSE, &projection.worldFromGrid[0][0]);
+    glProgramUniform1d(p, l.zShift, projection.zShift);
+    glProgramUniform1i(p, l.gridExponent, grid_.exponent);
+    glProgramUniform3dv(p, l.cameraPosition, 1, &camera.position.x);
+    glProgramUniform1d(p, l.planetRadius, radius);
+    glProgramUniform1f(p, l.planetRadiusF, static_cast<float>(radius));
+    glProgramUniform1f(p, l.maxTerrainHeight, static_cast<float>(maxHeight));
+    glProgramUniform1f(p, l.targetEdgePixels, static_cast<float>(scene.terrain.target_edge_px));
+    glProgramUniform1i(p, l.ocean, scene.terrain.ocean ? 1 : 0);
     const glm::vec3 lowland(scene.planet.albedo);
-    glProgramUniform3fv(p, glGetUniformLocation(p, "uLowlandAlbedo"), 1, &lowland.x);
+    glProgramUniform3fv(p, l.lowlandAlbedo, 1, &lowland.x);
 
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_GREATER);  // reversed-Z

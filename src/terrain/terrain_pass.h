@@ -29,6 +29,13 @@ public:
     const GridAnchor& anchor() const { return anchor_; }
 
 private:
+    // Uniform locations, looked up again only when hot reload replaced the program.
+    struct Locations {
+        GLuint program = 0;
+        GLint worldFromGrid, zShift, gridExponent, cameraPosition, planetRadius, planetRadiusF, maxTerrainHeight,
+            targetEdgePixels, ocean, lowlandAlbedo;
+    };
+    const Locations& locations();
     void rebuildMesh(int size);
 
     gl::HotProgram program_;
@@ -40,6 +47,7 @@ private:
     GLsizei indexCount_ = 0;
     GridParams grid_;
     GridAnchor anchor_;
+    Locations locations_;
 };
 
 }  // namespace planet
