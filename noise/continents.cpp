@@ -1,7 +1,7 @@
 // Continents cube map: bake, sample, cache. See continents.h for the layout and conventions.
 //
-// The bake in three passes: (1) fBm at every texel's direction, rows spread over all
-// cores; (2) a solid-angle-weighted histogram of the values (65536 bins between the
+// The bake in three passes: (1) fBm and its analytic gradient at every texel's direction,
+// rows spread over all cores; (2) a solid-angle-weighted histogram of the values (65536 bins between the
 // extremes), which locates the bin holding the sea-level quantile; (3) only that bin's
 // texels sorted, to place sea level between two neighbouring values. Memory stays at the
 // map itself plus one bin, so a 4096^2 face size works; the result is the same as a full
@@ -18,6 +18,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <chrono>
 #include <cmath>
 #include <cstdint>
 #include <cstdlib>
@@ -30,33 +31,18 @@
 #include <unistd.h>
 #include <utility>
 
+#include <glm/glm.hpp>
+
 #include "noise/noise.h"
 #include "util/cache_entry.h"
 #include "util/file_util.h"
+#include "util/log.h"
 
 namespace planet::noise {
 
 namespace fs = std::filesystem;
 
 namespace {
-
-// SplitMix64 (Steele, Lea, Flood 2014): a well-mixed 64-bit value per call.
-std::uint64_t splitMix64(std::uint64_t& state) {
-    std::uint64_t z = (state += 0x9e3779b97f4a7c15ull);
-    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
-    z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
-    return z ^ (z >> 31);
-}
-
-// The seed's offset of the noise domain, in [-100, 100)^3. Small enough that float
-// noise keeps its precision at 10 octaves (100 * 2^9 = 5e4: float spacing 4e-3 lattice
-// cells, far below a texel), large enough that seeds give unrelated maps.
-glm::dvec3 seedOffset(int seed) {
-    std::uint64_t state = static_cast<std::uint64_t>(static_cast<std::int64_t>(seed));
-    glm::dvec3 o;
-    for (int i = 0; i < 3; ++i) o[i] = static_cast<double>(splitMix64(state) >> 11) * 0x1.0p-53 * 200.0 - 100.0;
-    return o;
-}
 
 void validate(const ContinentParams& p, int faceSize) {
     if (faceSize < 1 || faceSize > 8192)
@@ -74,23 +60,36 @@ void validate(const ContinentParams& p, int faceSize) {
 // ------------------------------------------------------------------ EXR
 
 constexpr const char* kKeyAttribute = "planetContinentsKey";
-constexpr const char* kChannel = "Y";
+// Texel components x, y, z, w in this order (continents.h).
+constexpr const char* kChannels[4] = {"Y", "dYdx", "dYdy", "dYdz"};
 constexpr const char* kImageFile = "continents.exr";
+
+// OpenEXR slices over the texels' four floats, for the image's data window origin.
+Imf::FrameBuffer texelSlices(CubeMap& map, Imath::V2i origin) {
+    const std::size_t xs = sizeof(glm::vec4), ys = xs * static_cast<std::size_t>(map.size);
+    Imf::FrameBuffer fb;
+    for (int c = 0; c < 4; ++c) {
+        char* base = reinterpret_cast<char*>(map.texels.data()) + c * sizeof(float) -
+                     (static_cast<std::ptrdiff_t>(origin.x) * static_cast<std::ptrdiff_t>(xs) +
+                      static_cast<std::ptrdiff_t>(origin.y) * static_cast<std::ptrdiff_t>(ys));
+        fb.insert(kChannels[c], Imf::Slice(Imf::FLOAT, base, xs, ys));
+    }
+    return fb;
+}
 
 std::string encodeExr(const CubeMap& map, const std::string& key) {
     const int width = map.size, height = 6 * map.size;
     Imf::Header header(width, height);
-    header.channels().insert(kChannel, Imf::Channel(Imf::FLOAT));
-    header.compression() = Imf::ZIP_COMPRESSION;
+    for (const char* channel : kChannels) header.channels().insert(channel, Imf::Channel(Imf::FLOAT));
+    // Uncompressed: float noise and its gradient do not compress (ZIP saved 2 % at 512) and
+    // decompressing tripled the load time the renderer waits for at start-up.
+    header.compression() = Imf::NO_COMPRESSION;
     header.insert(kKeyAttribute, Imf::StringAttribute(key));
     Imf::StdOSStream stream;
     {
         Imf::OutputFile file(stream, header);
-        Imf::FrameBuffer fb;
         // OpenEXR's Slice takes a non-const base; it only reads through it when writing.
-        char* base = reinterpret_cast<char*>(const_cast<float*>(map.texels.data()));
-        fb.insert(kChannel, Imf::Slice(Imf::FLOAT, base, sizeof(float), sizeof(float) * static_cast<std::size_t>(width)));
-        file.setFrameBuffer(fb);
+        file.setFrameBuffer(texelSlices(const_cast<CubeMap&>(map), {0, 0}));
         file.writePixels(height);
     }
     return stream.str();
@@ -111,21 +110,21 @@ std::string decodeExr(const std::string& bytes, const std::string& key, CubeMap&
         if (w != map.size || h != 6 * map.size)
             return "size " + std::to_string(w) + "x" + std::to_string(h) + ", expected " + std::to_string(map.size) +
                    "x" + std::to_string(6 * map.size);
-        const Imf::Channel* channel = header.channels().findChannel(kChannel);
-        if (!channel) return "no channel " + std::string(kChannel);
-        if (channel->type != Imf::FLOAT) return "channel " + std::string(kChannel) + " is not FLOAT";
-        map.texels.assign(static_cast<std::size_t>(w) * static_cast<std::size_t>(h), 0.0f);
-        const std::size_t xs = sizeof(float), ys = xs * static_cast<std::size_t>(w);
-        char* base = reinterpret_cast<char*>(map.texels.data()) -
-                     (static_cast<std::ptrdiff_t>(dw.min.x) * static_cast<std::ptrdiff_t>(xs) +
-                      static_cast<std::ptrdiff_t>(dw.min.y) * static_cast<std::ptrdiff_t>(ys));
-        Imf::FrameBuffer fb;
-        fb.insert(kChannel, Imf::Slice(Imf::FLOAT, base, xs, ys));
-        file.setFrameBuffer(fb);
+        for (const char* name : kChannels) {
+            const Imf::Channel* channel = header.channels().findChannel(name);
+            if (!channel) return "no channel " + std::string(name);
+            if (channel->type != Imf::FLOAT) return "channel " + std::string(name) + " is not FLOAT";
+        }
+        map.texels.assign(static_cast<std::size_t>(w) * static_cast<std::size_t>(h), glm::vec4(0.0f));
+        file.setFrameBuffer(texelSlices(map, dw.min));
         file.readPixels(dw.min.y, dw.max.y);
-        for (std::size_t i = 0; i < map.texels.size(); ++i)
-            if (!(map.texels[i] >= -1.0f && map.texels[i] <= 1.0f))
-                return "texel " + std::to_string(i) + " is " + std::to_string(map.texels[i]) + ", not in [-1, 1]";
+        for (std::size_t i = 0; i < map.texels.size(); ++i) {
+            const glm::vec4 t = map.texels[i];
+            if (!(t.x >= -1.0f && t.x <= 1.0f))
+                return "texel " + std::to_string(i) + " has elevation " + std::to_string(t.x) + ", not in [-1, 1]";
+            if (!(std::isfinite(t.y) && std::isfinite(t.z) && std::isfinite(t.w)))
+                return "texel " + std::to_string(i) + " has a gradient that is not finite";
+        }
         return {};
     } catch (const std::exception& e) {
         return std::string("OpenEXR cannot read it: ") + e.what();
@@ -136,18 +135,26 @@ std::string decodeExr(const std::string& bytes, const std::string& key, CubeMap&
 
 // ------------------------------------------------------------------ geometry
 
-glm::dvec3 cubeTexelDirection(int face, int x, int y, int size) {
-    // GL 4.5 Table 8.19 inverted: s = (sc / |ma| + 1) / 2, t = (tc / |ma| + 1) / 2.
-    const double sc = 2.0 * (x + 0.5) / size - 1.0, tc = 2.0 * (y + 0.5) / size - 1.0;
-    glm::dvec3 d;
+namespace {
+
+// The point (sc, tc) of a face's plane at distance 1 (sc, tc in [-1, 1] on the face; beyond
+// it, the plane's extension), unnormalised. GL 4.5 Table 8.19 inverted:
+// s = (sc / |ma| + 1) / 2, t = (tc / |ma| + 1) / 2.
+glm::dvec3 facePoint(int face, double sc, double tc) {
     switch (face) {
-        case 0: d = {1.0, -tc, -sc}; break;   // +X: sc = -z, tc = -y
-        case 1: d = {-1.0, -tc, sc}; break;   // -X: sc = +z, tc = -y
-        case 2: d = {sc, 1.0, tc}; break;     // +Y: sc = +x, tc = +z
-        case 3: d = {sc, -1.0, -tc}; break;   // -Y: sc = +x, tc = -z
-        case 4: d = {sc, -tc, 1.0}; break;    // +Z: sc = +x, tc = -y
-        default: d = {-sc, -tc, -1.0}; break;  // -Z: sc = -x, tc = -y
+        case 0: return {1.0, -tc, -sc};   // +X: sc = -z, tc = -y
+        case 1: return {-1.0, -tc, sc};   // -X: sc = +z, tc = -y
+        case 2: return {sc, 1.0, tc};     // +Y: sc = +x, tc = +z
+        case 3: return {sc, -1.0, -tc};   // -Y: sc = +x, tc = -z
+        case 4: return {sc, -tc, 1.0};    // +Z: sc = +x, tc = -y
+        default: return {-sc, -tc, -1.0};  // -Z: sc = -x, tc = -y
     }
+}
+
+}  // namespace
+
+glm::dvec3 cubeTexelDirection(int face, int x, int y, int size) {
+    const glm::dvec3 d = facePoint(face, 2.0 * (x + 0.5) / size - 1.0, 2.0 * (y + 0.5) / size - 1.0);
     return d / std::sqrt(d.x * d.x + d.y * d.y + d.z * d.z);
 }
 
@@ -185,18 +192,56 @@ double cubeTexelSolidAngle(int x, int y, int size) {
     return corner(x1, y1) - corner(x0, y1) - corner(x1, y0) + corner(x0, y0);
 }
 
-float sampleContinents(const CubeMap& map, glm::dvec3 direction) {
+namespace {
+
+// The texel that bilinear tap (i, j) of `face` reads with seamless filtering: the face's own
+// when inside it; else, for a tap one texel beyond an edge, the neighbouring face's texel
+// along that edge at the same place (GL 4.5 §8.13.1); nullptr beyond a corner. The texel
+// is found by selecting the face of a point a quarter texel beyond the edge: its position
+// along the edge moves by under a quarter texel when projected onto the neighbour, and a
+// texel centre is half a texel from its texel's boundary.
+const glm::vec4* seamlessTexel(const CubeMap& map, int face, int i, int j) {
+    const int n = map.size;
+    const bool insideI = i >= 0 && i < n, insideJ = j >= 0 && j < n;
+    if (insideI && insideJ) return &map.at(face, i, j);
+    if (!insideI && !insideJ) return nullptr;
+    const double beyond = 1.0 + 0.5 / n;
+    const double sc = insideI ? 2.0 * (i + 0.5) / n - 1.0 : (i < 0 ? -beyond : beyond);
+    const double tc = insideJ ? 2.0 * (j + 0.5) / n - 1.0 : (j < 0 ? -beyond : beyond);
+    double s = 0.0, t = 0.0;
+    const int other = cubeFaceOf(facePoint(face, sc, tc), s, t);
+    auto index = [n](double c) { return std::clamp(static_cast<int>(std::floor(c * n)), 0, n - 1); };
+    return &map.at(other, index(s), index(t));
+}
+
+}  // namespace
+
+glm::vec4 sampleContinents(const CubeMap& map, glm::dvec3 direction) {
     double s = 0.0, t = 0.0;
     const int face = cubeFaceOf(direction, s, t);
     const int n = map.size;
     const double u = s * n - 0.5, v = t * n - 0.5;
     const double fu = std::floor(u), fv = std::floor(v);
     const double wx = u - fu, wy = v - fv;
-    auto clampIndex = [n](double i) { return static_cast<int>(std::clamp(i, 0.0, static_cast<double>(n - 1))); };
-    const int x0 = clampIndex(fu), x1 = clampIndex(fu + 1.0), y0 = clampIndex(fv), y1 = clampIndex(fv + 1.0);
-    const double top = (1.0 - wx) * map.at(face, x0, y0) + wx * map.at(face, x1, y0);
-    const double bottom = (1.0 - wx) * map.at(face, x0, y1) + wx * map.at(face, x1, y1);
-    return static_cast<float>((1.0 - wy) * top + wy * bottom);
+    const int i = static_cast<int>(fu), j = static_cast<int>(fv);
+    // Taps (i, j), (i+1, j), (i, j+1), (i+1, j+1); at most one is missing (beyond a corner),
+    // and it becomes the mean of the other three.
+    const glm::vec4* taps[4] = {seamlessTexel(map, face, i, j), seamlessTexel(map, face, i + 1, j),
+                                seamlessTexel(map, face, i, j + 1), seamlessTexel(map, face, i + 1, j + 1)};
+    glm::dvec4 value[4], sum(0.0);
+    int missing = -1;
+    for (int k = 0; k < 4; ++k) {
+        if (taps[k]) {
+            value[k] = glm::dvec4(*taps[k]);
+            sum += value[k];
+        } else {
+            missing = k;
+        }
+    }
+    if (missing >= 0) value[missing] = sum / 3.0;
+    const glm::dvec4 top = (1.0 - wx) * value[0] + wx * value[1];
+    const glm::dvec4 bottom = (1.0 - wx) * value[2] + wx * value[3];
+    return glm::vec4((1.0 - wy) * top + wy * bottom);
 }
 
 double seaFractionOf(const CubeMap& map) {
@@ -206,7 +251,7 @@ double seaFractionOf(const CubeMap& map) {
             const double w = cubeTexelSolidAngle(x, y, map.size);
             for (int f = 0; f < 6; ++f) {
                 total += w;
-                if (map.at(f, x, y) < 0.0f) sea += w;
+                if (map.elevation(f, x, y) < 0.0f) sea += w;
             }
         }
     return total > 0.0 ? sea / total : 0.0;
@@ -220,16 +265,21 @@ CubeMap bakeContinents(const ContinentParams& params, int faceSize, const BakePr
     map.size = faceSize;
     map.texels.resize(6 * static_cast<std::size_t>(faceSize) * static_cast<std::size_t>(faceSize));
 
-    // (1) Raw fBm, one face row per task; the calling thread reports progress.
-    const glm::dvec3 offset = seedOffset(params.seed);
+    // (1) Raw fBm and its tangential gradient with respect to the direction d (chain rule:
+    // d fbm(f d + o) / dd = f grad fbm), one face row per task; the calling thread reports progress.
+    const glm::dvec3 offset(seedOffset(params.seed, 0));
     const int rows = 6 * faceSize;
     std::atomic<int> next{0}, done{0};
     auto worker = [&](bool caller) {
         for (int row = next++; row < rows; row = next++) {
             const int face = row / faceSize, y = row % faceSize;
             for (int x = 0; x < faceSize; ++x) {
-                const glm::dvec3 p = cubeTexelDirection(face, x, y, faceSize) * params.frequency + offset;
-                map.at(face, x, y) = fbm(glm::vec3(p), params.octaves);
+                const glm::dvec3 d = cubeTexelDirection(face, x, y, faceSize);
+                glm::vec3 noiseGradient;
+                const float value = fbmGrad(glm::vec3(d * params.frequency + offset), params.octaves, 2.0f, 0.5f,
+                                            noiseGradient);
+                const glm::dvec3 g = params.frequency * glm::dvec3(noiseGradient);
+                map.at(face, x, y) = glm::vec4(value, glm::vec3(g - glm::dot(g, d) * d));
             }
             const int finished = ++done;
             if (caller && progress) progress(0.95 * finished / rows);
@@ -242,8 +292,9 @@ CubeMap bakeContinents(const ContinentParams& params, int faceSize, const BakePr
     for (std::thread& t : pool) t.join();
 
     // (2) Solid-angle-weighted histogram between the extremes.
-    const auto [minIt, maxIt] = std::minmax_element(map.texels.begin(), map.texels.end());
-    const double lo = *minIt, hi = *maxIt;
+    const auto byElevation = [](const glm::vec4& a, const glm::vec4& b) { return a.x < b.x; };
+    const auto [minIt, maxIt] = std::minmax_element(map.texels.begin(), map.texels.end(), byElevation);
+    const double lo = minIt->x, hi = maxIt->x;
     constexpr int kBins = 1 << 16;
     const double binScale = hi > lo ? kBins / (hi - lo) : 0.0;
     auto binOf = [&](float v) { return std::min(kBins - 1, static_cast<int>((v - lo) * binScale)); };
@@ -255,7 +306,7 @@ CubeMap bakeContinents(const ContinentParams& params, int faceSize, const BakePr
         for (int x = 0; x < faceSize; ++x) {
             const double w = cubeTexelSolidAngle(x, y, faceSize);
             for (int f = 0; f < 6; ++f) {
-                const float v = map.at(f, x, y);
+                const float v = map.elevation(f, x, y);
                 const int b = binOf(v);
                 binWeight[static_cast<std::size_t>(b)] += w;
                 binMin[static_cast<std::size_t>(b)] = std::min(binMin[static_cast<std::size_t>(b)], v);
@@ -277,7 +328,8 @@ CubeMap bakeContinents(const ContinentParams& params, int faceSize, const BakePr
     for (int y = 0; y < faceSize; ++y)
         for (int x = 0; x < faceSize; ++x)
             for (int f = 0; f < 6; ++f)
-                if (binOf(map.at(f, x, y)) == bin) candidates.emplace_back(map.at(f, x, y), cubeTexelSolidAngle(x, y, faceSize));
+                if (binOf(map.elevation(f, x, y)) == bin)
+                    candidates.emplace_back(map.elevation(f, x, y), cubeTexelSolidAngle(x, y, faceSize));
     std::sort(candidates.begin(), candidates.end());
     std::size_t seaCount = 0;
     double cumulative = before, bestError = std::abs(before - target);
@@ -301,12 +353,15 @@ CubeMap bakeContinents(const ContinentParams& params, int faceSize, const BakePr
     // No sea: the lowest texel sits at 0 (land). No land: sea level just above the highest.
     const double seaLevel = below && above ? 0.5 * (*below + *above) : above ? *above : *below + 1e-6 * (1.0 + std::abs(*below));
 
-    // Shift, then scale each side to reach -1 and +1 (the sign is kept, so is the coastline).
+    // Shift, then scale each side to reach -1 and +1 (the sign is kept, so is the coastline);
+    // the gradient takes its side's scale.
     const double seaScale = seaLevel > lo ? 1.0 / (seaLevel - lo) : 0.0;
     const double landScale = hi > seaLevel ? 1.0 / (hi - seaLevel) : 0.0;
-    for (float& v : map.texels) {
-        const double h = v - seaLevel;
-        v = static_cast<float>(std::clamp(h * (h < 0.0 ? seaScale : landScale), -1.0, 1.0));
+    for (glm::vec4& texel : map.texels) {
+        const double h = texel.x - seaLevel;
+        const double scale = h < 0.0 ? seaScale : landScale;
+        texel = glm::vec4(static_cast<float>(std::clamp(h * scale, -1.0, 1.0)),
+                          glm::vec3(scale * glm::dvec3(texel.y, texel.z, texel.w)));
     }
     if (progress) progress(1.0);
     return map;
@@ -320,9 +375,12 @@ std::string continentsCacheKey(const ContinentParams& p, int faceSize) {
     // Fingerprint of the noise code: a change in simplex / fbm changes the key even
     // when kContinentsVersion was not bumped.
     for (const glm::vec3 q : {glm::vec3(1.25f, -3.5f, 7.75f), glm::vec3(-41.3f, 17.9f, 0.37f)}) {
+        glm::vec3 g;
         h.number(simplex(q));
-        h.number(fbm(q, 10));
+        h.number(fbmGrad(q, 10, 2.0f, 0.5f, g));
+        for (int c = 0; c < 3; ++c) h.number(g[c]);
     }
+    for (int c = 0; c < 3; ++c) h.number(seedOffset(p.seed, 0)[c]);  // the seed's noise domain
     h.integer(p.seed);
     h.number(p.frequency);
     h.integer(p.octaves);
@@ -411,6 +469,37 @@ std::optional<CubeMap> loadContinents(const fs::path& dir, const std::string& ex
     map.size = faceSize;
     const std::string why = decodeExr(bytes, expectedKey, map);
     if (!why.empty()) return reject(quote(imagePath) + ": " + why);
+    return map;
+}
+
+BakeProgress logBakeProgress() {
+    const auto start = std::chrono::steady_clock::now();
+    return [start, reported = 0](double fraction) mutable {
+        const int percent = static_cast<int>(100.0 * fraction);
+        if (percent < reported + 10 || std::chrono::steady_clock::now() - start < std::chrono::seconds(1)) return;
+        reported = percent / 10 * 10;
+        logInfo("bake: " + std::to_string(reported) + "%");
+    };
+}
+
+CubeMap loadOrBakeContinents(const ContinentParams& params, int faceSize, const fs::path& root) {
+    validate(params, faceSize);
+    const std::string key = continentsCacheKey(params, faceSize);
+    const fs::path dir = root / key;
+    std::string reason;
+    if (std::optional<CubeMap> map = loadContinents(dir, key, faceSize, &reason)) return std::move(*map);
+    if (fs::exists(dir)) logWarning("continents cache " + quote(dir) + " is not usable, rebaking: " + reason);
+    logInfo("baking the continents (" + std::to_string(faceSize) + "^2 x 6 texels, seed " + std::to_string(params.seed) +
+            ") into " + quote(dir));
+    const auto start = std::chrono::steady_clock::now();
+    CubeMap map = bakeContinents(params, faceSize, logBakeProgress());
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    if (seconds > 1.0) logInfo("baked the continents in " + std::to_string(seconds) + " s");
+    try {
+        saveContinents(map, params, dir, key);
+    } catch (const std::exception& e) {
+        logWarning(std::string("continents not cached: ") + e.what());
+    }
     return map;
 }
 

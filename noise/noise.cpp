@@ -38,7 +38,24 @@ using std::sqrt;
 
 namespace {
 int periodCells(float period) { return period > 0.0f ? static_cast<int>(std::floor(period + 0.5f)) : 0; }
+
+// A 32-bit integer hash (Chris Wellons' lowbias32): nearby inputs give unrelated outputs.
+std::uint32_t hash32(std::uint32_t x) {
+    x ^= x >> 16;
+    x *= 0x7feb352dU;
+    x ^= x >> 15;
+    x *= 0x846ca68bU;
+    x ^= x >> 16;
+    return x;
+}
+
+float offsetFromHash(std::uint32_t h) { return float(h & 0x3fffU) / 256.0f - 32.0f; }
 }  // namespace
+
+glm::vec3 seedOffset(int seed, unsigned stream) {
+    const std::uint32_t base = hash32(static_cast<std::uint32_t>(seed) * 4u + stream);
+    return {offsetFromHash(hash32(base ^ 0x1u)), offsetFromHash(hash32(base ^ 0x2u)), offsetFromHash(hash32(base ^ 0x3u))};
+}
 
 float simplex(glm::vec3 p) { return glsl::simplexNoise(p); }
 

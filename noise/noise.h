@@ -35,6 +35,12 @@ float ridgedFbm(glm::vec3 p, int octaves, float lacunarity = 2.0f, float gain = 
 // GLSL: worleyNoise(p), worleyNoiseTiled(p, period).
 float worley(glm::vec3 p, float period = 0.0f);
 
+// Offset of the noise domain for a seed and a stream (0: continents, 1: mountains), so that
+// another seed gives another, unrelated field with the same statistics: each component in
+// [-32, 32) in steps of 1/256, from a 32-bit integer hash. Exact in float, and small, so
+// noise coordinates keep their float precision (see simplex.glsl).
+glm::vec3 seedOffset(int seed, unsigned stream);
+
 // The feature point of a lattice cell, in [cell, cell + 1)^3 (for tests and debugging).
 // GLSL: worleyFeaturePoint(cell, period) with an int period.
 glm::vec3 worleyFeaturePoint(glm::ivec3 cell, float period = 0.0f);

@@ -226,6 +226,7 @@ TEST_F(AtmosphereRenderTest, PassMatchesTheCpuModelPixelByPixel) {
     for (const char* view : {"aircraft", "orbit"}) {
         Session s = session(view);
         s.scene.terrain.max_height_m = s.scene.terrain.ocean_depth_m = 0.0;  // flat: the terrain is the sphere
+        s.scene.terrain.ocean = false;  // the atmosphere pass alone (the ocean has its own tests)
         const ImageRGBAF hdr = render(s);
         // The surface's albedo as the terrain pass wrote it (RGBA8 in the G-buffer).
         const ImageRGBA8 albedo =

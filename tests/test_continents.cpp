@@ -1,7 +1,8 @@
 // The continents cube map (noise/continents.h) and `planet bake`: OpenGL's cube face
-// convention, the sea fraction, determinism, sampling and its seams, the EXR cache's
-// round trip and its refusal of damaged or foreign entries, and the command end to end.
-// All CPU; sizes are small so the whole file runs in about a second.
+// convention, the sea fraction, determinism, the baked gradient against the elevation,
+// seamless sampling at edges and corners, the EXR cache's round trip and its refusal of
+// damaged or foreign entries, loadOrBakeContinents, and the command end to end.
+// All CPU; sizes are small so the whole file runs in a few seconds.
 #include <gtest/gtest.h>
 
 #include <stb_image.h>
@@ -135,21 +136,70 @@ TEST(Continents, AchievesTheRequestedSeaFraction) {
 TEST(Continents, ValuesSpanMinusOneToOne) {
     const CubeMap& map = baked(1, 0.6, 32);
     ASSERT_EQ(map.texels.size(), 6u * 32 * 32);
-    const auto [lo, hi] = std::minmax_element(map.texels.begin(), map.texels.end());
-    EXPECT_EQ(*lo, -1.0f);
-    EXPECT_EQ(*hi, 1.0f);
+    const auto byElevation = [](const glm::vec4& a, const glm::vec4& b) { return a.x < b.x; };
+    const auto [lo, hi] = std::minmax_element(map.texels.begin(), map.texels.end(), byElevation);
+    EXPECT_EQ(lo->x, -1.0f);
+    EXPECT_EQ(hi->x, 1.0f);
+}
+
+TEST(Continents, GradientMatchesDifferencesOfTheElevation) {
+    // The baked gradient (the fBm's analytic gradient, scaled like the elevation) against
+    // central differences of the baked elevation between a texel's two neighbours along
+    // each face axis, divided by the angle between them. They are the same derivative up
+    // to the differences' truncation error, which is second order in the texel size: it
+    // must fall about 4-fold from 128^2 to 256^2 and be small at 256^2 (4 octaves: finest
+    // wavelength about 14 texels there). Texels whose neighbours straddle the coast are
+    // skipped (each side has its own scale). Also: the gradient is tangential.
+    ContinentParams p;
+    p.octaves = 4;
+    double median[2] = {}, worst[2] = {};
+    for (int pass = 0; pass < 2; ++pass) {
+        const int n = pass == 0 ? 128 : 256;
+        const CubeMap map = bakeContinents(p, n);
+        std::vector<double> errors;
+        double sumSquares = 0.0, worstRadial = 0.0;
+        for (int face = 0; face < 6; ++face)
+            for (int y = 1; y + 1 < n; y += n / 64)
+                for (int x = 1; x + 1 < n; x += n / 64) {
+                    const glm::vec4 t = map.at(face, x, y);
+                    const glm::dvec3 g(t.y, t.z, t.w), d = cubeTexelDirection(face, x, y, n);
+                    worstRadial = std::max(worstRadial, std::abs(glm::dot(g, d)) / std::max(glm::length(g), 1e-12));
+                    const glm::ivec2 steps[2] = {{1, 0}, {0, 1}};
+                    for (const glm::ivec2 s : steps) {
+                        const float a = map.elevation(face, x - s.x, y - s.y), b = map.elevation(face, x + s.x, y + s.y);
+                        if ((a < 0.0f) != (b < 0.0f) || (a < 0.0f) != (t.x < 0.0f)) continue;
+                        const glm::dvec3 da = cubeTexelDirection(face, x - s.x, y - s.y, n);
+                        const glm::dvec3 db = cubeTexelDirection(face, x + s.x, y + s.y, n);
+                        const double difference = (double(b) - a) / angleBetween(da, db);
+                        const double analytic = glm::dot(g, glm::normalize(db - da));
+                        errors.push_back(std::abs(difference - analytic));
+                        sumSquares += analytic * analytic;
+                    }
+                }
+        std::sort(errors.begin(), errors.end());
+        const double rms = std::sqrt(sumSquares / double(errors.size()));
+        median[pass] = errors[errors.size() / 2] / rms;
+        worst[pass] = errors.back() / rms;
+        std::printf("baked gradient vs differences of the elevation (%d^2, 4 octaves), %zu pairs: RMS derivative "
+                    "%.2f per rad; error median %.4f, max %.4f of it; largest radial part %.1e\n",
+                    n, errors.size(), rms, median[pass], worst[pass], worstRadial);
+        EXPECT_LT(worstRadial, 1e-5);
+    }
+    EXPECT_LT(median[1], 0.35 * median[0]);  // second order: 0.25
+    EXPECT_LT(worst[1], 0.35 * worst[0]);
+    EXPECT_LT(median[1], 0.02);
 }
 
 TEST(Continents, SameSeedSameMapOtherSeedOtherMap) {
     ContinentParams p;
     const CubeMap a = bakeContinents(p, 24), b = bakeContinents(p, 24);
-    EXPECT_EQ(a.texels, b.texels);
+    EXPECT_TRUE(a.texels == b.texels);
     p.seed = 2;
     const CubeMap c = bakeContinents(p, 24);
     std::size_t differ = 0, coast = 0;
     for (std::size_t i = 0; i < a.texels.size(); ++i) {
         differ += a.texels[i] != c.texels[i];
-        coast += (a.texels[i] < 0.0f) != (c.texels[i] < 0.0f);
+        coast += (a.texels[i].x < 0.0f) != (c.texels[i].x < 0.0f);
     }
     EXPECT_EQ(differ, a.texels.size());
     EXPECT_GT(coast, a.texels.size() / 5);  // unrelated land masks disagree on ~48% at 60% sea
@@ -172,22 +222,53 @@ TEST(Continents, SampleAtATexelCentreIsThatTexel) {
     for (int face = 0; face < 6; ++face)
         for (int y = 0; y < 32; ++y)
             for (int x = 0; x < 32; ++x)
-                ASSERT_NEAR(sampleContinents(map, cubeTexelDirection(face, x, y, 32)), map.at(face, x, y), 1e-6f)
-                    << face << " " << x << " " << y;
+                for (int c = 0; c < 4; ++c)
+                    ASSERT_NEAR(sampleContinents(map, cubeTexelDirection(face, x, y, 32))[c], map.at(face, x, y)[c],
+                                1e-6f * (1.0f + std::abs(map.at(face, x, y)[c])))
+                        << face << " " << x << " " << y << " component " << c;
+}
+
+TEST(Continents, SampleHalfwayBetweenTexelsIsTheirMeanAcrossEdgesAndCorners) {
+    // Inside a face, halfway between two texel centres: their mean. On a cube edge, halfway
+    // along an edge texel: the mean of the texels on either side (seamless filtering). At a
+    // cube corner: the mean of the three faces' corner texels (the missing fourth tap is
+    // their mean, as GL recommends).
+    const int n = 16;
+    const CubeMap& map = baked(1, 0.6, n);
+    // Inside face 4 (+Z: sc = x, tc = -y), halfway between texels (6, 3) and (7, 3).
+    auto onFace4 = [n](double x, double y) {  // texel coordinates, texel centres at integers
+        return glm::dvec3(2.0 * (x + 0.5) / n - 1.0, -(2.0 * (y + 0.5) / n - 1.0), 1.0);
+    };
+    const glm::vec4 inside = sampleContinents(map, onFace4(6.5, 3.0));
+    for (int c = 0; c < 4; ++c) EXPECT_NEAR(inside[c], 0.5f * (map.at(4, 6, 3)[c] + map.at(4, 7, 3)[c]), 1e-5f) << c;
+    // The edge between +Z (its column n-1, sc -> 1) and +X (its column 0: sc = -z -> -1), same row.
+    for (int row = 0; row < n; ++row) {
+        const double tc = 2.0 * (row + 0.5) / n - 1.0;
+        const glm::vec4 edge = sampleContinents(map, glm::dvec3(1.0, -tc, 1.0));
+        EXPECT_NEAR(edge.x, 0.5f * (map.elevation(4, n - 1, row) + map.elevation(0, 0, row)), 1e-6f) << row;
+    }
+    // The corner (+1, +1, +1): +X texel (0, 0), +Y texel (n-1, n-1), +Z texel (n-1, 0).
+    const float corner = sampleContinents(map, glm::dvec3(1.0)).x;
+    EXPECT_NEAR(corner, (map.elevation(0, 0, 0) + map.elevation(2, n - 1, n - 1) + map.elevation(4, n - 1, 0)) / 3.0f,
+                1e-6f);
+    for (const glm::dvec3 d : {glm::dvec3(1.0, 1.0, 1.0 - 1e-9), glm::dvec3(1.0, 1.0 - 1e-9, 1.0),
+                               glm::dvec3(1.0 - 1e-9, 1.0, 1.0)})
+        EXPECT_NEAR(sampleContinents(map, d).x, corner, 1e-6f);  // the same from each of the three faces
 }
 
 TEST(Continents, SamplesAreContinuousAcrossFaceSeams) {
     // All 12 edges: d[i] = +-1, d[j] = +-1, d[k] = a; one side of the edge moves d[i]
-    // inwards by 1e-9, the other d[j]. The jump there must be no larger than the
-    // largest step between neighbouring texels inside a face.
+    // inwards by 1e-9, the other d[j]. With seamless filtering both sides blend the same
+    // texels, so the jump (elevation and gradient) is float rounding, a millionth of the
+    // step between neighbouring texels; without it, it would be up to a whole step.
     const int n = 64;
     const CubeMap& map = baked(1, 0.6, n);
     double interiorStep = 0.0, interiorSum = 0.0;
     for (int f = 0; f < 6; ++f)
         for (int y = 0; y < n; ++y)
             for (int x = 0; x + 1 < n; ++x)
-                for (double step : {std::abs(double(map.at(f, x + 1, y)) - map.at(f, x, y)),
-                                    std::abs(double(map.at(f, y, x + 1)) - map.at(f, y, x))}) {
+                for (double step : {glm::length(glm::dvec4(map.at(f, x + 1, y) - map.at(f, x, y))),
+                                    glm::length(glm::dvec4(map.at(f, y, x + 1) - map.at(f, y, x)))}) {
                     interiorStep = std::max(interiorStep, step);
                     interiorSum += step;
                 }
@@ -207,15 +288,14 @@ TEST(Continents, SamplesAreContinuousAcrossFaceSeams) {
                         glm::dvec3 b = a;
                         a[i] *= 1.0 - 1e-9;  // on face j
                         b[j] *= 1.0 - 1e-9;  // on face i
-                        const double d = std::abs(double(sampleContinents(map, a)) - sampleContinents(map, b));
+                        const double d = glm::length(glm::dvec4(sampleContinents(map, a) - sampleContinents(map, b)));
                         worst = std::max(worst, d);
                         sum += d;
                         ++count;
                     }
     std::printf("seam jump: mean %.4f, max %.4f; neighbour step inside a face: mean %.4f, max %.4f (size %d)\n",
                 sum / count, worst, interiorMean, interiorStep, n);
-    EXPECT_LE(worst, interiorStep);
-    EXPECT_LE(sum / count, 1.5 * interiorMean);
+    EXPECT_LE(worst, 1e-6 * interiorMean);
 }
 
 // ---------------------------------------------------------------- cache
@@ -303,10 +383,36 @@ TEST_F(ContinentsCache, RejectsMissingDamagedAndForeignEntries) {
     EXPECT_FALSE(loadContinents(entry, key, 16, &reason));
     EXPECT_TRUE(contains(reason, "OpenEXR")) << reason;
 
+    // Well-formed entries with texels out of range: an elevation beyond 1, a gradient NaN.
+    for (int bad = 0; bad < 2; ++bad) {
+        CubeMap broken = map;
+        if (bad == 0) broken.at(3, 5, 7).x = 1.5f;
+        else broken.at(3, 5, 7).z = std::nanf("");
+        const fs::path other = dir / ("broken" + std::to_string(bad));
+        saveContinents(broken, params, other, key);
+        EXPECT_FALSE(loadContinents(other, key, 16, &reason));
+        EXPECT_TRUE(contains(reason, bad == 0 ? "not in [-1, 1]" : "not finite")) << reason;
+    }
+
     // No key.txt at all.
     fs::remove(entry / "key.txt");
     EXPECT_FALSE(loadContinents(entry, key, 16, &reason));
     EXPECT_FALSE(reason.empty());
+}
+
+TEST_F(ContinentsCache, LoadOrBakeBakesOnceThenReadsAndReplacesADamagedEntry) {
+    const fs::path root = dir / "root";
+    ContinentParams p = params;
+    p.seed = 9;
+    const CubeMap first = loadOrBakeContinents(p, 16, root);  // baked and saved
+    const fs::path entry9 = root / continentsCacheKey(p, 16);
+    ASSERT_TRUE(loadContinents(entry9, continentsCacheKey(p, 16), 16));
+    EXPECT_TRUE(first.texels == bakeContinents(p, 16).texels);
+    writeFileAtomic(entry9 / "continents.exr", "damaged");
+    const CubeMap second = loadOrBakeContinents(p, 16, root);  // reported, rebaked, saved again
+    EXPECT_TRUE(second.texels == first.texels);
+    EXPECT_TRUE(loadContinents(entry9, continentsCacheKey(p, 16), 16));
+    EXPECT_THROW(loadOrBakeContinents(p, 0, root), std::invalid_argument);
 }
 
 // ---------------------------------------------------------------- planet bake
@@ -343,9 +449,26 @@ TEST_F(BakeCli, BakesCachesAndWritesAPreview) {
     EXPECT_FALSE(contains(forced.output, "cache hit")) << forced.output;
 }
 
+TEST_F(BakeCli, BakesWhatAPresetsTerrainUses) {
+    // The preset's [terrain] parameters: the cache entry the terrain pass will look for.
+    std::ofstream(dir / "small.toml") << "[terrain]\nseed = 4\nsea_fraction = 0.3\ncontinent_octaves = 3\n"
+                                         "continent_frequency = 2.5\ncontinent_map_size = 24\n";
+    const auto r = planet::test::runCommand(planet("bake --preset small.toml"));
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_TRUE(contains(r.output, "0.30000 requested")) << r.output;
+    ContinentParams p;
+    p.seed = 4;
+    p.seaFraction = 0.3;
+    p.octaves = 3;
+    p.frequency = 2.5;
+    EXPECT_TRUE(fs::exists(dir / "cache" / "continents" / continentsCacheKey(p, 24) / "continents.exr")) << r.output;
+}
+
 TEST_F(BakeCli, RejectsABadSize) {
-    const auto result = planet::test::runCommand(planet("bake --size 7"));
-    EXPECT_NE(result.exitCode, 0);
-    EXPECT_TRUE(contains(result.output, "--size")) << result.output;
-    EXPECT_FALSE(fs::exists(dir / "cache"));
+    for (const char* size : {"7", "4096"}) {
+        const auto result = planet::test::runCommand(planet(std::string("bake --size ") + size));
+        EXPECT_NE(result.exitCode, 0);
+        EXPECT_TRUE(contains(result.output, "--size")) << result.output;
+        EXPECT_FALSE(fs::exists(dir / "cache"));
+    }
 }

@@ -50,6 +50,28 @@ glm::vec3 centralDifference(F f, glm::vec3 p, float h) {
 
 }  // namespace
 
+// ---------------------------------------------------------------- seed offsets
+
+TEST(NoiseSeedOffset, IsDeterministicInRangeOnTheFloatGridAndUnrelatedAcrossSeedsAndStreams) {
+    // Each component in [-32, 32) in steps of 1/256 (exact in float); the same seed and
+    // stream give the same offset, nearby seeds and the two streams give far-apart ones.
+    std::vector<glm::vec3> offsets;
+    for (int seed : {0, 1, 2, 3, 1000000})
+        for (unsigned stream : {0u, 1u}) {
+            const glm::vec3 o = noise::seedOffset(seed, stream);
+            EXPECT_EQ(o, noise::seedOffset(seed, stream));
+            for (int c = 0; c < 3; ++c) {
+                EXPECT_GE(o[c], -32.0f);
+                EXPECT_LT(o[c], 32.0f);
+                EXPECT_EQ(o[c] * 256.0f, std::floor(o[c] * 256.0f));
+            }
+            offsets.push_back(o);
+        }
+    for (std::size_t i = 0; i < offsets.size(); ++i)
+        for (std::size_t j = i + 1; j < offsets.size(); ++j)
+            EXPECT_GT(glm::length(offsets[i] - offsets[j]), 1.0f) << i << " " << j;  // a simplex cell apart at least
+}
+
 // ---------------------------------------------------------------- simplex
 
 TEST(NoiseSimplex, StaysInRangeReachesBeyondPointEightAndAveragesZero) {

@@ -161,36 +161,42 @@ TEST_F(RenderTest, ProfilerTimesEveryPassOnTheGpuAndCpu) {
         EXPECT_GE(p.gpuMs.size(), 2u) << p.name;  // the ring may drop frames on a slow GPU, never all
         EXPECT_GE(p.gpuMs.min(), 0.0) << p.name;
     }
-    EXPECT_EQ(names, (std::vector<std::string>{"terrain", "atmosphere", "tonemap"}));
+    EXPECT_EQ(names, (std::vector<std::string>{"terrain", "atmosphere", "ocean", "tonemap"}));
 }
 
 TEST_F(RenderTest, TerrainLeavesNoHolesWhereTheGroundMustBe) {
-    // The terrain is never below the sea-level sphere (the sea is drawn flat
-    // there), so every pixel whose ray hits that sphere must hold terrain: a
-    // hole means the projected grid missed part of the visible planet (Michelic
-    // §3 coverage) or the culling dropped a visible patch.
-    for (const std::string view : {"ground", "beach", "aircraft", "orbit", "space"}) {
-        const Session s = session("earth", view);
-        renderer->render(s.scene, s.camera, kSize);
-        std::vector<std::uint8_t> material(static_cast<std::size_t>(kSize.x) * kSize.y * 4);
-        glGetTextureImage(renderer->targets().gbuffer().material.id(), 0, GL_RGBA, GL_UNSIGNED_BYTE,
-                          static_cast<GLsizei>(material.size()), material.data());
-        const glm::dmat4 viewFromClip = glm::inverse(s.camera.clipFromView(double(kSize.x) / kSize.y));
-        int mustBeGround = 0, holes = 0;
-        for (int y = 0; y < kSize.y; ++y) {
-            for (int x = 0; x < kSize.x; ++x) {
-                const glm::dvec2 ndc((x + 0.5) / kSize.x * 2 - 1, (y + 0.5) / kSize.y * 2 - 1);
-                const glm::dvec4 v = viewFromClip * glm::dvec4(ndc, 0.5, 1.0);
-                const glm::dvec3 dir = s.camera.worldFromView() * glm::normalize(glm::dvec3(v) / v.w);
-                // Skip rays within a pixel of grazing the sphere, where rasterisation decides.
-                const double t = test::nearestHitDouble(s.camera.position, dir, s.scene.planetRadiusM() - 50.0);
-                if (t < 0.0) continue;
-                ++mustBeGround;
-                holes += material[(static_cast<std::size_t>(y) * kSize.x + x) * 4] == 0;
+    // Every pixel whose ray hits the sea-level sphere must hold a surface, the terrain or
+    // the sea over it (depth written); with the ocean off, every pixel whose ray hits the
+    // sphere of the deepest sea floor must hold terrain. A hole means a projected grid
+    // missed part of the visible planet (Michelic §3 coverage) or culling dropped a
+    // visible patch.
+    for (const bool ocean : {true, false}) {
+        for (const std::string view : {"ground", "beach", "aircraft", "orbit", "space"}) {
+            Session s = session("earth", view);
+            s.scene.terrain.ocean = ocean;
+            renderer->render(s.scene, s.camera, kSize);
+            std::vector<float> depth(static_cast<std::size_t>(kSize.x) * kSize.y);
+            glGetTextureImage(renderer->targets().gbuffer().depth.id(), 0, GL_DEPTH_COMPONENT, GL_FLOAT,
+                              static_cast<GLsizei>(depth.size() * sizeof(float)), depth.data());
+            const double floor = s.scene.planetRadiusM() - (ocean ? 0.0 : s.scene.terrain.ocean_depth_m);
+            const glm::dmat4 viewFromClip = glm::inverse(s.camera.clipFromView(double(kSize.x) / kSize.y));
+            int mustBeGround = 0, holes = 0;
+            for (int y = 0; y < kSize.y; ++y) {
+                for (int x = 0; x < kSize.x; ++x) {
+                    const glm::dvec2 ndc((x + 0.5) / kSize.x * 2 - 1, (y + 0.5) / kSize.y * 2 - 1);
+                    const glm::dvec4 v = viewFromClip * glm::dvec4(ndc, 0.5, 1.0);
+                    const glm::dvec3 dir = s.camera.worldFromView() * glm::normalize(glm::dvec3(v) / v.w);
+                    // Skip rays within a pixel of grazing the sphere, where rasterisation decides.
+                    const double t = test::nearestHitDouble(s.camera.position, dir, floor - 50.0);
+                    if (t < 0.0) continue;
+                    ++mustBeGround;
+                    holes += depth[static_cast<std::size_t>(y) * kSize.x + x] == 0.0f;
+                }
             }
+            EXPECT_GT(mustBeGround, 0) << view;
+            EXPECT_EQ(holes, 0) << view << (ocean ? " (sea)" : " (dry)") << ": " << holes << " of " << mustBeGround
+                                << " ground pixels empty";
         }
-        EXPECT_GT(mustBeGround, 0) << view;
-        EXPECT_EQ(holes, 0) << view << ": " << holes << " of " << mustBeGround << " ground pixels empty";
     }
 }
 
@@ -199,14 +205,15 @@ namespace {
 // CPU reference of a terrain silhouette: does the ray hit the terrain (or the
 // sea surface)? Marched in double with the shared height function, in steps
 // that grow with distance (0.1 % of it, at least 10 m).
-bool rayHitsGround(const Scene& scene, const glm::dvec3& origin, const glm::dvec3& dir) {
+bool rayHitsGround(const Scene& scene, const terrain::HeightField& ground, const glm::dvec3& origin,
+                   const glm::dvec3& dir) {
     const double radius = scene.planetRadiusM();
     const double ceiling = radius + scene.terrain.max_height_m;
     for (double t = 1.0; t < 2.0e6; t += std::max(10.0, 1e-3 * t)) {
         const glm::dvec3 p = origin + dir * t;
         const double r = glm::length(p);
         if (r > ceiling && glm::dot(p, dir) > 0.0) return false;  // above every peak and climbing
-        if (r <= radius + terrain::surfaceHeightM(scene.terrain, p)) return true;
+        if (r <= radius + terrain::surfaceHeightM(ground, p)) return true;
     }
     return false;
 }
@@ -236,8 +243,8 @@ TEST_F(RenderTest, MountainSilhouetteMatchesTheCpuHeightField) {
             if (material[(static_cast<std::size_t>(y) * kSize.x + x) * 4] != 0) silhouette = y;
         if (silhouette < 2 || silhouette > kSize.y - 3) continue;
         ++columns;
-        const bool hitBelow = rayHitsGround(s.scene, s.camera.position, rayAt(x, silhouette - 2));
-        const bool missAbove = !rayHitsGround(s.scene, s.camera.position, rayAt(x, silhouette + 2));
+        const bool hitBelow = rayHitsGround(s.scene, s.ground, s.camera.position, rayAt(x, silhouette - 2));
+        const bool missAbove = !rayHitsGround(s.scene, s.ground, s.camera.position, rayAt(x, silhouette + 2));
         agreeing += hitBelow && missAbove;
         aboveSeaHorizon += test::nearestHitDouble(s.camera.position, rayAt(x, silhouette), s.scene.planetRadiusM()) < 0;
     }
@@ -248,11 +255,11 @@ TEST_F(RenderTest, MountainSilhouetteMatchesTheCpuHeightField) {
 
 TEST_F(RenderTest, CameraIsKeptAboveTheTerrainNotJustTheSphere) {
     Session s = session("earth", "ground");  // on land, about 430 m up
-    const double ground = terrain::surfaceHeightM(s.scene.terrain, s.camera.position);
+    const double ground = terrain::surfaceHeightM(s.ground, s.camera.position);
     ASSERT_GT(ground, 100.0);
     EXPECT_NEAR(s.camera.altitude(s.scene.planetRadiusM()), ground + 2.0, 1e-3);  // the view stands 2 m up
     s.camera.position = glm::normalize(s.camera.position) * (s.scene.planetRadiusM() + 10.0);  // inside the hill
-    EXPECT_TRUE(keepAboveGround(s.camera, s.scene));
+    EXPECT_TRUE(keepAboveGround(s));
     EXPECT_NEAR(s.camera.altitude(s.scene.planetRadiusM()), ground + kCameraMinAltitudeM, 1e-3);
-    EXPECT_FALSE(keepAboveGround(s.camera, s.scene));  // already above: unchanged
+    EXPECT_FALSE(keepAboveGround(s));  // already above: unchanged
 }

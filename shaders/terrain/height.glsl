@@ -1,30 +1,37 @@
 // Terrain height, normal and material over the sphere, shared by GLSL and C++.
 //
 // Include after noise/simplex.glsl. Written in the subset of GLSL that is also C++
-// (STYLE habit 1, see noise/simplex.glsl for the rules): terrain/height.cpp includes the
-// very same text into namespace planet::terrain::glsl, so tests/test_terrain_height.cpp
-// checks what the GPU runs, in float on both sides.
+// (STYLE habit 1, see noise/simplex.glsl for the rules; plus samplerCube and textureLod,
+// which terrain/height.cpp supplies as the CPU map and noise::sampleContinents):
+// terrain/height.cpp includes the very same text into namespace planet::terrain::glsl, so
+// tests/test_terrain_height.cpp checks what the GPU runs, in float on both sides.
 //
-// The height field (Michelic §3: layered 3D simplex noise sampled at the direction, so
-// there are no seams and no polar distortion):
-//   continent c = continentValue(d): fBm at d * continentFrequency, in [-1, 1];
-//   e = c - TERRAIN_COAST_CONTINENT: the coast is e = 0, e > 0 is land;
+// The height field (Michelic §3 and §6: baked continents plus layered 3D simplex noise
+// sampled at the direction, so there are no seams and no polar distortion):
+//   e = continentValue(d, continents): the baked continents cube map (noise/continents.h)
+//       sampled at d with GL_LINEAR and seamless filtering, in [-1, 1]; the coast is
+//       e = 0 (the bake places it so that a chosen share of the sphere is sea), e > 0 is land;
 //   sea  (e < 0): h = -oceanDepth * S(0, TERRAIN_SHELF_WIDTH, -e), a continental shelf
 //                 falling to a flat abyssal plain at exactly -oceanDepth;
 //   land (e >= 0): h = maxHeight * (TERRAIN_LOWLAND_SHARE * S(0, TERRAIN_LOWLAND_WIDTH, e)
 //                       + (1 - TERRAIN_LOWLAND_SHARE) * S(0, TERRAIN_INLAND_WIDTH, e) * m),
-//                 m = mountains (mix of fBm and ridged fBm at d * mountainFrequency, squared, in [0, 1])
-//                 weighted by how far inland we are, so coasts are gentle;
+//                 m = mountains (mix of fBm and ridged fBm at d * mountainFrequency, squared, in [0, 1];
+//                 mountainOctaves layers, Michelic Table 1's "noise layers"; 0 layers: m = 0,
+//                 the continents alone) weighted by how far inland we are, so coasts are gentle;
 // S is smoothstep (zero slope at both ends), so h and its gradient are continuous across
 // the coast, and h lies in [-oceanDepth, maxHeight] (clamped against float rounding).
 //
 // The normal (terrainNormal) is analytic: the 3D gradient of h (chain rule through the
-// smoothsteps and the noise gradients of simplexNoiseGrad / fbmGrad), projected onto the
-// tangent plane, gives the normal of the surface r(d) = R + h(d):
+// smoothsteps, the continents' baked gradient channels and the noise gradients of
+// simplexNoiseGrad), projected onto the tangent plane, gives the normal of the surface
+// r(d) = R + h(d):
 //   n = normalize(d - grad_T h / (R + h)),
-// exact for the height field, independent of any mesh, so lighting does not change when the
-// tessellation does. Caveat: ridged fBm has a crease at each crest (|noise| at noise = 0);
-// there the normal jumps, as the surface does.
+// exact for the mountains, independent of any mesh, so lighting does not change when the
+// tessellation does. The continents' gradient is the fBm's analytic gradient at the texel
+// centres, filtered like the elevation: smooth, where the filtered elevation's own slope is
+// constant over each texel and jumps at texel edges (facets); the two agree to the
+// field's change of slope over a texel (tests measure it). Caveat: ridged fBm has a crease
+// at each crest (|noise| at noise = 0); there the normal jumps, as the surface does.
 //
 // Materials (terrainMaterial): a hard rule in priority order, and terrainMaterialWeight, its
 // smooth version for blending (weights sum to 1, equal to the hard rule away from thresholds).
@@ -37,14 +44,12 @@ const int TERRAIN_MATERIAL_SAND = 3;  // beach sand
 const int TERRAIN_MATERIAL_GRASS = 4;
 const int TERRAIN_MATERIAL_COUNT = 5;
 
-// Shape of the height field. Continent value of the coastline, about 35 % land with the
-// fBm's distribution (tests/test_terrain_height.cpp measures the fraction).
-const float TERRAIN_COAST_CONTINENT = 0.05f;
-// Continent-value distances from the coast: the shelf's descent to the abyssal plain,
-// the lowlands' rise, and the rise of the mountains' weight from 0 at the coast to 1.
-const float TERRAIN_SHELF_WIDTH = 0.15f;
-const float TERRAIN_LOWLAND_WIDTH = 0.3f;
-const float TERRAIN_INLAND_WIDTH = 0.25f;
+// Shape of the height field. Continent-value distances from the coast (the map's units:
+// each side scaled to reach -1 and +1): the shelf's descent to the abyssal plain, the
+// lowlands' rise, and the rise of the mountains' weight from 0 at the coast to 1.
+const float TERRAIN_SHELF_WIDTH = 0.2f;
+const float TERRAIN_LOWLAND_WIDTH = 0.4f;
+const float TERRAIN_INLAND_WIDTH = 0.35f;
 // Share of maxHeight that lowlands take; mountains take the rest.
 const float TERRAIN_LOWLAND_SHARE = 0.1f;
 
@@ -64,20 +69,20 @@ const float TERRAIN_BLEND_HEIGHT_M = 5.0f;   // sea floor / sand / grass
 const float TERRAIN_BLEND_SNOW_M = 100.0f;   // snow line
 const float TERRAIN_BLEND_SLOPE = 0.02f;     // rock
 
-// The parameters of terrain/terrain_params.h in float. A std140 uniform block can hold it:
-// every member sits at its std140 offset (vec4s first, then 4-byte scalars, padded to 64
-// bytes), and terrain/height.cpp static_asserts the same layout for the C++ mirror.
+// The parameters of terrain/terrain_params.h that the shader takes, in float (the
+// continents' parameters went into the baked map). A std140 uniform block can hold it:
+// every member sits at its std140 offset (the vec4 first, then 4-byte scalars, padded to
+// 48 bytes), and terrain/height.cpp static_asserts the same layout for the C++ mirror.
 struct TerrainShape {
-    vec4 continentOffset;      // noise-space offset of the continents (xyz; from the seed), w unused
-    vec4 mountainOffset;       // noise-space offset of the mountains (xyz), w unused
+    vec4 mountainOffset;       // noise-space offset of the mountains (xyz; from the seed), w unused
     float maxHeight;           // m above sea level, >= 0
     float oceanDepth;          // m below sea level, >= 0
-    float continentFrequency;  // per planet radius
     float mountainFrequency;   // per planet radius
     float ridgedWeight;        // [0, 1]
-    int octaves;               // [1, 10]
+    int mountainOctaves;       // noise layers, [0, 10]; 0: continents only
     float padding0;
     float padding1;
+    float padding2;
 };
 
 vec3 terrainXyz(vec4 v) { return vec3(v.x, v.y, v.z); }
@@ -89,33 +94,33 @@ float terrainSmoothstepGrad(float edge0, float edge1, float x, OUT(float) deriva
     return t * t * (3.0f - 2.0f * t);
 }
 
-// The continent value at a direction, in [-1, 1] (> TERRAIN_COAST_CONTINENT is land), and its
-// gradient with respect to the direction (as a point in R^3). Procedural fBm for now; a baked
-// cube map of the same function can replace this pair (the gradient then from the texture's
-// finite differences or a baked gradient channel).
-float continentValueGrad(vec3 unitDirection, TerrainShape shape, OUT(vec3) gradient) {
-    vec3 noiseGradient;
-    float value = fbmGrad(unitDirection * shape.continentFrequency + terrainXyz(shape.continentOffset), shape.octaves,
-                          2.0f, 0.5f, noiseGradient);
-    gradient = shape.continentFrequency * noiseGradient;
-    return value;
+// The continent value at a direction, in [-1, 1] (> 0 is land), and its gradient with
+// respect to the direction (tangential, per radian): one bilinear fetch of the baked map
+// (Michelic §6), elevation in x, gradient in y, z, w. Level 0 explicitly: the map has no
+// mipmaps, and this runs in stages without implicit derivatives.
+float continentValueGrad(vec3 unitDirection, samplerCube continents, OUT(vec3) gradient) {
+    vec4 texel = textureLod(continents, unitDirection, 0.0f);
+    gradient = vec3(texel.y, texel.z, texel.w);
+    return texel.x;
 }
 
-float continentValue(vec3 unitDirection, TerrainShape shape) {
+float continentValue(vec3 unitDirection, samplerCube continents) {
     vec3 unused;
-    return continentValueGrad(unitDirection, shape, unused);
+    return continentValueGrad(unitDirection, continents, unused);
 }
 
 // Mountains at noise-space point p, in [0, 1], and the gradient d/dp: per octave (lacunarity 2,
 // gain 0.5) mix(0.5 + 0.5 n, (1 - |n|)^2, ridgedWeight) of simplex noise n, normalised like
-// fbm; ridgedWeight 0 is 0.5 + 0.5 fbm(p), 1 is ridgedFbm(p). One noise evaluation per octave.
+// fbm; ridgedWeight 0 is 0.5 + 0.5 fbm(p), 1 is ridgedFbm(p). One noise evaluation per octave;
+// 0 octaves (continents only) is 0.
 float terrainMountainsGrad(vec3 p, int octaves, float ridgedWeight, OUT(vec3) gradient) {
-    int count = clamp(octaves, 1, 10);
+    int count = clamp(octaves, 0, 10);
+    gradient = vec3(0.0f);
+    if (count == 0) return 0.0f;
     float sum = 0.0f;
     float total = 0.0f;
     float amplitude = 1.0f;
     float frequency = 1.0f;
-    gradient = vec3(0.0f);
     for (int k = 0; k < 10; k++) {
         if (k >= count) break;
         vec3 g;
@@ -136,9 +141,9 @@ float terrainMountainsGrad(vec3 p, int octaves, float ridgedWeight, OUT(vec3) gr
 // Height above sea level in metres at a direction, in [-oceanDepth, maxHeight], and its
 // gradient with respect to the direction as a point in R^3 (m per unit; only the tangential
 // part is meaningful on the sphere: m per radian).
-float terrainHeightGrad(vec3 unitDirection, TerrainShape shape, OUT(vec3) gradient) {
+float terrainHeightGrad(vec3 unitDirection, TerrainShape shape, samplerCube continents, OUT(vec3) gradient) {
     vec3 continentGradient;
-    float e = continentValueGrad(unitDirection, shape, continentGradient) - TERRAIN_COAST_CONTINENT;
+    float e = continentValueGrad(unitDirection, continents, continentGradient);
     float height;
     if (e < 0.0f) {
         float dShelf;
@@ -154,7 +159,7 @@ float terrainHeightGrad(vec3 unitDirection, TerrainShape shape, OUT(vec3) gradie
         // about 1/4 of maxHeight instead of 1/2).
         vec3 noiseGradient;
         float noise = terrainMountainsGrad(unitDirection * shape.mountainFrequency + terrainXyz(shape.mountainOffset),
-                                           shape.octaves, shape.ridgedWeight, noiseGradient);
+                                           shape.mountainOctaves, shape.ridgedWeight, noiseGradient);
         float mountains = noise * noise;
         vec3 mountainGradient = (2.0f * noise) * noiseGradient;
         float mountainShare = 1.0f - TERRAIN_LOWLAND_SHARE;
@@ -166,16 +171,16 @@ float terrainHeightGrad(vec3 unitDirection, TerrainShape shape, OUT(vec3) gradie
     return clamp(height, -shape.oceanDepth, shape.maxHeight);
 }
 
-float terrainHeight(vec3 unitDirection, TerrainShape shape) {
+float terrainHeight(vec3 unitDirection, TerrainShape shape, samplerCube continents) {
     vec3 unused;
-    return terrainHeightGrad(unitDirection, shape, unused);
+    return terrainHeightGrad(unitDirection, shape, continents, unused);
 }
 
 // Unit normal of the terrain surface r(d) = planetRadius + h(d) at direction d (planetRadius
 // in metres): the height gradient projected onto the tangent plane, n = normalize(d - grad_T h / r).
-vec3 terrainNormal(vec3 unitDirection, TerrainShape shape, float planetRadius) {
+vec3 terrainNormal(vec3 unitDirection, TerrainShape shape, samplerCube continents, float planetRadius) {
     vec3 gradient;
-    float height = terrainHeightGrad(unitDirection, shape, gradient);
+    float height = terrainHeightGrad(unitDirection, shape, continents, gradient);
     vec3 tangential = gradient - dot(gradient, unitDirection) * unitDirection;
     return normalize(unitDirection - tangential / (planetRadius + height));
 }

@@ -12,6 +12,7 @@ in float teHeight;
 layout(std140, binding = 2) uniform TerrainBlock {
     TerrainShape terrainShape;
 };
+layout(binding = 10) uniform samplerCube uContinents;  // noise/continents.h, RGBA32F
 uniform float uPlanetRadiusF;  // m
 uniform vec3 uLowlandAlbedo;   // preset planet.albedo: the grass material's albedo
 uniform bool uOcean;           // water below sea level (else dry basins)
@@ -24,7 +25,6 @@ layout(location = 2) out vec4 outMaterial;
 const vec3 MATERIAL_ALBEDO[TERRAIN_MATERIAL_COUNT] =
     vec3[](vec3(0.10, 0.09, 0.07), vec3(0.13, 0.11, 0.09), vec3(0.80, 0.82, 0.86), vec3(0.36, 0.31, 0.21),
            vec3(0.0));  // grass: uLowlandAlbedo
-const vec3 WATER_ALBEDO = vec3(0.02, 0.035, 0.05);
 
 // The lowlands take the preset's albedo; so do a dry world's basins, a little darker.
 vec3 materialAlbedo(int material) {
@@ -35,13 +35,7 @@ vec3 materialAlbedo(int material) {
 
 void main() {
     vec3 up = normalize(teDirection);
-    if (uOcean && teHeight < 0.0) {  // the sea surface stand-in
-        outNormal = vec4(up, 0.0);
-        outAlbedo = vec4(WATER_ALBEDO, 1.0);
-        outMaterial = vec4(float(MATERIAL_GROUND) / 255.0, 0.1, 0.0, 0.0);
-        return;
-    }
-    vec3 normal = terrainNormal(up, terrainShape, uPlanetRadiusF);
+    vec3 normal = terrainNormal(up, terrainShape, uContinents, uPlanetRadiusF);
     float slope = terrainSlope(normal, up);
     float latitude = terrainLatitude(up);
     vec3 albedo = vec3(0.0);

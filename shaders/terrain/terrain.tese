@@ -1,8 +1,8 @@
 // Terrain tessellation evaluation: grid coordinate -> direction on the sphere
-// (grid.glsl, Michelic Eq. 1-4) -> height from the shared height function ->
-// camera-relative position formed in double, then rotated and projected.
-// Below sea level the surface is held at the sea (a flat stand-in until the
-// ocean pass exists); the fragment stage shades it as water.
+// (grid.glsl, Michelic Eq. 1-4) -> height from the shared height function (baked
+// continents, Michelic §6, plus mountain noise) -> camera-relative position formed
+// in double, then rotated and projected.
+// Below sea level this is the sea floor; the ocean pass draws the water over it.
 #include "common/frame_uniforms.glsl"
 #include "terrain/grid.glsl"
 #include "noise/simplex.glsl"
@@ -13,19 +13,17 @@ in vec2 tcGrid[];
 out vec3 teDirection;   // unit direction from the planet centre
 out float teHeight;     // m above sea level (negative: under water)
 
-uniform bool uOcean;  // water below sea level (else dry basins)
-
 layout(std140, binding = 2) uniform TerrainBlock {
     TerrainShape terrainShape;
 };
+layout(binding = 10) uniform samplerCube uContinents;  // noise/continents.h, RGBA32F
 
 void main() {
     vec2 uv = gl_TessCoord.xy;
     vec2 g = mix(mix(tcGrid[0], tcGrid[1], uv.x), mix(tcGrid[3], tcGrid[2], uv.x), uv.y);
     dvec3 direction = gridDirection(g);
-    float height = terrainHeight(vec3(direction), terrainShape);
-    float surface = uOcean ? max(height, 0.0) : height;  // the sea holds the surface at sea level
-    vec3 position = cameraRelative(direction, uPlanetRadius + double(surface));
+    float height = terrainHeight(vec3(direction), terrainShape, uContinents);
+    vec3 position = cameraRelative(direction, uPlanetRadius + double(height));
     teDirection = vec3(direction);
     teHeight = height;
     gl_Position = frame.clipFromView * (frame.viewFromWorld * vec4(position, 1.0));

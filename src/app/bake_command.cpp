@@ -1,7 +1,9 @@
 // `planet bake`: the continents cube map (noise/continents.h) baked on the CPU into its
 // cache, with the time taken and the sea fraction achieved, and optionally an
-// equirectangular preview PNG. A valid cache entry is reused unless --force; a damaged
-// one is reported and rebaked. Progress goes to stderr once the bake has run a second.
+// equirectangular preview PNG. The parameters are the preset's [terrain] ones (what the
+// terrain pass will look for), --size, --seed and --sea-fraction overriding them. A valid
+// cache entry is reused unless --force; a damaged one is reported and rebaked. Progress
+// goes to stderr once the bake has run a second.
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -19,7 +21,9 @@
 #include "app/session.h"
 #include "noise/continents.h"
 #include "render/image_io.h"
+#include "scene/preset.h"
 #include "scene/scene.h"
+#include "terrain/height.h"
 #include "util/log.h"
 
 namespace planet {
@@ -51,7 +55,7 @@ ImageRGBA8 previewImage(const noise::CubeMap& map) {
         const double lat = 90.0 - 180.0 * (j + 0.5) / kPreviewHeight;
         for (int i = 0; i < kPreviewWidth; ++i) {
             const double lon = -180.0 + 360.0 * (i + 0.5) / kPreviewWidth;
-            const glm::dvec3 c = elevationColour(noise::sampleContinents(map, directionFromLatLon(lat, lon)));
+            const glm::dvec3 c = elevationColour(noise::sampleContinents(map, directionFromLatLon(lat, lon)).x);
             std::uint8_t* p = &image.pixels[(static_cast<std::size_t>(j) * kPreviewWidth + i) * 4];
             for (int k = 0; k < 3; ++k) p[k] = static_cast<std::uint8_t>(std::clamp(std::lround(c[k]), 0L, 255L));
             p[3] = 255;
@@ -69,26 +73,34 @@ std::string seconds(double s) {
 }  // namespace
 
 int runBake(const BakeOptions& options) {
-    if (options.size < 16 || options.size > 4096)
-        throw std::invalid_argument("--size " + std::to_string(options.size) + " is outside [16, 4096]");
-    if (!(options.seaFraction >= 0.0 && options.seaFraction <= 1.0))
-        throw std::invalid_argument("--sea-fraction " + std::to_string(options.seaFraction) + " is outside [0, 1]");
+    if (options.size && (*options.size < 16 || *options.size > 2048))
+        throw std::invalid_argument("--size " + std::to_string(*options.size) + " is outside [16, 2048]");
+    if (options.seaFraction && !(*options.seaFraction >= 0.0 && *options.seaFraction <= 1.0))
+        throw std::invalid_argument("--sea-fraction " + std::to_string(*options.seaFraction) + " is outside [0, 1]");
     if (!options.preview.empty()) checkOutputsWritable({options.preview});
 
-    noise::ContinentParams params;
-    params.seed = options.seed;
-    params.seaFraction = options.seaFraction;
-    const std::string key = noise::continentsCacheKey(params, options.size);
+    // The preset's [terrain] parameters, as the terrain pass will ask for them.
+    const DataPaths paths = findDataPaths(options.root);
+    const PresetLoad preset = loadPreset(resolvePreset(options.preset, paths.assets()));
+    for (const std::string& w : preset.warnings) logWarning(w);
+    TerrainParams terrain = preset.scene.terrain;
+    if (options.size) terrain.continent_map_size = *options.size;
+    if (options.seed) terrain.seed = *options.seed;
+    if (options.seaFraction) terrain.sea_fraction = *options.seaFraction;
+    const noise::ContinentParams params = terrain::continentParams(terrain);
+    const int size = terrain.continent_map_size;
+
+    const std::string key = noise::continentsCacheKey(params, size);
     const fs::path dir = (options.cache.empty() ? noise::defaultContinentsCacheRoot() : fs::path(options.cache)) / key;
     const std::string where = fs::absolute(dir).lexically_normal().string();
-    std::cout << "planet bake: continents cube map, 6 faces of " << options.size << "x" << options.size << ", seed "
-              << params.seed << ", frequency " << params.frequency << ", " << params.octaves
+    std::cout << "planet bake: continents cube map for preset " << options.preset << ", 6 faces of " << size << "x"
+              << size << ", seed " << params.seed << ", frequency " << params.frequency << ", " << params.octaves
               << " octaves, sea fraction " << params.seaFraction << "\n";
 
     std::optional<noise::CubeMap> map;
     if (!options.force) {
         std::string reason;
-        map = noise::loadContinents(dir, key, options.size, &reason);
+        map = noise::loadContinents(dir, key, size, &reason);
         if (map)
             std::cout << "cache hit: valid map in " << where << " (key " << key << ")\n";
         else if (fs::exists(dir))
@@ -102,17 +114,11 @@ int runBake(const BakeOptions& options) {
 
     if (!map) {
         const auto start = std::chrono::steady_clock::now();
-        int reported = 0;  // last percentage reported, in steps of 10
-        const noise::BakeProgress progress = [&](double fraction) {
-            const int percent = static_cast<int>(100.0 * fraction);
-            if (percent < reported + 10 || std::chrono::steady_clock::now() - start < std::chrono::seconds(1)) return;
-            reported = percent / 10 * 10;
-            logInfo("bake: " + std::to_string(reported) + "%");
-        };
-        map = noise::bakeContinents(params, options.size, progress);
+        map = noise::bakeContinents(params, size, noise::logBakeProgress());
         const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         std::cout << "baked in " << seconds(elapsed) << " ("
-                  << static_cast<double>(map->texels.size() * sizeof(float)) / (1024.0 * 1024.0) << " MiB as R32F)\n";
+                  << static_cast<double>(map->texels.size() * sizeof(glm::vec4)) / (1024.0 * 1024.0)
+                  << " MiB as RGBA32F: elevation and its gradient)\n";
         noise::saveContinents(*map, params, dir, key);
         std::cout << "wrote " << where << "\n";
     }

@@ -16,6 +16,7 @@ struct CommonOptions {
     std::string size = "1280x720"; // WIDTHxHEIGHT
     bool glDebug = false;          // KHR_debug output (synchronous)
     std::string tables = "auto";   // atmosphere table sizes: full, reduced, auto (reduced on software GL)
+    double time = 0.0;             // the ocean's clock at the first frame, s
 };
 
 struct ExploreOptions {
@@ -58,9 +59,11 @@ struct SkyProbeOptions {
 };
 
 struct BakeOptions {
-    int size = 512;            // cube face size, texels, [16, 4096]
-    int seed = 1;              // noise domain offset
-    double seaFraction = 0.6;  // fraction of the surface under water, [0, 1]
+    std::string root;                   // data folder with assets/ (as CommonOptions::root)
+    std::string preset = "earth";       // the [terrain] parameters to bake for (name or .toml)
+    std::optional<int> size;            // cube face size, texels, [16, 2048] (default: the preset's)
+    std::optional<int> seed;            // noise domain offset (default: the preset's)
+    std::optional<double> seaFraction;  // fraction of the surface under water, [0, 1] (default: the preset's)
     bool force = false;        // rebake even when a valid cache entry exists
     std::string cache;         // cache root (empty: noise::defaultContinentsCacheRoot())
     std::string preview;       // equirectangular PNG of the map (empty: none)

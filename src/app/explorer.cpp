@@ -143,6 +143,7 @@ public:
           presetPath_("out/presets/" + session_.presetName + ".toml"),  // never the shipped preset by default
           lastValidScene_(session_.scene),
           showUi_(!options.noPanels) {
+        session_.scene.time_s = options.common.time;
         glfwSetWindowUserPointer(window_, &pending_);
         glfwSetScrollCallback(window_, [](GLFWwindow* w, double, double dy) {
             static_cast<PendingInput*>(glfwGetWindowUserPointer(w))->scroll += dy;
@@ -173,6 +174,7 @@ private:
     Scene lastValidScene_;  // what the panels last produced that passed validateScene
     bool showUi_;
     bool screenshotRequested_ = false;
+    WaveClock clock_;
     PendingInput pending_;
     std::chrono::steady_clock::time_point lastShaderPoll_{};
     std::vector<std::string> lastShaderErrors_;  // logged once each
@@ -231,7 +233,9 @@ void Explorer::acceptOrRevertEdit() {
         lastValidScene_ = session_.scene;
         return;
     }
+    const double time = session_.scene.time_s;  // the clock runs on
     session_.scene = lastValidScene_;
+    session_.scene.time_s = time;
     status_ = "not applied: " + problems.front().field + ": " + problems.front().message;
     logWarning(status_);
 }
@@ -243,6 +247,7 @@ void Explorer::drawUi() {
     if (showUi_) {
         drawProfilerPanel(renderer_.profiler(), rendererName_);
         if (drawSceneParams(session_.scene, renderer_.atmosphere().rebuildProgress())) acceptOrRevertEdit();
+        if (session_.scene.terrain.ocean && drawWavePanel(session_.scene, clock_)) acceptOrRevertEdit();
         const CameraPanelResult r = drawCameraPanel(session_.camera, controller_, session_.scene.planetRadiusM(),
                                                     session_.views, presetPath_, status_);
         if (r.jumpToView >= 0) jumpToView(static_cast<std::size_t>(r.jumpToView));
@@ -270,8 +275,9 @@ void Explorer::run() {
 
         pollShaders();
         handleKeys();
+        if (!clock_.paused) session_.scene.time_s += dt * clock_.rate;
         controller_.update(session_.camera, pollControls(window_, pending_), dt, session_.scene.planetRadiusM());
-        keepAboveGround(session_.camera, session_.scene);
+        keepAboveGround(session_);
         renderer_.render(session_.scene, session_.camera, size, [&] {
             glBlitNamedFramebuffer(renderer_.targets().ldrFramebuffer(), 0, 0, 0, size.x, size.y, 0, 0, size.x,
                                    size.y, GL_COLOR_BUFFER_BIT, GL_NEAREST);

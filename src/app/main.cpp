@@ -18,6 +18,9 @@ void addCommon(CLI::App& cmd, planet::CommonOptions& o) {
                    "Atmosphere table sizes: full, reduced, or auto (reduced on software renderers such as llvmpipe)")
         ->check(CLI::IsMember({"auto", "full", "reduced"}))
         ->capture_default_str();
+    cmd.add_option("--time", o.time, "Clock of the first frame, s (the ocean's waves move with it)")
+        ->check(CLI::Range(-1e9, 1e9))
+        ->capture_default_str();
     cmd.add_flag("--gl-debug", o.glDebug, "Ask for a debug GL context and report KHR_debug messages synchronously");
 }
 
@@ -51,8 +54,8 @@ int main(int argc, char** argv) {
     addCommon(*benchCmd, bench.common);
     benchCmd->add_option("--views", bench.views, "View files or folders of them (default: assets/views)");
     benchCmd->add_option("--suite", bench.suite,
-                         "views: every view as set up; terrain: grid 50/100/200 x 1/5/10 noise octaves on the "
-                         "first view (Michelic Table 1)")
+                         "views: every view as set up; terrain: grid 50/100/200 x continents only, 1, 5, 10 noise "
+                         "layers on the first view (Michelic Table 1)")
         ->check(CLI::IsMember({"views", "terrain"}))
         ->capture_default_str();
     benchCmd->add_option("--frames", bench.frames, "Recorded frames per view")->capture_default_str();
@@ -87,14 +90,18 @@ int main(int argc, char** argv) {
 
     planet::BakeOptions bake;
     CLI::App* bakeCmd = app.add_subcommand(
-        "bake", "Bake the continents cube map (fBm simplex elevation) into the cache; optional preview PNG");
-    bakeCmd->add_option("--size", bake.size, "Cube face size in texels, [16, 4096]")
-        ->check(CLI::Range(16, 4096))
-        ->capture_default_str();
-    bakeCmd->add_option("--seed", bake.seed, "Noise seed (an offset of the noise domain)")->capture_default_str();
-    bakeCmd->add_option("--sea-fraction", bake.seaFraction, "Fraction of the surface under water, [0, 1]")
-        ->check(CLI::Range(0.0, 1.0))
-        ->capture_default_str();
+        "bake", "Bake the continents cube map (fBm simplex elevation and gradient) for a preset's terrain into the "
+                "cache; optional preview PNG");
+    bakeCmd->add_option("--preset", bake.preset, "Preset whose [terrain] parameters to bake for")->capture_default_str();
+    bakeCmd->add_option("--root", bake.root,
+                        "Data folder with shaders/ and assets/ (default: $PLANET_ROOT, else the source tree)");
+    bakeCmd->add_option("--size", bake.size, "Cube face size in texels, [16, 2048] (default: the preset's "
+                                             "terrain.continent_map_size)")
+        ->check(CLI::Range(16, 2048));
+    bakeCmd->add_option("--seed", bake.seed, "Noise seed (default: the preset's terrain.seed)");
+    bakeCmd->add_option("--sea-fraction", bake.seaFraction,
+                        "Fraction of the surface under water, [0, 1] (default: the preset's terrain.sea_fraction)")
+        ->check(CLI::Range(0.0, 1.0));
     bakeCmd->add_flag("--force", bake.force, "Rebake even when a valid cached map exists");
     bakeCmd->add_option("--cache", bake.cache,
                         "Cache root; the map goes to DIR/<key>/ (default: cache/continents, or "

@@ -6,6 +6,9 @@
 #include <cmath>
 #include <cstdio>
 
+#include "ocean/ocean_gpu.h"
+#include "ocean/ocean_params_table.h"
+#include "ocean/wave_spectrum.h"
 #include "scene/scene_params.h"
 
 namespace planet {
@@ -111,7 +114,11 @@ bool drawSceneParams(Scene& scene, double rebuildProgress) {
         }
         if (!open) continue;
         ImGui::PushID(spec.path().c_str());
-        changed = paramWidget(spec, scene) || changed;
+        if (paramWidget(spec, scene)) {
+            changed = true;
+            // The wave set follows its generator's parameters (edits in the Waves panel are replaced).
+            if (isWaveGeneratorParam(spec)) scene.waves = ocean::generateWaves(scene.ocean);
+        }
         ImGui::PopID();
     }
     ImGui::PopItemWidth();
@@ -159,6 +166,98 @@ CameraPanelResult drawCameraPanel(const Camera& camera, CameraController& contro
     if (!status.empty()) ImGui::TextWrapped("%s", status.c_str());
     ImGui::End();
     return result;
+}
+
+namespace {
+
+// One wave's fields; the origin as latitude and longitude. True when one changed.
+bool waveWidgets(ocean::GerstnerWave& w) {
+    bool changed = false;
+    double lat = glm::degrees(std::asin(glm::clamp(w.origin.z, -1.0, 1.0)));
+    double lon = glm::degrees(std::atan2(w.origin.y, w.origin.x));
+    const double latRange[2] = {-90.0, 90.0}, lonRange[2] = {-180.0, 180.0};
+    // Both widgets are drawn every frame; either moving changes the origin.
+    const bool latChanged = ImGui::DragScalar("origin lat [deg]", ImGuiDataType_Double, &lat, 0.05f, &latRange[0],
+                                              &latRange[1], "%.4f", ImGuiSliderFlags_AlwaysClamp);
+    const bool lonChanged = ImGui::DragScalar("origin lon [deg]", ImGuiDataType_Double, &lon, 0.05f, &lonRange[0],
+                                              &lonRange[1], "%.4f", ImGuiSliderFlags_AlwaysClamp);
+    if (latChanged || lonChanged) {
+        w.origin = directionFromLatLon(lat, lon);
+        changed = true;
+    }
+    const double amplitude[2] = {0.0, 100.0}, wavelength[2] = {0.01, 10000.0}, unit[2] = {0.0, 1.0},
+                 speed[2] = {-1000.0, 1000.0}, phase[2] = {-10.0, 10.0};
+    changed |= ImGui::DragScalar("amplitude [m]", ImGuiDataType_Double, &w.amplitude_m, 0.005f, &amplitude[0],
+                                 &amplitude[1], "%.4g", ImGuiSliderFlags_AlwaysClamp);
+    if (ImGui::DragScalar("wavelength [m]", ImGuiDataType_Double, &w.wavelength_m,
+                          static_cast<float>(w.wavelength_m * 5e-3), &wavelength[0], &wavelength[1], "%.4g",
+                          ImGuiSliderFlags_AlwaysClamp)) {
+        w.speed_mps = ocean::deepWaterSpeed(w.wavelength_m);  // stays on the dispersion relation
+        changed = true;
+    }
+    changed |= ImGui::DragScalar("steepness Q", ImGuiDataType_Double, &w.steepness, 0.005f, &unit[0], &unit[1], "%.3f",
+                                 ImGuiSliderFlags_AlwaysClamp);
+    changed |= ImGui::DragScalar("speed [m/s]", ImGuiDataType_Double, &w.speed_mps, 0.02f, &speed[0], &speed[1],
+                                 "%.4g", ImGuiSliderFlags_AlwaysClamp);
+    changed |= ImGui::DragScalar("phase [rad]", ImGuiDataType_Double, &w.phase_rad, 0.01f, &phase[0], &phase[1],
+                                 "%.3f", ImGuiSliderFlags_AlwaysClamp);
+    return changed;
+}
+
+}  // namespace
+
+bool drawWavePanel(Scene& scene, WaveClock& clock) {
+    const ImVec2 display = ImGui::GetIO().DisplaySize;
+    ImGui::SetNextWindowPos(ImVec2(display.x - 330, 330), ImGuiCond_FirstUseEver);
+    ImGui::SetNextWindowSize(ImVec2(320, 360), ImGuiCond_FirstUseEver);
+    if (!ImGui::Begin("Waves")) {
+        ImGui::End();
+        return false;
+    }
+    bool changed = false;
+    ImGui::Text("t = %.2f s", scene.time_s);
+    ImGui::SameLine();
+    ImGui::Checkbox("pause", &clock.paused);
+    float rate = static_cast<float>(clock.rate);
+    if (ImGui::SliderFloat("time rate", &rate, 0.01f, 100.0f, "%.2fx", ImGuiSliderFlags_Logarithmic)) clock.rate = rate;
+    ImGui::Text("%zu waves, H_s %.2f m, max crest %.2f m", scene.waves.size(),
+                ocean::significantWaveHeight(scene.waves), ocean::maxWaveHeight(scene.waves));
+    if (ImGui::Button("Regenerate from [ocean]")) {
+        scene.waves = ocean::generateWaves(scene.ocean);
+        changed = true;
+    }
+    ImGui::SameLine();
+    if (ImGui::Button("Add wave")) {
+        ocean::GerstnerWave w;
+        w.origin = directionFromLatLon(scene.ocean.wind_latitude_deg, scene.ocean.wind_longitude_deg);
+        w.speed_mps = ocean::deepWaterSpeed(w.wavelength_m);
+        scene.waves.push_back(w);
+        changed = true;
+    }
+    ImGui::PushItemWidth(-130.0f);
+    const std::size_t shown = std::min<std::size_t>(scene.waves.size(), 256);  // a list of 4096 is not browsable
+    for (std::size_t i = 0; i < shown; ++i) {
+        ImGui::PushID(static_cast<int>(i));
+        char title[96];
+        std::snprintf(title, sizeof title, "wave %zu: %.3g m long, %.3g m high", i, scene.waves[i].wavelength_m,
+                      scene.waves[i].amplitude_m);
+        if (ImGui::TreeNode(title)) {
+            changed |= waveWidgets(scene.waves[i]);
+            if (ImGui::Button("Remove")) {
+                scene.waves.erase(scene.waves.begin() + static_cast<std::ptrdiff_t>(i));
+                changed = true;
+                ImGui::TreePop();
+                ImGui::PopID();
+                break;
+            }
+            ImGui::TreePop();
+        }
+        ImGui::PopID();
+    }
+    if (shown < scene.waves.size()) ImGui::TextDisabled("(first %zu of %zu shown)", shown, scene.waves.size());
+    ImGui::PopItemWidth();
+    ImGui::End();
+    return changed;
 }
 
 void drawShaderErrors(const std::vector<std::string>& errors) {

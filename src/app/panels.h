@@ -28,6 +28,17 @@ struct CameraPanelResult {
 CameraPanelResult drawCameraPanel(const Camera& camera, CameraController& controller, double planetRadiusM,
                                   const std::vector<View>& views, std::string& presetPath, const std::string& status);
 
+// The ocean's clock, owned by the explorer: scene.time_s advances by rate * dt unless paused.
+struct WaveClock {
+    bool paused = false;
+    double rate = 1.0;
+};
+
+// The wave set: the clock, statistics, regenerate from the [ocean] parameters, and every
+// wave's fields (origin, amplitude, wavelength, steepness, speed, phase) to edit, add or
+// remove. Returns true when the waves changed.
+bool drawWavePanel(Scene& scene, WaveClock& clock);
+
 // Shader compile errors from hot reload, in a red window; nothing when empty.
 void drawShaderErrors(const std::vector<std::string>& errors);
 

@@ -36,6 +36,7 @@ void renderStill(const CommonOptions& common, const std::vector<std::string>& ou
     const glm::ivec2 size = parseSize(common.size);
     const DataPaths paths = findDataPaths(common.root);
     Session session = loadSession(paths, common.preset, common.view);
+    session.scene.time_s = common.time;
     if (exposure) {
         // Same range as the preset's render.exposure.
         if (!(*exposure >= 1e-3 && *exposure <= 1e3)) throw InputError("--exposure must be in [0.001, 1000]");

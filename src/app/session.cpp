@@ -33,8 +33,9 @@ void applyView(const View& view, Session& session) {
     session.scene.sun = session.presetScene.sun;  // a previous view's sun must not linger
     applyViewSun(view, session.scene);
     // A view's altitude is above the ground under it: the terrain, or the sea.
+    session.ground.update(session.scene.terrain);
     const double ground =
-        terrain::surfaceHeightM(session.scene.terrain, directionFromLatLon(view.latitude_deg, view.longitude_deg));
+        terrain::surfaceHeightM(session.ground, directionFromLatLon(view.latitude_deg, view.longitude_deg));
     session.camera = cameraAtGeographic(view.latitude_deg, view.longitude_deg, ground + view.altitude_m,
                                         view.heading_deg, view.pitch_deg, view.fov_deg, session.scene.planetRadiusM());
     const std::string fix = sanitizeCamera(session.camera, session.scene.planetRadiusM());
@@ -69,11 +70,14 @@ void checkOutputsWritable(const std::vector<std::string>& outputs) {
     }
 }
 
-bool keepAboveGround(Camera& camera, const Scene& scene) {
-    const double radius = scene.planetRadiusM();
-    const double lowest = radius + terrain::surfaceHeightM(scene.terrain, camera.position) + kCameraMinAltitudeM;
+bool keepAboveGround(Session& session) {
+    Camera& camera = session.camera;
+    const double radius = session.scene.planetRadiusM();
+    session.ground.update(session.scene.terrain);
+    const double lowest = radius + terrain::surfaceHeightM(session.ground, camera.position) + kCameraMinAltitudeM;
     const double distance = glm::length(camera.position);
-    if (!(distance > 0.0) || distance >= lowest) return false;
+    // 1 um of slack: the lifted position, rescaled in double, may land a rounding error short.
+    if (!(distance > 0.0) || distance >= lowest - 1e-6) return false;
     camera.position *= lowest / distance;
     return true;
 }

@@ -13,6 +13,7 @@
 #include "scene/camera.h"
 #include "app/views.h"
 #include "scene/scene.h"
+#include "terrain/height.h"
 
 namespace planet {
 
@@ -34,6 +35,9 @@ struct Session {
     std::vector<View> views;
     View view;
     Camera camera;
+    // The terrain's heights on the CPU (the continents map the terrain pass draws), for the
+    // camera's ground; follows scene.terrain in applyView and keepAboveGround.
+    terrain::HeightField ground;
 };
 
 // Loads the preset (warnings go to the log) and the view bookmarks, picks the
@@ -43,10 +47,11 @@ Session loadSession(const DataPaths& paths, const std::string& preset, const std
 // Puts the camera (and the sun, when the view places it) where a view says.
 void applyView(const View& view, Session& session);
 
-// Lifts the camera radially to kCameraMinAltitudeM above the ground (terrain or
-// sea) under it; the fly controller only knows the sea-level sphere. Returns
-// true when it moved the camera.
-bool keepAboveGround(Camera& camera, const Scene& scene);
+// Lifts session.camera radially to kCameraMinAltitudeM above the ground (terrain or
+// sea) under it; the fly controller only knows the sea-level sphere. Brings
+// session.ground up to date with session.scene.terrain first (a rebake when a
+// parameter of the continents changed). Returns true when it moved the camera.
+bool keepAboveGround(Session& session);
 
 // "640x360" -> {640, 360}; throws InputError for anything else or sides outside [1, 16384].
 glm::ivec2 parseSize(const std::string& text);

@@ -66,6 +66,21 @@ void RenderTargets::resize(glm::ivec2 size) {
     glNamedFramebufferTexture(ldrFramebuffer_.id(), GL_COLOR_ATTACHMENT0, ldr_.id(), 0);
     ldrFramebuffer_.label("ldr");
     checkComplete(ldrFramebuffer_, "ldr");
+
+    surfaceFramebuffer_ = gl::Framebuffer();
+    glNamedFramebufferTexture(surfaceFramebuffer_.id(), GL_COLOR_ATTACHMENT0, hdr_.id(), 0);
+    glNamedFramebufferTexture(surfaceFramebuffer_.id(), GL_DEPTH_ATTACHMENT, gbuffer_.depth.id(), 0);
+    surfaceFramebuffer_.label("hdr + depth");
+    checkComplete(surfaceFramebuffer_, "hdr + depth");
+    seabedDepth_ = makeTexture(GL_DEPTH_COMPONENT32F, size, "seabed depth");
+    seabedRadiance_ = makeTexture(GL_RGBA16F, size, "seabed radiance");
+}
+
+void RenderTargets::copySeabed() const {
+    glCopyImageSubData(gbuffer_.depth.id(), GL_TEXTURE_2D, 0, 0, 0, 0, seabedDepth_.id(), GL_TEXTURE_2D, 0, 0, 0, 0,
+                       size_.x, size_.y, 1);
+    glCopyImageSubData(hdr_.id(), GL_TEXTURE_2D, 0, 0, 0, 0, seabedRadiance_.id(), GL_TEXTURE_2D, 0, 0, 0, 0, size_.x,
+                       size_.y, 1);
 }
 
 }  // namespace planet

@@ -4,6 +4,8 @@
 //            (RGBA8: id/255, roughness), depth (DEPTH32F, reversed-Z)
 //   hdr      RGBA16F linear radiance (what `render --out x.exr` writes)
 //   ldr      RGBA8 tone-mapped sRGB bytes (what the window shows and PNGs hold)
+//   seabed   copies of the G-buffer depth and of hdr taken before the ocean pass, which
+//            reads them while drawing into hdr + the G-buffer depth (surfaceFramebuffer)
 //
 // Layout must match shaders/common/gbuffer.glsl. Resized only when the frame
 // size changes; a 0x0 size (minimised window) holds no textures.
@@ -34,6 +36,13 @@ public:
     const gl::Texture& ldr() const { return ldr_; }
     GLuint hdrFramebuffer() const { return hdrFramebuffer_.id(); }
     GLuint ldrFramebuffer() const { return ldrFramebuffer_.id(); }
+    // hdr with the G-buffer's depth attached: for surfaces drawn forward after lighting.
+    GLuint surfaceFramebuffer() const { return surfaceFramebuffer_.id(); }
+
+    // Copies the G-buffer depth and hdr into seabedDepth() and seabedRadiance().
+    void copySeabed() const;
+    const gl::Texture& seabedDepth() const { return seabedDepth_; }
+    const gl::Texture& seabedRadiance() const { return seabedRadiance_; }
 
 private:
     glm::ivec2 size_{0, 0};
@@ -42,6 +51,9 @@ private:
     gl::Texture ldr_{GL_TEXTURE_2D};
     gl::Framebuffer hdrFramebuffer_;
     gl::Framebuffer ldrFramebuffer_;
+    gl::Framebuffer surfaceFramebuffer_;
+    gl::Texture seabedDepth_{GL_TEXTURE_2D};
+    gl::Texture seabedRadiance_{GL_TEXTURE_2D};
 };
 
 }  // namespace planet

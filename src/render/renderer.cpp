@@ -18,6 +18,7 @@ Renderer::Renderer(const std::filesystem::path& shaderRoot, const atmosphere::Ta
       terrain_(sources_),
       lighting4D_(lightingSources(shaderRoot, atmosphereTables, false), "atmosphere 4D", "render/lighting.frag"),
       lightingElek_(lightingSources(shaderRoot, atmosphereTables, true), "atmosphere Elek 3D", "render/lighting.frag"),
+      ocean_(lightingSources(shaderRoot, atmosphereTables, false)),
       tonemap_(sources_, "tonemap", "render/tonemap.frag") {
     glNamedBufferStorage(frameUniforms_.id(), sizeof(FrameUniforms), nullptr, GL_DYNAMIC_STORAGE_BIT);
     frameUniforms_.label("FrameUniforms");
@@ -66,6 +67,21 @@ void Renderer::render(const Scene& scene, const Camera& camera, glm::ivec2 size,
         atmosphere_.bind();
         (atmosphere_.usesElekTable() ? lightingElek_ : lighting4D_).draw();
     }
+    if (scene.terrain.ocean) {
+        gl::DebugGroup group("ocean");
+        auto timing = profiler_.pass("ocean");
+        targets_.copySeabed();
+        glBindFramebuffer(GL_FRAMEBUFFER, targets_.surfaceFramebuffer());
+        const GLuint inputs[] = {targets_.seabedDepth().id(), targets_.seabedRadiance().id()};
+        glBindTextures(0, 2, inputs);
+        atmosphere_.bind();
+        if (OceanPass::cameraDepthM(scene, camera) > 0.0) {
+            glBindVertexArray(emptyVertexArray_.id());
+            ocean_.drawUnderwater(scene, camera);
+        }
+        ocean_.drawSurface(scene, camera);
+        glBindVertexArray(emptyVertexArray_.id());
+    }
     {
         gl::DebugGroup group("tonemap");
         auto timing = profiler_.pass("tonemap");
@@ -84,7 +100,8 @@ void Renderer::render(const Scene& scene, const Camera& camera, glm::ivec2 size,
 }
 
 std::vector<gl::HotProgram*> Renderer::programs() {
-    return {&terrain_.program(), &lighting4D_.program(), &lightingElek_.program(), &tonemap_.program()};
+    return {&terrain_.program(),       &lighting4D_.program(),         &lightingElek_.program(),
+            &ocean_.surfaceProgram(), &ocean_.underwaterProgram(), &tonemap_.program()};
 }
 
 bool Renderer::reloadShaders(bool force) {

@@ -6,12 +6,14 @@
 //   terrain     frame uniforms, terrain, grid G-buffer (normal, albedo, material, depth)
 //   atmosphere  G-buffer, atmosphere tables   HDR radiance: surface light, aerial perspective, sky, sun
 //                                             (render/lighting.frag, a post-process over the G-buffer)
+//   ocean       seabed copies, waves, tables  HDR radiance and depth where the sea is (src/ocean), when
+//                                             terrain.ocean is on; the water body first when the camera is under it
 //   tonemap     HDR radiance, exposure        LDR (display-ready sRGB)
 //
 //   ui          LDR                           the window (explorer only: blit + panels)
 //
-// `planet render` reads HDR or LDR back instead of presenting. Later issues add the ocean, surface
-// light and sky+cloud passes between terrain and tonemap.
+// `planet render` reads HDR or LDR back instead of presenting. A later issue adds the
+// clouds between ocean and tonemap.
 #pragma once
 
 #include <filesystem>
@@ -23,6 +25,7 @@
 #include "scene/camera.h"
 #include "gl/handle.h"
 #include "gl/program.h"
+#include "ocean/ocean_pass.h"
 #include "render/fullscreen_pass.h"
 #include "render/profiler.h"
 #include "render/render_targets.h"
@@ -60,6 +63,7 @@ private:
     TerrainPass terrain_;
     FullscreenPass lighting4D_;    // the atmosphere pass with Bruneton's 4D table
     FullscreenPass lightingElek_;  // ... with Elek's 3D table (ELEK_TABLE 1)
+    OceanPass ocean_;
     FullscreenPass tonemap_;
     gl::Buffer frameUniforms_;
     gl::VertexArray emptyVertexArray_;

@@ -12,6 +12,8 @@
 #include <utility>
 #include <variant>
 
+#include "ocean/wave_spectrum.h"
+#include "scene/preset_waves.h"
 #include "scene/scene_params.h"
 #include "util/file_util.h"
 
@@ -74,6 +76,7 @@ void checkSection(const std::string& section, const toml::node& node, const std:
     for (auto&& [key, value] : *table) {
         const std::string name(key.str());
         if (isParam(section, name)) continue;
+        if (section == "ocean" && name == "wave") continue;  // the [[ocean.wave]] list (preset_waves.h)
         const int line = keyLine(key, value);
         warnings.emplace_back(line, unknownKeyWarning(file, line, section + "." + name, knownNames()));
     }
@@ -199,6 +202,11 @@ PresetLoad parsePreset(std::string_view tomlText, const std::string& sourceName)
         const toml::node* node = section ? section->get(spec.key) : nullptr;
         if (node) readParam(spec, *node, sourceName, out.scene);
     }
+    // The waves: the preset's own list, or generated from the [ocean] parameters.
+    if (const toml::node* list = root.at_path("ocean.wave").node())
+        out.scene.waves = readWaveList(*list, sourceName);
+    else
+        out.scene.waves = ocean::generateWaves(out.scene.ocean);
     const std::vector<SceneProblem> problems = validateScene(out.scene);
     if (!problems.empty()) {
         // Blame the field's line when the file sets it; a default it left alone has none.
@@ -244,6 +252,11 @@ std::string presetToToml(const Scene& scene, const std::string& name, const std:
             const ParamRef ref = spec.field(copy);
             text += commentFor(spec, ref) + spec.key + " = " + valueText(ref) + "\n";
         }
+    }
+    // Waves the [ocean] parameters would not generate (edited, or read from a list) are listed.
+    if (!sameWaves(scene.waves, ocean::generateWaves(scene.ocean))) {
+        text += "\n# The individual waves (they replace the set the [ocean] parameters would generate).\n";
+        text += waveListToToml(scene.waves);
     }
     return text;
 }

@@ -11,9 +11,14 @@
 // field name says otherwise.
 #pragma once
 
+#include <vector>
+
 #include <glm/glm.hpp>
 
 #include "atmosphere/atmosphere_params.h"
+#include "ocean/ocean_params.h"
+#include "ocean/wave_spectrum.h"
+#include "ocean/waves.h"
 #include "terrain/terrain_params.h"
 
 namespace planet {
@@ -42,8 +47,13 @@ struct Scene {
     PlanetParams planet;
     AtmosphereParams atmosphere;  // bottom radius is planet.radius_km
     TerrainParams terrain;
+    OceanParams ocean;            // drawn when terrain.ocean is on
+    // The waves the ocean draws: generated from `ocean` (ocean/wave_spectrum.h), or read
+    // from the preset's [[ocean.wave]] list, or edited one by one in the explorer.
+    std::vector<ocean::GerstnerWave> waves = ocean::generateWaves(OceanParams{});
     SunParams sun;
     RenderParams render;
+    double time_s = 0.0;          // simulation clock (waves move with it), s; not a preset parameter
 
     double planetRadiusM() const { return planet.radius_km * 1000.0; }
     // Unit vector from the planet centre towards the sun, world frame.

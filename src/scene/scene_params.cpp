@@ -7,6 +7,7 @@
 #include <variant>
 
 #include "atmosphere/atmosphere_params_table.h"
+#include "ocean/ocean_params_table.h"
 #include "terrain/terrain_params_table.h"
 #include "scene/toml_error.h"
 
@@ -34,6 +35,7 @@ std::vector<ParamSpec> buildTable() {
         [](Scene& s) { return ParamRef{&s.planet.albedo}; });
     addAtmosphereParams(t);
     addTerrainParams(t);
+    addOceanParams(t);
     add("sun", "latitude_deg", "deg", -90.0, 90.0, "Latitude of the subsolar point.",
         [](Scene& s) { return ParamRef{&s.sun.latitude_deg}; });
     add("sun", "longitude_deg", "deg", -180.0, 180.0, "Longitude of the subsolar point.",
@@ -103,6 +105,12 @@ std::vector<SceneProblem> validateScene(const Scene& scene) {
     if (scene.terrain.grid_exponent != 2 && scene.terrain.grid_exponent != 4)
         problems.push_back({"terrain.grid_exponent", "must be 2 or 4 (Michelic Eq. 2), not " +
                                                          std::to_string(scene.terrain.grid_exponent)});
+    if (!(scene.ocean.fade_end > scene.ocean.fade_start))
+        problems.push_back({"ocean.fade_end", "e1 " + formatNumber(scene.ocean.fade_end) +
+                                                  " must be above ocean.fade_start (e0) " +
+                                                  formatNumber(scene.ocean.fade_start) + " (Michelic Eq. 11)"});
+    if (const std::string waves = ocean::validateWaves(scene.waves); !waves.empty())
+        problems.push_back({"ocean.wave", waves});
     return problems;
 }
 

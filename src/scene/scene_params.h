@@ -33,7 +33,7 @@ struct ParamSpec {
 };
 
 // Every parameter of a Scene, grouped by section in a stable order
-// (planet, atmosphere, terrain, sun, render).
+// (planet, atmosphere, terrain, ocean, sun, render).
 const std::vector<ParamSpec>& sceneParams();
 
 // One reason a scene is not valid, blamed on one parameter.
@@ -47,7 +47,10 @@ struct SceneProblem {
 // the cross-field rules:
 //   - atmosphere.top_radius_km > planet.radius_km (the atmosphere's bottom);
 //   - atmosphere.mie_extinction_per_m >= atmosphere.mie_scattering_per_m per
-//     component, since extinction = scattering + absorption.
+//     component, since extinction = scattering + absorption;
+//   - terrain.grid_exponent is 2 or 4;
+//   - ocean.fade_end > ocean.fade_start (Michelic Eq. 11);
+//   - every wave of Scene::waves passes ocean::validateWaves (blamed on "ocean.wave").
 // Empty when the scene is valid: then presetToToml(scene) loads back.
 std::vector<SceneProblem> validateScene(const Scene& scene);
 

@@ -2,21 +2,28 @@
 //
 // shaders/noise/simplex.glsl and shaders/terrain/height.glsl are included here, in one
 // translation unit, into namespace planet::terrain::glsl, the way noise/noise.cpp does:
-// GLM's float types and functions supply the GLSL names and OUT(x) is x&. (The noise
-// functions are compiled a second time here, into this namespace; they are small.)
-#include <algorithm>
+// GLM's float types and functions supply the GLSL names and OUT(x) is x&. The GLSL's
+// samplerCube is the CPU map (a const reference) and textureLod its seamless bilinear
+// filter, noise::sampleContinents. (The noise functions are compiled a second time here,
+// into this namespace; they are small.)
 #include "terrain/height.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <stdexcept>
+#include <utility>
 
 #include <glm/glm.hpp>
+
+#include "noise/noise.h"
 
 namespace planet::terrain {
 namespace glsl {
 using vec3 = glm::vec3;
 using vec4 = glm::vec4;
+using samplerCube = const noise::CubeMap&;
 using glm::abs;
 using glm::asin;
 using glm::clamp;
@@ -34,6 +41,9 @@ using glm::step;
 using std::abs;
 using std::asin;
 using std::floor;
+vec4 textureLod(samplerCube map, vec3 direction, float /*level: the map has one*/) {
+    return noise::sampleContinents(map, glm::dvec3(direction));
+}
 #define OUT(x) x&
 #include "shaders/noise/simplex.glsl"
 #include "shaders/terrain/height.glsl"
@@ -41,9 +51,9 @@ using std::floor;
 }  // namespace glsl
 
 // The C++ mirror is the GLSL struct itself, compiled here; both must keep the std140 layout.
-static_assert(sizeof(glsl::TerrainShape) == 64 && sizeof(TerrainShape) == 64, "std140 size of TerrainShape");
-static_assert(offsetof(TerrainShape, mountainOffset) == 16 && offsetof(TerrainShape, maxHeight) == 32 &&
-                  offsetof(TerrainShape, octaves) == 52 && offsetof(glsl::TerrainShape, octaves) == 52,
+static_assert(sizeof(glsl::TerrainShape) == 48 && sizeof(TerrainShape) == 48, "std140 size of TerrainShape");
+static_assert(offsetof(TerrainShape, maxHeight) == 16 && offsetof(TerrainShape, mountainOctaves) == 32 &&
+                  offsetof(glsl::TerrainShape, mountainOctaves) == 32,
               "std140 offsets of TerrainShape");
 static_assert(int(Material::SeaFloor) == glsl::TERRAIN_MATERIAL_SEA_FLOOR &&
                   int(Material::Rock) == glsl::TERRAIN_MATERIAL_ROCK &&
@@ -56,57 +66,46 @@ static_assert(int(Material::SeaFloor) == glsl::TERRAIN_MATERIAL_SEA_FLOOR &&
 namespace {
 
 glsl::TerrainShape toGlsl(const TerrainShape& s) {
-    return glsl::TerrainShape{s.continentOffset, s.mountainOffset, s.maxHeight,         s.oceanDepth, s.continentFrequency,
-                              s.mountainFrequency, s.ridgedWeight, s.octaves, s.padding0, s.padding1};
-}
-
-// A 32-bit integer hash (Chris Wellons' lowbias32): nearby inputs give unrelated outputs.
-std::uint32_t hash32(std::uint32_t x) {
-    x ^= x >> 16;
-    x *= 0x7feb352dU;
-    x ^= x >> 15;
-    x *= 0x846ca68bU;
-    x ^= x >> 16;
-    return x;
-}
-
-// An offset in [-32, 32) in steps of 1/256 (exact in float; keeps noise coordinates small,
-// see the precision note in simplex.glsl).
-float offsetFromHash(std::uint32_t h) { return float(h & 0x3fffU) / 256.0f - 32.0f; }
-
-glm::vec4 seedOffset(int seed, std::uint32_t stream) {
-    const std::uint32_t base = hash32(static_cast<std::uint32_t>(seed) * 4u + stream);
-    return {offsetFromHash(hash32(base ^ 0x1u)), offsetFromHash(hash32(base ^ 0x2u)), offsetFromHash(hash32(base ^ 0x3u)),
-            0.0f};
+    return glsl::TerrainShape{s.mountainOffset, s.maxHeight,       s.oceanDepth, s.mountainFrequency, s.ridgedWeight,
+                              s.mountainOctaves, s.padding0,        s.padding1,   s.padding2};
 }
 
 }  // namespace
 
-const float kCoastContinent = glsl::TERRAIN_COAST_CONTINENT;
-
 TerrainShape makeTerrainShape(const TerrainParams& p) {
     TerrainShape s{};
-    s.continentOffset = seedOffset(p.seed, 0);
-    s.mountainOffset = seedOffset(p.seed, 1);
+    s.mountainOffset = glm::vec4(noise::seedOffset(p.seed, 1), 0.0f);
     s.maxHeight = static_cast<float>(p.max_height_m);
     s.oceanDepth = static_cast<float>(p.ocean_depth_m);
-    s.continentFrequency = static_cast<float>(p.continent_frequency);
     s.mountainFrequency = static_cast<float>(p.mountain_frequency);
     s.ridgedWeight = static_cast<float>(p.ridged_weight);
-    s.octaves = p.noise_octaves;
+    s.mountainOctaves = p.noise_octaves;
     return s;
 }
 
-float terrainHeight(glm::vec3 d, const TerrainShape& shape) { return glsl::terrainHeight(d, toGlsl(shape)); }
-
-float terrainHeightGrad(glm::vec3 d, const TerrainShape& shape, glm::vec3& gradient) {
-    return glsl::terrainHeightGrad(d, toGlsl(shape), gradient);
+noise::ContinentParams continentParams(const TerrainParams& p) {
+    noise::ContinentParams c;
+    c.seed = p.seed;
+    c.frequency = p.continent_frequency;
+    c.octaves = p.continent_octaves;
+    c.seaFraction = p.sea_fraction;
+    return c;
 }
 
-float continentValue(glm::vec3 d, const TerrainShape& shape) { return glsl::continentValue(d, toGlsl(shape)); }
+float terrainHeight(glm::vec3 d, const TerrainShape& shape, const noise::CubeMap& continents) {
+    return glsl::terrainHeight(d, toGlsl(shape), continents);
+}
 
-glm::vec3 terrainNormal(glm::vec3 d, const TerrainShape& shape, float planetRadius) {
-    return glsl::terrainNormal(d, toGlsl(shape), planetRadius);
+float terrainHeightGrad(glm::vec3 d, const TerrainShape& shape, const noise::CubeMap& continents,
+                        glm::vec3& gradient) {
+    return glsl::terrainHeightGrad(d, toGlsl(shape), continents, gradient);
+}
+
+float continentValue(glm::vec3 d, const noise::CubeMap& continents) { return glsl::continentValue(d, continents); }
+
+glm::vec3 terrainNormal(glm::vec3 d, const TerrainShape& shape, const noise::CubeMap& continents,
+                        float planetRadius) {
+    return glsl::terrainNormal(d, toGlsl(shape), continents, planetRadius);
 }
 
 float terrainSlope(glm::vec3 normal, glm::vec3 up) { return glsl::terrainSlope(normal, up); }
@@ -128,11 +127,40 @@ MaterialThresholds materialThresholds() {
             glsl::TERRAIN_BLEND_HEIGHT_M, glsl::TERRAIN_BLEND_SNOW_M, glsl::TERRAIN_BLEND_SLOPE};
 }
 
-double surfaceHeightM(const TerrainParams& params, const glm::dvec3& position) {
+// ------------------------------------------------------------------ HeightField
+
+HeightField::HeightField(std::filesystem::path cacheRoot) : cacheRoot_(std::move(cacheRoot)) {}
+
+bool HeightField::update(const TerrainParams& params) {
+    params_ = params;
+    shape_ = makeTerrainShape(params);
+    const noise::ContinentParams wanted = continentParams(params);
+    if (ready() && wanted == baked_ && continents_.size == params.continent_map_size) return false;
+    continents_ = noise::loadOrBakeContinents(wanted, params.continent_map_size, cacheRoot_);
+    baked_ = wanted;
+    return true;
+}
+
+const noise::CubeMap& HeightField::map() const {
+    if (!ready()) throw std::logic_error("terrain::HeightField used before update()");
+    return continents_;
+}
+
+float HeightField::height(glm::vec3 d) const { return terrainHeight(d, shape_, map()); }
+
+float HeightField::heightGrad(glm::vec3 d, glm::vec3& gradient) const {
+    return terrainHeightGrad(d, shape_, map(), gradient);
+}
+
+glm::vec3 HeightField::normal(glm::vec3 d, float planetRadius) const {
+    return terrainNormal(d, shape_, map(), planetRadius);
+}
+
+double surfaceHeightM(const HeightField& field, const glm::dvec3& position) {
     const double length = glm::length(position);
     if (!(length > 0.0)) return 0.0;
-    const double height = terrainHeight(glm::vec3(position / length), makeTerrainShape(params));
-    return params.ocean ? std::max(0.0, height) : height;
+    const double height = field.height(glm::vec3(position / length));
+    return field.params().ocean ? std::max(0.0, height) : height;
 }
 
 }  // namespace planet::terrain

@@ -1,14 +1,22 @@
 // Terrain height field, normal and material on the CPU: the very GLSL of
-// shaders/terrain/height.glsl compiled as C++ in float (as noise/noise.h does for the noise).
+// shaders/terrain/height.glsl compiled as C++ in float (as noise/noise.h does for the noise),
+// with the baked continents map (noise/continents.h) where the GPU has its samplerCube.
 //
 // Directions are unit vectors in the world frame (+Z north); heights in metres above sea
 // level, in [-ocean_depth_m, max_height_m]. The GLSL names are the same. tests/
 // test_terrain_height.cpp checks the properties and the GPU's values against these.
+//
+// HeightField bundles what the functions take (shape + continents map) and keeps it in
+// step with TerrainParams; whoever needs terrain heights on the CPU owns one (the Session,
+// for the camera's ground). The terrain pass bakes or loads the same map for the GPU.
 #pragma once
+
+#include <filesystem>
 
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 
+#include "noise/continents.h"
 #include "terrain/terrain_params.h"
 
 namespace planet::terrain {
@@ -17,44 +25,81 @@ namespace planet::terrain {
 enum class Material : int { SeaFloor = 0, Rock = 1, Snow = 2, Sand = 3, Grass = 4 };
 inline constexpr int kMaterialCount = 5;
 
-// TerrainParams in float, as the shader takes it; mirror of the GLSL struct TerrainShape,
-// laid out as std140 (64 bytes, static_asserted in height.cpp), so it can be copied into a
-// uniform block as is.
+// TerrainParams in float, as the shader takes it (the mountains; the continents are in the
+// map); mirror of the GLSL struct TerrainShape, laid out as std140 (48 bytes,
+// static_asserted in height.cpp), so it can be copied into a uniform block as is.
 struct TerrainShape {
-    glm::vec4 continentOffset;  // noise-space offset of the continents (xyz), from the seed
     glm::vec4 mountainOffset;   // noise-space offset of the mountains (xyz), from the seed
     float maxHeight;            // m
     float oceanDepth;           // m
-    float continentFrequency;   // per planet radius
     float mountainFrequency;    // per planet radius
     float ridgedWeight;         // [0, 1]
-    int octaves;                // [1, 10]
+    int mountainOctaves;        // noise layers, [0, 10]; 0: continents only
     float padding0 = 0.0f;
     float padding1 = 0.0f;
+    float padding2 = 0.0f;
 };
 
-// The shape for a set of parameters. The seed picks the noise offsets (hashed into
-// [-32, 32)^3, in steps of 1/256: nearby seeds give unrelated planets).
+// The shape for a set of parameters. The seed picks the mountains' noise offset
+// (noise::seedOffset, stream 1).
 TerrainShape makeTerrainShape(const TerrainParams& params);
 
-// Height above sea level, m. GLSL: terrainHeight(d, shape).
-float terrainHeight(glm::vec3 unitDirection, const TerrainShape& shape);
+// What the continents map is baked from: seed, continent_frequency, continent_octaves,
+// sea_fraction (the map's face size is continent_map_size).
+noise::ContinentParams continentParams(const TerrainParams& params);
 
-// Height of the visible surface above sea level (m) under a world position:
-// the terrain, or 0 over the sea (the flat water stand-in the terrain pass
-// draws) when the world has an ocean.
-double surfaceHeightM(const TerrainParams& params, const glm::dvec3& position);
+// Height above sea level, m. GLSL: terrainHeight(d, shape, continents).
+float terrainHeight(glm::vec3 unitDirection, const TerrainShape& shape, const noise::CubeMap& continents);
 
 // Height and its gradient with respect to the direction as a point in R^3 (only the
 // tangential part means anything: m per radian). GLSL: terrainHeightGrad.
-float terrainHeightGrad(glm::vec3 unitDirection, const TerrainShape& shape, glm::vec3& gradient);
+float terrainHeightGrad(glm::vec3 unitDirection, const TerrainShape& shape, const noise::CubeMap& continents,
+                        glm::vec3& gradient);
 
-// Continent value in [-1, 1]; land where above kCoastContinent. GLSL: continentValue.
-float continentValue(glm::vec3 unitDirection, const TerrainShape& shape);
-extern const float kCoastContinent;
+// Continent value in [-1, 1] (the map, filtered); land where above 0. GLSL: continentValue.
+float continentValue(glm::vec3 unitDirection, const noise::CubeMap& continents);
 
 // Unit surface normal of the terrain on a planet of radius planetRadius (m). GLSL: terrainNormal.
-glm::vec3 terrainNormal(glm::vec3 unitDirection, const TerrainShape& shape, float planetRadius);
+glm::vec3 terrainNormal(glm::vec3 unitDirection, const TerrainShape& shape, const noise::CubeMap& continents,
+                        float planetRadius);
+
+// The terrain's height field on the CPU: the shape and the continents map for one set of
+// TerrainParams, the map from the cache under `cacheRoot` or baked there (see update()).
+class HeightField {
+public:
+    explicit HeightField(std::filesystem::path cacheRoot = noise::defaultContinentsCacheRoot());
+
+    // Follows `params`: the shape at once; the map only when a parameter of the bake
+    // (continentParams, continent_map_size) changed or there is none yet: loaded from the
+    // cache, or baked, a stall of about a second at the default size. Returns true when it
+    // replaced the map. Throws std::invalid_argument for parameters out of range.
+    bool update(const TerrainParams& params);
+
+    bool ready() const { return continents_.size > 0; }
+    const TerrainParams& params() const { return params_; }
+    const TerrainShape& shape() const { return shape_; }
+    const noise::CubeMap& continents() const { return continents_; }  // empty before the first update
+
+    // terrainHeight, terrainHeightGrad, terrainNormal with this field's shape and map.
+    // Throw std::logic_error before the first update().
+    float height(glm::vec3 unitDirection) const;
+    float heightGrad(glm::vec3 unitDirection, glm::vec3& gradient) const;
+    glm::vec3 normal(glm::vec3 unitDirection, float planetRadius) const;
+
+private:
+    const noise::CubeMap& map() const;
+
+    std::filesystem::path cacheRoot_;
+    TerrainParams params_;
+    TerrainShape shape_{};
+    noise::ContinentParams baked_;  // what continents_ was baked from
+    noise::CubeMap continents_;
+};
+
+// Height of the visible surface above sea level (m) under a world position:
+// the terrain, or 0 over the sea (the flat water stand-in the terrain pass
+// draws) when the world has an ocean (field.params().ocean).
+double surfaceHeightM(const HeightField& field, const glm::dvec3& position);
 
 // Rise over run of a surface with this normal; 0 flat, 1 at 45 deg. GLSL: terrainSlope.
 float terrainSlope(glm::vec3 normal, glm::vec3 up);

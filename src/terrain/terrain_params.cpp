@@ -14,7 +14,8 @@ void addTerrainParams(std::vector<ParamSpec>& table) {
         &TerrainParams::max_height_m);
     add("ocean_depth_m", "m", 0.0, 20000.0, "Depth of the ocean floor below sea level, away from the coasts.",
         &TerrainParams::ocean_depth_m);
-    add("noise_octaves", "", 1.0, 10.0, "Octaves of the continent and mountain noise; each adds detail at half the size.",
+    add("noise_octaves", "", 0.0, 10.0,
+        "Mountain noise layers (Michelic Table 1); each adds detail at half the size. 0: continents only.",
         &TerrainParams::noise_octaves);
     add("mountain_frequency", "1/radius", 0.1, 10000.0,
         "Frequency of the largest mountain features, per planet radius.",
@@ -22,9 +23,20 @@ void addTerrainParams(std::vector<ParamSpec>& table) {
     add("ridged_weight", "", 0.0, 1.0, "Mountain shape: 0 rounded fBm hills, 1 sharp ridged crests.",
         &TerrainParams::ridged_weight);
     add("continent_frequency", "1/radius", 0.01, 100.0,
-        "Frequency of the continents, per planet radius: larger gives more, smaller land masses.",
+        "Frequency of the continents, per planet radius: larger gives more, smaller land masses. Rebakes the "
+        "continents map.",
         &TerrainParams::continent_frequency);
-    add("seed", "", 0.0, 1e6, "Noise seed: another value gives another planet with the same statistics.",
+    add("continent_octaves", "", 1.0, 10.0,
+        "fBm octaves baked into the continents map; octaves finer than about 4 texels alias. Rebakes the map.",
+        &TerrainParams::continent_octaves);
+    add("sea_fraction", "", 0.0, 1.0,
+        "Share of the planet's surface below sea level; the coastline moves with it. Rebakes the continents map.",
+        &TerrainParams::sea_fraction);
+    add("continent_map_size", "texels", 16.0, 2048.0,
+        "Face size of the continents cube map (6 faces of RGBA32F, 24 MiB at 512). Rebakes the map.",
+        &TerrainParams::continent_map_size);
+    add("seed", "", 0.0, 1e6,
+        "Noise seed: another value gives another planet with the same statistics. Rebakes the continents map.",
         &TerrainParams::seed);
     add("grid_size", "", 8.0, 512.0, "Vertices per side of the projected grid (Michelic §3); tessellation refines it.",
         &TerrainParams::grid_size);

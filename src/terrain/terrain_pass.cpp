@@ -1,5 +1,7 @@
 #include "terrain/terrain_pass.h"
 
+#include <string>
+#include <utility>
 #include <vector>
 
 #include "terrain/height.h"
@@ -8,12 +10,14 @@ namespace planet {
 
 namespace {
 constexpr GLuint kTerrainShapeBinding = 2;
+constexpr GLuint kContinentsUnit = 10;  // layout(binding = 10) uContinents in terrain.tese / terrain.frag
 }  // namespace
 
-TerrainPass::TerrainPass(const gl::ShaderSources& sources)
+TerrainPass::TerrainPass(const gl::ShaderSources& sources, std::filesystem::path continentsCache)
     : program_(sources, gl::ProgramDesc{"terrain",
                                         {"terrain/terrain.vert", "terrain/terrain.tesc", "terrain/terrain.tese",
-                                         "terrain/terrain.frag"}}) {
+                                         "terrain/terrain.frag"}}),
+      continentsCache_(std::move(continentsCache)) {
     glNamedBufferStorage(shape_.id(), sizeof(terrain::TerrainShape), nullptr, GL_DYNAMIC_STORAGE_BIT);
     shape_.label("TerrainShape");
     vertexArray_.label("terrain grid");
@@ -50,6 +54,28 @@ void TerrainPass::rebuildMesh(int size) {
     indexCount_ = static_cast<GLsizei>(patches.size());
 }
 
+gl::Texture makeContinentsTexture(const noise::CubeMap& map) {
+    const int n = map.size;
+    gl::Texture texture(GL_TEXTURE_CUBE_MAP);
+    glTextureStorage2D(texture.id(), 1, GL_RGBA32F, n, n);
+    for (int face = 0; face < 6; ++face)  // DSA: a cube map's faces are layers 0..5 in GL's face order
+        glTextureSubImage3D(texture.id(), 0, 0, 0, face, n, n, 1, GL_RGBA, GL_FLOAT, &map.at(face, 0, 0));
+    glTextureParameteri(texture.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    glTextureParameteri(texture.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    for (GLenum wrap : {GL_TEXTURE_WRAP_S, GL_TEXTURE_WRAP_T, GL_TEXTURE_WRAP_R})
+        glTextureParameteri(texture.id(), wrap, GL_CLAMP_TO_EDGE);
+    texture.label("continents " + std::to_string(n) + "^2 x 6");
+    return texture;
+}
+
+void TerrainPass::updateContinents(const TerrainParams& params) {
+    const noise::ContinentParams wanted = terrain::continentParams(params);
+    if (continentsBaked_ == wanted && continentsSize_ == params.continent_map_size) return;
+    continents_ = makeContinentsTexture(noise::loadOrBakeContinents(wanted, params.continent_map_size, continentsCache_));
+    continentsBaked_ = wanted;
+    continentsSize_ = params.continent_map_size;
+}
+
 const TerrainPass::Locations& TerrainPass::locations() {
     const GLuint p = program_.id();
     if (locations_.program == p) return locations_;
@@ -81,6 +107,10 @@ void TerrainPass::draw(const Scene& scene, const Camera& camera) {
     const terrain::TerrainShape shape = terrain::makeTerrainShape(scene.terrain);
     glNamedBufferSubData(shape_.id(), 0, sizeof shape, &shape);
     glBindBufferBase(GL_UNIFORM_BUFFER, kTerrainShapeBinding, shape_.id());
+    updateContinents(scene.terrain);
+    glBindTextureUnit(kContinentsUnit, continents_.id());
+    // Filter across cube faces as sampleContinents does (global state; harmless to the other passes).
+    glEnable(GL_TEXTURE_CUBE_MAP_SEAMLESS);
 
     const Locations& l = locations();
     const GLuint p = l.program;

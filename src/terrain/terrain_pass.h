@@ -2,6 +2,11 @@
 // on the GPU and displaced by the shared height function (terrain/height.glsl),
 // written into the G-buffer like any surface.
 //
+// The continents come from a cube map baked once (noise/continents.h; Michelic §6),
+// loaded from the cache or baked when the pass first draws and again whenever a
+// parameter of the bake changes (a stall: about a second at the default size), and
+// sampled as an RGBA32F samplerCube with GL_LINEAR and seamless cube map filtering.
+//
 //   terrain.vert  grid coordinates of the N x N vertices ((N-1)^2 quad patches)
 //   terrain.tesc  frustum culling with the highest terrain, levels from edge size on screen
 //   terrain.tese  grid -> sphere direction (double) -> height -> camera-relative position
@@ -11,17 +16,28 @@
 // vertices stay put while the camera moves a little: no swimming.
 #pragma once
 
+#include <filesystem>
+#include <optional>
+
 #include "gl/handle.h"
 #include "gl/program.h"
 #include "grid/projected_grid.h"
+#include "noise/continents.h"
 #include "scene/camera.h"
 #include "scene/scene.h"
 
 namespace planet {
 
+// The continents map as the terrain samples it: an immutable RGBA32F cube map, GL_LINEAR,
+// one level (the shaders read level 0), clamped to the edge (seamless filtering, which
+// replaces the clamp, is the context's GL_TEXTURE_CUBE_MAP_SEAMLESS, enabled by draw()).
+gl::Texture makeContinentsTexture(const noise::CubeMap& map);
+
 class TerrainPass {
 public:
-    explicit TerrainPass(const gl::ShaderSources& sources);
+    // The continents map is cached under `continentsCache`.
+    explicit TerrainPass(const gl::ShaderSources& sources,
+                         std::filesystem::path continentsCache = noise::defaultContinentsCacheRoot());
 
     // Draws into the bound G-buffer (depth test on, reversed-Z).
     void draw(const Scene& scene, const Camera& camera);
@@ -37,12 +53,17 @@ private:
     };
     const Locations& locations();
     void rebuildMesh(int size);
+    void updateContinents(const TerrainParams& params);
 
     gl::HotProgram program_;
     gl::VertexArray vertexArray_;
     gl::Buffer vertices_;
     gl::Buffer indices_;
     gl::Buffer shape_;
+    std::filesystem::path continentsCache_;
+    gl::Texture continents_{GL_TEXTURE_CUBE_MAP};  // RGBA32F: elevation, gradient (noise/continents.h)
+    std::optional<noise::ContinentParams> continentsBaked_;  // what continents_ holds (none yet: nullopt)
+    int continentsSize_ = 0;
     int meshSize_ = 0;
     GLsizei indexCount_ = 0;
     GridParams grid_;

@@ -9,12 +9,16 @@
 namespace planet {
 
 std::string readFile(const std::filesystem::path& path) {
-    std::ifstream in(path, std::ios::binary);
+    std::ifstream in(path, std::ios::binary | std::ios::ate);
     if (!in) throw FileError("cannot open '" + path.string() + "': " + std::strerror(errno));
-    std::ostringstream ss;
-    ss << in.rdbuf();
-    if (in.bad()) throw FileError("error reading '" + path.string() + "'");
-    return ss.str();
+    // One read of the whole file: streaming through an ostringstream took 0.36 s for the
+    // 25 MB continents map.
+    const std::streamoff size = in.tellg();
+    if (size < 0) throw FileError("error reading '" + path.string() + "'");
+    std::string bytes(static_cast<std::size_t>(size), '\0');
+    in.seekg(0);
+    if (!in.read(bytes.data(), size)) throw FileError("error reading '" + path.string() + "'");
+    return bytes;
 }
 
 void writeFileAtomic(const std::filesystem::path& path, std::string_view bytes) {

@@ -1,0 +1,51 @@
+// The wave set on the GPU and the sums over it (GLSL only; the per-wave terms are the
+// shared gerstner.glsl). Include after terrain/grid.glsl (uCameraPosition) and ocean/gerstner.glsl.
+layout(std430, binding = 3) readonly buffer OceanWaves {
+    OceanWave oceanWaves[];
+};
+uniform int uWaveCount;
+uniform float uFadeStart;  // e0 of Michelic Eq. 11
+uniform float uFadeEnd;    // e1
+
+// v - v_c: the point's unit direction minus the camera's, formed in double (gerstner.glsl).
+vec3 oceanDirectionOffset(dvec3 direction) { return vec3(direction - normalize(uCameraPosition)); }
+
+// Michelic Eq. 8 without its v r term: the displacement from the sea sphere at unit
+// direction v, keeping the waves a surface sampled every `footprint` metres can carry.
+vec3 oceanDisplacement(vec3 v, vec3 dv, float footprint) {
+    vec3 displacement = vec3(0.0);
+    for (int i = 0; i < uWaveCount; ++i) {
+        OceanWave w = oceanWaves[i];
+        float lod = gerstnerLod(w, footprint);
+        if (lod <= 0.0) continue;
+        vec3 travel;
+        float oneMinusAbsCos;
+        float phase = gerstnerPhase(w, v, dv, travel, oneMinusAbsCos);
+        float q = gerstnerSteepness(w, oneMinusAbsCos, uFadeStart, uFadeEnd);
+        float a = w.shape.x * lod;
+        displacement += v * (a * sin(phase)) + travel * (q * a * cos(phase));
+    }
+    return displacement;
+}
+
+// Michelic Eq. 10's normal from the waves a pixel of `footprint` metres resolves; the
+// slopes of the waves it cannot resolve go into slopeVariance instead (the mean square
+// slope of a sine of amplitude A and wavenumber k is (A k)^2 / 2), which widens the sun's
+// glitter as a rougher sea does.
+vec3 oceanNormal(vec3 v, vec3 dv, float footprint, out float slopeVariance) {
+    vec3 normal = v;
+    slopeVariance = 0.0;
+    for (int i = 0; i < uWaveCount; ++i) {
+        OceanWave w = oceanWaves[i];
+        float lod = gerstnerLod(w, footprint);
+        float ak = w.shape.x * w.scale.x;
+        slopeVariance += (1.0 - lod) * 0.5 * ak * ak;
+        if (lod <= 0.0) continue;
+        vec3 travel;
+        float oneMinusAbsCos;
+        float phase = gerstnerPhase(w, v, dv, travel, oneMinusAbsCos);
+        float q = gerstnerSteepness(w, oneMinusAbsCos, uFadeStart, uFadeEnd);
+        normal -= v * (lod * q * ak * sin(phase)) + travel * (lod * ak * cos(phase));
+    }
+    return normalize(normal);
+}

@@ -1,0 +1,35 @@
+// Optics of sea water, shared by the ocean surface and the underwater pass.
+//
+// Extinction per metre for R, G, B (680, 550, 440 nm): pure water's absorption (Pope &
+// Fry 1997: 0.45, 0.057, 0.0066 1/m) plus a little scattering by particles, so clear
+// coastal water: red is gone after a few metres, blue reaches tens of metres.
+const vec3 WATER_EXTINCTION_PER_M = vec3(0.46, 0.075, 0.035);
+// Radiance leaving deep water per unit irradiance over pi: the light scattered back up
+// from the water body, dark blue (open-ocean remote-sensing reflectance of a few per cent
+// in blue, under one in red).
+const vec3 DEEP_WATER_ALBEDO = vec3(0.002, 0.012, 0.03);
+const float WATER_F0 = 0.02;                    // normal-incidence reflectance, n = 1.333
+
+vec3 waterTransmittanceAlong(float pathM) { return exp(-WATER_EXTINCTION_PER_M * pathM); }
+
+vec3 deepWaterRadiance(vec3 irradiance) { return DEEP_WATER_ALBEDO / PI * irradiance; }
+
+// Schlick's approximation of the Fresnel reflectance of water for incidence cosine c.
+float waterFresnel(float c) {
+    float m = 1.0 - clamp(c, 0.0, 1.0);
+    return WATER_F0 + (1.0 - WATER_F0) * m * m * m * m * m;
+}
+
+// Sun glitter: radiance towards `toViewer` per unit solar irradiance at the surface, for a
+// sea whose unresolved facets have isotropic Gaussian slopes of total variance
+// slopeVariance around `normal` (Bruneton et al. 2010, Eq. 14:
+// F p(zeta_h) / (4 cos(theta_v) cos^4(theta_h))).
+float sunGlitter(vec3 normal, vec3 toViewer, vec3 toSun, float slopeVariance) {
+    vec3 h = normalize(toViewer + toSun);
+    float cosH = max(dot(h, normal), 1e-3);
+    float cosV = max(dot(toViewer, normal), 1e-3);
+    float sigma2 = 0.5 * slopeVariance;  // per axis
+    float tan2 = (1.0 - cosH * cosH) / (cosH * cosH);
+    float p = exp(-0.5 * tan2 / sigma2) / (2.0 * PI * sigma2);
+    return waterFresnel(dot(h, toViewer)) * p / (4.0 * cosV * cosH * cosH * cosH * cosH);
+}

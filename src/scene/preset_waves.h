@@ -1,0 +1,34 @@
+// The preset's list of individual ocean waves, [[ocean.wave]] (see preset.h):
+//
+//     [[ocean.wave]]
+//     origin = [0.0, 0.0, 1.0]   # unit vector where the wave starts (or latitude_deg + longitude_deg)
+//     amplitude_m = 0.4
+//     wavelength_m = 30.0
+//     steepness = 0.3            # Q, [0, 1]
+//     speed_mps = 6.84           # optional: deep-water dispersion sqrt(g / k) when absent
+//     phase_rad = 0.0            # optional
+//
+// A preset with such a list uses exactly those waves; one without generates them
+// from the [ocean] parameters (ocean/wave_spectrum.h).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include <toml++/toml.h>
+
+#include "ocean/waves.h"
+
+namespace planet {
+
+// Reads the list at node (the value of ocean.wave). Throws InputError naming file,
+// line and field (e.g. "ocean.wave[2].steepness") for a bad entry.
+std::vector<ocean::GerstnerWave> readWaveList(const toml::node& node, const std::string& file);
+
+// The list as TOML text: one [[ocean.wave]] table per wave, every field written.
+std::string waveListToToml(const std::vector<ocean::GerstnerWave>& waves);
+
+// True when two wave lists are identical field for field.
+bool sameWaves(const std::vector<ocean::GerstnerWave>& a, const std::vector<ocean::GerstnerWave>& b);
+
+}  // namespace planet
