@@ -146,6 +146,18 @@ TEST_F(CliTest, BenchTerrainSuiteSweepsGridSizeAndOctaves) {
     EXPECT_EQ(configurations, 12u);  // grid 50/100/200 x continents only, 1, 5, 10 noise layers
 }
 
+TEST_F(CliTest, BenchOceanSuiteSweepsWaveCounts) {
+    const auto r = runCommand(planet("bench --suite ocean --size 32x18 --frames 1 --warmup 0 --csv o.csv --plot ''"));
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    std::ifstream csv(dir / "o.csv");
+    std::string text((std::istreambuf_iterator<char>(csv)), {});
+    for (const char* config : {"20 waves", "50 waves", "100 waves", "1000 waves"})  // Michelic Table 2
+        EXPECT_TRUE(contains(text, std::string(",") + config + ",ocean,1,")) << config << "\n" << text;
+    std::size_t configurations = 0;
+    for (std::size_t at = text.find(",ocean,"); at != std::string::npos; at = text.find(",ocean,", at + 1)) ++configurations;
+    EXPECT_EQ(configurations, 4u);
+}
+
 TEST_F(CliTest, ExploreWithoutDisplayRendersAStillAndSaysWhere) {
     const auto r = runCommand(planet("explore --size 64x36 --headless-out still.png"));
     ASSERT_EQ(r.exitCode, 0) << r.output;

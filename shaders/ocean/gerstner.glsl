@@ -24,7 +24,8 @@ struct OceanWave {
     vec4 originKr;  // xyz: origin o_i (unit); w: k_i r (rad per radian of arc)
     vec4 frameE;    // xyz: e, the unit tangent at o_i towards the camera; w: sin(tc)
     vec4 shape;     // x: amplitude A_i (m); y: steepness Q_i; z: cos(tc); w: phase at the camera (rad)
-    vec4 scale;     // x: wavenumber k_i (rad/m); y: wavelength (m); zw: unused
+    vec4 scale;     // x: wavenumber k_i (rad/m); y: wavelength (m); z: sum of (A k)^2 / 2 over this
+                    // wave and the shorter ones after it (records are sorted longest first); w: unused
 };
 
 vec3 oceanXyz(vec4 v) { return vec3(v.x, v.y, v.z); }

@@ -1,5 +1,6 @@
 // The wave set on the GPU and the sums over it (GLSL only; the per-wave terms are the
-// shared gerstner.glsl). Include after terrain/grid.glsl (uCameraPosition) and ocean/gerstner.glsl.
+// shared gerstner.glsl). The records come longest first (ocean/ocean_gpu.h), so each sum
+// stops at the first wave its sampling cannot carry. Include after terrain/grid.glsl (uCameraPosition) and ocean/gerstner.glsl.
 layout(std430, binding = 3) readonly buffer OceanWaves {
     OceanWave oceanWaves[];
 };
@@ -17,7 +18,7 @@ vec3 oceanDisplacement(vec3 v, vec3 dv, float footprint) {
     for (int i = 0; i < uWaveCount; ++i) {
         OceanWave w = oceanWaves[i];
         float lod = gerstnerLod(w, footprint);
-        if (lod <= 0.0) continue;
+        if (lod <= 0.0) break;  // sorted longest first: the rest are shorter still
         vec3 travel;
         float oneMinusAbsCos;
         float phase = gerstnerPhase(w, v, dv, travel, oneMinusAbsCos);
@@ -38,9 +39,12 @@ vec3 oceanNormal(vec3 v, vec3 dv, float footprint, out float slopeVariance) {
     for (int i = 0; i < uWaveCount; ++i) {
         OceanWave w = oceanWaves[i];
         float lod = gerstnerLod(w, footprint);
+        if (lod <= 0.0) {  // sorted longest first: this and the rest only roughen
+            slopeVariance += w.scale.z;
+            break;
+        }
         float ak = w.shape.x * w.scale.x;
         slopeVariance += (1.0 - lod) * 0.5 * ak * ak;
-        if (lod <= 0.0) continue;
         vec3 travel;
         float oneMinusAbsCos;
         float phase = gerstnerPhase(w, v, dv, travel, oneMinusAbsCos);

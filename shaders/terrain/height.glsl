@@ -28,9 +28,9 @@
 //   n = normalize(d - grad_T h / (R + h)),
 // exact for the mountains, independent of any mesh, so lighting does not change when the
 // tessellation does. The continents' gradient is the fBm's analytic gradient at the texel
-// centres, filtered like the elevation: smooth, where the filtered elevation's own slope is
-// constant over each texel and jumps at texel edges (facets); the two agree to the
-// field's change of slope over a texel (tests measure it). Caveat: ridged fBm has a crease
+// centres, filtered like the elevation: continuous, where the filtered elevation is linear
+// between texel centres and its own slope jumps at each of them (facets); the two agree
+// over a texel to the map's resolution (tests measure it). Caveat: ridged fBm has a crease
 // at each crest (|noise| at noise = 0); there the normal jumps, as the surface does.
 //
 // Materials (terrainMaterial): a hard rule in priority order, and terrainMaterialWeight, its

@@ -15,6 +15,7 @@
 #include "app/session.h"
 #include "gl/context.h"
 #include "gl/debug.h"
+#include "ocean/wave_spectrum.h"
 #include "render/plot.h"
 #include "render/renderer.h"
 #include "render/stats.h"
@@ -161,6 +162,19 @@ int runBench(const BenchOptions& o) {
                 logInfo("bench terrain " + session.view.name + " on view '" + views.front().name + "'");
                 for (BenchRow& r : measureView(frame, session, size, o)) rows.push_back(std::move(r));
             }
+        }
+    } else if (o.suite == "ocean") {
+        // Michelic Table 2: the same view over open sea, 20, 50, 100 and 1000 waves generated
+        // from the preset's [ocean] parameters. The view: "sea" unless --views names others.
+        const auto sea = std::find_if(views.begin(), views.end(), [](const View& v) { return v.name == "sea"; });
+        const View& view = o.views.empty() && sea != views.end() ? *sea : views.front();
+        applyView(view, session);
+        for (int count : {20, 50, 100, 1000}) {
+            session.scene.ocean.wave_count = count;
+            session.scene.waves = ocean::generateWaves(session.scene.ocean);
+            session.view.name = std::to_string(count) + " waves";
+            logInfo("bench ocean " + session.view.name + " on view '" + view.name + "'");
+            for (BenchRow& r : measureView(frame, session, size, o)) rows.push_back(std::move(r));
         }
     } else {
         for (const View& view : views) {

@@ -36,7 +36,7 @@ struct RenderOptions {
 struct BenchOptions {
     CommonOptions common;
     std::vector<std::string> views;  // view files or folders of them
-    std::string suite = "views";     // "views": each view as it is; "terrain": Michelic's Table 1 sweep
+    std::string suite = "views";     // "views": each view as it is; "terrain" / "ocean": Michelic's Table 1 / 2 sweeps
     int frames = 60;
     int warmup = 10;
     std::string csv = "out/bench.csv";

@@ -55,8 +55,9 @@ int main(int argc, char** argv) {
     benchCmd->add_option("--views", bench.views, "View files or folders of them (default: assets/views)");
     benchCmd->add_option("--suite", bench.suite,
                          "views: every view as set up; terrain: grid 50/100/200 x continents only, 1, 5, 10 noise "
-                         "layers on the first view (Michelic Table 1)")
-        ->check(CLI::IsMember({"views", "terrain"}))
+                         "layers on the first view (Michelic Table 1); ocean: 20/50/100/1000 waves on the view 'sea' "
+                         "(Michelic Table 2)")
+        ->check(CLI::IsMember({"views", "terrain", "ocean"}))
         ->capture_default_str();
     benchCmd->add_option("--frames", bench.frames, "Recorded frames per view")->capture_default_str();
     benchCmd->add_option("--warmup", bench.warmup, "Unrecorded frames per view before recording")->capture_default_str();

@@ -47,9 +47,16 @@ glm::dvec3 cameraDirection(const glm::dvec3& cameraPosition) {
 std::vector<OceanWaveGpu> packWaves(const std::vector<GerstnerWave>& waves, const glm::dvec3& cameraPosition,
                                     double seaRadius, double time) {
     const glm::dvec3 vc = cameraDirection(cameraPosition);
+    // Longest first, so that the shaders can stop at the first wave too short for the
+    // sampling and take the rest's slope variance from scale.z in one step.
+    std::vector<const GerstnerWave*> order;
+    for (const GerstnerWave& w : waves) order.push_back(&w);
+    std::stable_sort(order.begin(), order.end(),
+                     [](const GerstnerWave* a, const GerstnerWave* b) { return a->wavelength_m > b->wavelength_m; });
     std::vector<OceanWaveGpu> records;
     records.reserve(waves.size());
-    for (const GerstnerWave& w : waves) {
+    for (const GerstnerWave* wave : order) {
+        const GerstnerWave& w = *wave;
         const glm::dvec3 o = glm::normalize(w.origin);
         const double cosC = glm::dot(vc, o);
         const glm::dvec3 tangent = vc - cosC * o;
@@ -64,6 +71,12 @@ std::vector<OceanWaveGpu> packWaves(const std::vector<GerstnerWave>& waves, cons
                                        glm::vec4(static_cast<float>(w.amplitude_m), static_cast<float>(w.steepness),
                                                  static_cast<float>(cosC), static_cast<float>(phase)),
                                        glm::vec4(static_cast<float>(k), static_cast<float>(w.wavelength_m), 0.0f, 0.0f)});
+    }
+    double tail = 0.0;  // slope variance (A k)^2 / 2 of this wave and every shorter one
+    for (auto r = records.rbegin(); r != records.rend(); ++r) {
+        const double slope = double(r->shape.x) * double(r->scale.x);
+        tail += 0.5 * slope * slope;
+        r->scale.z = static_cast<float>(tail);
     }
     return records;
 }

@@ -20,11 +20,11 @@ struct OceanWaveGpu {
     glm::vec4 originKr;  // o_i, k_i r
     glm::vec4 frameE;    // e (unit tangent at o_i towards the camera), sin(tc)
     glm::vec4 shape;     // A_i, Q_i, cos(tc), phase at the camera in [-pi, pi)
-    glm::vec4 scale;     // k_i, wavelength, 0, 0
+    glm::vec4 scale;     // k_i, wavelength, slope variance of this and all shorter waves, 0
 };
 
 // The records for a camera at `cameraPosition` (world, m) over a sea of radius
-// seaRadius (m) at time t (s).
+// seaRadius (m) at time t (s), longest wave first.
 std::vector<OceanWaveGpu> packWaves(const std::vector<GerstnerWave>& waves, const glm::dvec3& cameraPosition,
                                     double seaRadius, double time);
 
