@@ -19,6 +19,10 @@
 // did you mean 'planet.radius_km'?") so an old binary can still read a newer
 // preset.
 //
+// The ocean's waves (Scene::waves) are the one list in a preset: [[ocean.wave]] tables
+// (scene/preset_waves.h) replace the set the [ocean] parameters generate; without them
+// the waves are generated on load, and only waves that differ from that set are written.
+//
 // Writing emits every parameter, grouped by section, each with a
 // "# help (unit, range)" comment, and numbers in the shortest form that reads
 // back bit for bit, so parsePreset(presetToToml(s)) reproduces s exactly.

@@ -44,7 +44,8 @@ ocean::GerstnerWave readWave(const toml::table& table, const std::string& file, 
         const double length = glm::length(o);
         if (!(length > 1e-9) || !std::isfinite(length))
             throw InputError(file, sourceLine(*origin), path + ".origin", "must be a non-zero finite vector");
-        wave.origin = o / length;
+        // Normalised unless it already is (so a written preset reads back bit for bit).
+        wave.origin = std::abs(length - 1.0) < 1e-12 ? o : o / length;
     } else if (lat && lon) {
         const double latitude = readNumber(*lat, file, path + ".latitude_deg");
         const double longitude = readNumber(*lon, file, path + ".longitude_deg");
