@@ -6,6 +6,7 @@
 
 #include "app/session.h"
 #include "gl_test_support.h"
+#include "shaders_ray_sphere_double.h"
 #include "ocean/ocean_pass.h"
 #include "ocean/wave_spectrum.h"
 #include "render/renderer.h"
@@ -17,6 +18,9 @@ namespace {
 constexpr glm::ivec2 kSize{160, 90};
 
 float luminance(const float* p) { return 0.2126f * p[0] + 0.7152f * p[1] + 0.0722f * p[2]; }
+
+// The pixel in GL row glRow (0 at the bottom; read-back images start at the top row).
+const float* at(const ImageRGBAF& image, int x, int glRow) { return test::pixelAt(image, x, image.height - 1 - glRow); }
 
 class OceanRender : public test::GLTest {
 protected:
@@ -86,7 +90,7 @@ TEST_F(OceanRender, SunGlitterStandsWhereTheSunReflects) {
         double sum = 0.0;
         int n = 0;
         for (int y = y0 - half; y <= y0 + half; ++y)
-            for (int x = x0 - half; x <= x0 + half; ++x, ++n) sum += luminance(test::pixelAt(hdr, x, y));
+            for (int x = x0 - half; x <= x0 + half; ++x, ++n) sum += luminance(at(hdr, x, y));
         return sum / n;
     };
     // 20 deg of azimuth at 60 deg vertical fov: 20 / 60 * 90 rows' worth of columns.
@@ -101,7 +105,7 @@ TEST_F(OceanRender, SunGlitterStandsWhereTheSunReflects) {
     // a few sigma, sigma ~ 10 deg here), so only its column is asserted.
     std::vector<std::pair<float, glm::ivec2>> sea;
     for (int y = 0; y < cy + 20; ++y)
-        for (int x = 0; x < kSize.x; ++x) sea.push_back({luminance(test::pixelAt(hdr, x, y)), {x, y}});
+        for (int x = 0; x < kSize.x; ++x) sea.push_back({luminance(at(hdr, x, y)), {x, y}});
     std::sort(sea.begin(), sea.end(), [](const auto& a, const auto& b) { return a.first > b.first; });
     glm::dvec2 centroid(0.0);
     double weight = 0.0;
@@ -131,7 +135,7 @@ TEST_F(OceanRender, GlitterFollowsWaveSlope) {
         double sum = 0.0, weight = 0.0;
         for (int y = 0; y < kSize.y / 2 + 20; ++y) {
             std::vector<float> row;
-            for (int x = 0; x < kSize.x; ++x) row.push_back(luminance(test::pixelAt(hdr, x, y)));
+            for (int x = 0; x < kSize.x; ++x) row.push_back(luminance(at(hdr, x, y)));
             std::vector<float> sorted = row;
             std::nth_element(sorted.begin(), sorted.begin() + kSize.x / 2, sorted.end());
             const float median = sorted[kSize.x / 2];
@@ -157,7 +161,7 @@ TEST_F(OceanRender, SubmergedCameraGivesWaterNotNan) {
     // Under water every pixel is water-tinted: blue over red, nowhere the open sky's radiance.
     int blueish = 0;
     for (int y = 0; y < kSize.y; ++y)
-        for (int x = 0; x < kSize.x; ++x) blueish += test::pixelAt(hdr, x, y)[2] > test::pixelAt(hdr, x, y)[0];
+        for (int x = 0; x < kSize.x; ++x) blueish += at(hdr, x, y)[2] > at(hdr, x, y)[0];
     EXPECT_GT(blueish, kSize.x * kSize.y * 9 / 10);
 }
 
@@ -175,4 +179,49 @@ TEST_F(OceanRender, WaveEditsShowInTheNextFrame) {
     changed = 0;
     for (std::size_t i = 0; i < after.pixels.size(); ++i) changed += after.pixels[i] != later.pixels[i];
     EXPECT_GT(changed, 100);
+}
+
+TEST_F(OceanRender, FromSpaceTheCoastlineFollowsTheHeightField) {
+    // 30 000 km out, both meshes sag a kilometre below the sphere between vertices, more
+    // than a coastal plain is high: the sea must still cover exactly the pixels whose point
+    // on the planet lies below sea level (the ocean pass wrote their depth), and leave the land.
+    const Session s = session("space");
+    const glm::ivec2 size{200, 200};
+    renderer->render(s.scene, s.camera, size);
+    // Water where the ocean pass wrote depth: the final depth differs from the copy taken before it.
+    auto depthOf = [&](const gl::Texture& t) {
+        std::vector<float> d(static_cast<std::size_t>(size.x) * size.y);
+        glGetTextureImage(t.id(), 0, GL_DEPTH_COMPONENT, GL_FLOAT, static_cast<GLsizei>(d.size() * sizeof(float)),
+                          d.data());
+        return d;
+    };
+    const std::vector<float> final = depthOf(renderer->targets().gbuffer().depth);
+    const std::vector<float> seabed = depthOf(renderer->targets().seabedDepth());
+    const glm::dmat4 viewFromClip = glm::inverse(s.camera.clipFromView(double(size.x) / size.y));
+    int land = 0, sea = 0, wetLand = 0, drySea = 0;
+    for (int y = 0; y < size.y; ++y) {
+        for (int x = 0; x < size.x; ++x) {
+            const glm::dvec2 ndc((x + 0.5) / size.x * 2 - 1, (y + 0.5) / size.y * 2 - 1);
+            const glm::dvec4 v = viewFromClip * glm::dvec4(ndc, 0.5, 1.0);
+            const glm::dvec3 dir = s.camera.worldFromView() * glm::normalize(glm::dvec3(v) / v.w);
+            const double t = test::nearestHitDouble(s.camera.position, dir, s.scene.planetRadiusM());
+            if (t < 0.0) continue;
+            const glm::dvec3 hit = s.camera.position + t * dir;
+            const float height = s.ground.height(glm::vec3(glm::normalize(hit)));
+            const std::size_t i = static_cast<std::size_t>(y) * size.x + x;  // GL rows, as read back
+            const bool water = final[i] != seabed[i];
+            if (height > 50.0f) {
+                ++land;
+                wetLand += water;
+            } else if (height < -50.0f) {
+                ++sea;
+                drySea += !water;
+            }
+        }
+    }
+    std::printf("from space: %d land pixels, %d covered by sea; %d sea pixels, %d left dry\n", land, wetLand, sea, drySea);
+    ASSERT_GT(land, 1000);
+    ASSERT_GT(sea, 1000);
+    EXPECT_LT(wetLand, land / 200);  // 0.5 %: pixels the hit-point test and the rasteriser see differently
+    EXPECT_LT(drySea, sea / 200);
 }

@@ -16,6 +16,14 @@
 //       + (1 - (1-F) T_w) L_inscatter
 // Where the water is thinner than SHORE_FADE_M the result fades into the seabed, so the
 // shoreline is soft and the two surfaces never fight for depth.
+//
+// Far away the depth buffer cannot tell land from sea: both meshes are chords of the sphere
+// that sag below it by (edge length)^2 / 8r between vertices (a kilometre from space), more
+// than the height of a coastal plain. There the sea floor's height from the terrain's own
+// height function decides (terrain/height.glsl, the continents map): the sea is pulled
+// towards the camera by the sag (gl_FragDepth) so that sagging coastal land cannot hide it,
+// is discarded where the terrain stands above it, and its water path comes from the depth
+// below the surface. Near the camera the sag is far below a millimetre and nothing changes.
 #include "common/frame_uniforms.glsl"
 #include "common/constants.glsl"
 #include "terrain/grid.glsl"
@@ -26,6 +34,8 @@
 #include "ocean/gerstner.glsl"
 #include "ocean/ocean_waves.glsl"
 #include "ocean/water.glsl"
+#include "noise/simplex.glsl"
+#include "terrain/height.glsl"
 
 in vec3 tePosition;
 in vec3 teDirection;
@@ -43,7 +53,16 @@ uniform bool uCameraUnderwater;  // the camera is below the mean sea surface
 // Cox & Munk's total for the wind less what the waves carry).
 uniform float uSubgridSlopeVariance;
 
+layout(std140, binding = 2) uniform TerrainBlock {
+    TerrainShape terrainShape;
+};
+layout(binding = 10) uniform samplerCube uContinents;
+uniform float uSeaLevel;          // m above the planet radius
+uniform float uMaxWaveHeight;     // m: the sum of the amplitudes
+uniform float uCoarsestEdgePixels;  // the larger of the terrain's and the ocean's target edge
+
 layout(location = 0) out vec4 outRadiance;
+layout(depth_greater) out float gl_FragDepth;  // reversed-Z: only ever moved towards the camera
 
 const float M_PER_KM = 1000.0;
 const float SHORE_FADE_M = 0.5;  // water path over which the sea fades in at the shore
@@ -72,11 +91,27 @@ void main() {
     if (cosView < 0.01) normal = normalize(normal + view * (cosView - 0.01));
     cosView = max(dot(normal, -view), 0.01);
 
-    // Water between the surface and the seabed along this pixel's ray.
-    float seabed = texelFetch(seabedDepth, pixel, 0).r;
+    // How far the meshes may sag below the sphere here (see above), m, and what that means
+    // along this ray.
+    float edge = surfaceDistance * radiansPerPixel * uCoarsestEdgePixels;
+    float sag = edge * edge / (8.0 * frame.planetCenterFromCamera.w);
+    float cosIncidence = max(abs(dot(view, up)), 0.05);
+    float waterDepth = uSeaLevel - terrainHeight(up, terrainShape, uContinents);  // below the mean surface
+    // Land: near the camera only where no crest can reach (waves may run up a beach, and the
+    // depth test is exact there); where the meshes sag, wherever the terrain is above the sea.
+    float farness = smoothstep(0.05, 0.5, sag);
+    if (waterDepth < -uMaxWaveHeight * (1.0 - farness)) discard;
     vec3 forward = -vec3(frame.worldFromView[2]);
+    float pulled = max(dot(tePosition, forward) - 2.0 * sag / cosIncidence * dot(view, forward), frame.camera.x);
+    gl_FragDepth = depthFromViewDistance(pulled);
+
+    // Water between the surface and the seabed along this pixel's ray: from the depth
+    // buffer near the camera, from the depth below the surface where the meshes sag.
+    float seabed = texelFetch(seabedDepth, pixel, 0).r;
     float seabedDistance = seabed > 0.0 ? viewDistanceFromDepth(seabed) / max(dot(view, forward), 1e-6) : 1e30;
-    float waterPath = max(seabedDistance - surfaceDistance, 0.0);
+    float meshPath = max(seabedDistance - surfaceDistance, 0.0);
+    float depthPath = max(waterDepth, 0.0) / cosIncidence;
+    float waterPath = mix(meshPath, depthPath, farness);
     vec3 behind = texelFetch(seabedRadiance, pixel, 0).rgb;
 
     // Air: camera and surface point in km from the planet centre (the camera's radius formed in double).

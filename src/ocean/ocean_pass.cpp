@@ -41,7 +41,9 @@ const OceanPass::Locations& OceanPass::locations() {
                   at("uFadeStart"),
                   at("uFadeEnd"),
                   at("uCameraUnderwater"),
-                  at("uSubgridSlopeVariance")};
+                  at("uSubgridSlopeVariance"),
+                  at("uSeaLevel"),
+                  at("uCoarsestEdgePixels")};
     return locations_;
 }
 
@@ -96,6 +98,9 @@ void OceanPass::drawSurface(const Scene& scene, const Camera& camera) {
     glProgramUniform1f(p, l.fadeEnd, static_cast<float>(scene.ocean.fade_end));
     glProgramUniform1f(p, l.subgridSlopeVariance,
                        static_cast<float>(ocean::subgridSlopeVariance(scene.waves, scene.ocean.wind_speed_mps)));
+    glProgramUniform1f(p, l.seaLevel, static_cast<float>(scene.ocean.sea_level_m));
+    glProgramUniform1f(p, l.coarsestEdgePixels,
+                       static_cast<float>(std::max(scene.terrain.target_edge_px, scene.ocean.target_edge_px)));
     glProgramUniform1i(p, l.cameraUnderwater, cameraDepthM(scene, camera) > 0.0 ? 1 : 0);
 
     glEnable(GL_DEPTH_TEST);

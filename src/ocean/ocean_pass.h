@@ -34,7 +34,8 @@ public:
     // reading the seabed copies on units 0 and 1. Call only when cameraDepthM > 0.
     void drawUnderwater(const Scene& scene, const Camera& camera);
     // The sea surface into the bound target (HDR colour + the G-buffer's depth, tested and
-    // written), reading the seabed copies on units 0 and 1 and the atmosphere tables.
+    // written), reading the seabed copies on units 0 and 1, the atmosphere tables, and the
+    // terrain's height field (TerrainPass::bindHeightField) for the sea floor far away.
     void drawSurface(const Scene& scene, const Camera& camera);
 
     gl::HotProgram& surfaceProgram() { return surface_; }
@@ -45,7 +46,8 @@ private:
     struct Locations {
         GLuint program = 0;
         GLint worldFromGrid, zShift, gridExponent, cameraPosition, planetRadius, maxWaveHeight, targetEdgePixels,
-            waveCount, fadeStart, fadeEnd, cameraUnderwater, subgridSlopeVariance;
+            waveCount, fadeStart, fadeEnd, cameraUnderwater, subgridSlopeVariance, seaLevel,
+            coarsestEdgePixels;
     };
     const Locations& locations();
     void uploadWaves(const Scene& scene, const Camera& camera);

@@ -75,6 +75,7 @@ void Renderer::render(const Scene& scene, const Camera& camera, glm::ivec2 size,
         const GLuint inputs[] = {targets_.seabedDepth().id(), targets_.seabedRadiance().id()};
         glBindTextures(0, 2, inputs);
         atmosphere_.bind();
+        terrain_.bindHeightField();  // the sea floor's height, for the far sea
         if (OceanPass::cameraDepthM(scene, camera) > 0.0) {
             glBindVertexArray(emptyVertexArray_.id());
             ocean_.drawUnderwater(scene, camera);

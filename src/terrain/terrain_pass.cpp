@@ -20,38 +20,6 @@ TerrainPass::TerrainPass(const gl::ShaderSources& sources, std::filesystem::path
       continentsCache_(std::move(continentsCache)) {
     glNamedBufferStorage(shape_.id(), sizeof(terrain::TerrainShape), nullptr, GL_DYNAMIC_STORAGE_BIT);
     shape_.label("TerrainShape");
-    vertexArray_.label("terrain grid");
-}
-
-void TerrainPass::rebuildMesh(int size) {
-    std::vector<glm::vec2> coordinates;
-    coordinates.reserve(static_cast<std::size_t>(size) * size);
-    for (int j = 0; j < size; ++j)
-        for (int i = 0; i < size; ++i) coordinates.push_back(glm::vec2(gridCoordinate(i, j, size)));
-    std::vector<GLuint> patches;
-    patches.reserve(static_cast<std::size_t>(size - 1) * (size - 1) * 4);
-    for (int j = 0; j + 1 < size; ++j) {
-        for (int i = 0; i + 1 < size; ++i) {
-            const auto at = [&](int x, int y) { return static_cast<GLuint>(y * size + x); };
-            patches.insert(patches.end(), {at(i, j), at(i + 1, j), at(i + 1, j + 1), at(i, j + 1)});
-        }
-    }
-    vertices_ = gl::Buffer();
-    indices_ = gl::Buffer();
-    vertexArray_ = gl::VertexArray();
-    glNamedBufferStorage(vertices_.id(), static_cast<GLsizeiptr>(coordinates.size() * sizeof(glm::vec2)),
-                         coordinates.data(), 0);
-    glNamedBufferStorage(indices_.id(), static_cast<GLsizeiptr>(patches.size() * sizeof(GLuint)), patches.data(), 0);
-    glVertexArrayVertexBuffer(vertexArray_.id(), 0, vertices_.id(), 0, sizeof(glm::vec2));
-    glVertexArrayElementBuffer(vertexArray_.id(), indices_.id());
-    glEnableVertexArrayAttrib(vertexArray_.id(), 0);
-    glVertexArrayAttribFormat(vertexArray_.id(), 0, 2, GL_FLOAT, GL_FALSE, 0);
-    glVertexArrayAttribBinding(vertexArray_.id(), 0, 0);
-    vertices_.label("terrain grid coordinates");
-    indices_.label("terrain grid patches");
-    vertexArray_.label("terrain grid");
-    meshSize_ = size;
-    indexCount_ = static_cast<GLsizei>(patches.size());
 }
 
 gl::Texture makeContinentsTexture(const noise::CubeMap& map) {
@@ -98,7 +66,7 @@ void TerrainPass::draw(const Scene& scene, const Camera& camera) {
     grid_.size = scene.terrain.grid_size;
     grid_.exponent = scene.terrain.grid_exponent == 2 ? 2 : 4;  // Eq. 2 is defined for these two
     grid_.hysteresisFraction = scene.terrain.grid_hysteresis;
-    if (grid_.size != meshSize_) rebuildMesh(grid_.size);
+    mesh_.resize(grid_.size);
     const double radius = scene.planetRadiusM();
     const double maxHeight = scene.terrain.max_height_m;
     updateAnchor(anchor_, camera, anchorThresholdM(grid_, camera.altitude(radius)), false);
@@ -130,10 +98,13 @@ void TerrainPass::draw(const Scene& scene, const Camera& camera) {
     glDepthFunc(GL_GREATER);  // reversed-Z
     glDepthMask(GL_TRUE);
     glUseProgram(p);
-    glBindVertexArray(vertexArray_.id());
-    glPatchParameteri(GL_PATCH_VERTICES, 4);
-    glDrawElements(GL_PATCHES, indexCount_, GL_UNSIGNED_INT, nullptr);
+    mesh_.draw();
     glDisable(GL_DEPTH_TEST);
+}
+
+void TerrainPass::bindHeightField() const {
+    glBindBufferBase(GL_UNIFORM_BUFFER, kTerrainShapeBinding, shape_.id());
+    glBindTextureUnit(kContinentsUnit, continents_.id());
 }
 
 }  // namespace planet

@@ -21,6 +21,7 @@
 
 #include "gl/handle.h"
 #include "gl/program.h"
+#include "grid/grid_mesh.h"
 #include "grid/projected_grid.h"
 #include "noise/continents.h"
 #include "scene/camera.h"
@@ -43,6 +44,9 @@ public:
     void draw(const Scene& scene, const Camera& camera);
     gl::HotProgram& program() { return program_; }
     const GridAnchor& anchor() const { return anchor_; }
+    // Binds what terrain/height.glsl needs, as of the last draw: TerrainBlock (uniform
+    // binding 2) and the continents (texture unit 10). The ocean uses it for the sea floor.
+    void bindHeightField() const;
 
 private:
     // Uniform locations, looked up again only when hot reload replaced the program.
@@ -52,20 +56,15 @@ private:
             targetEdgePixels, ocean, lowlandAlbedo;
     };
     const Locations& locations();
-    void rebuildMesh(int size);
     void updateContinents(const TerrainParams& params);
 
     gl::HotProgram program_;
-    gl::VertexArray vertexArray_;
-    gl::Buffer vertices_;
-    gl::Buffer indices_;
+    GridMesh mesh_{"terrain"};
     gl::Buffer shape_;
     std::filesystem::path continentsCache_;
     gl::Texture continents_{GL_TEXTURE_CUBE_MAP};  // RGBA32F: elevation, gradient (noise/continents.h)
     std::optional<noise::ContinentParams> continentsBaked_;  // what continents_ holds (none yet: nullopt)
     int continentsSize_ = 0;
-    int meshSize_ = 0;
-    GLsizei indexCount_ = 0;
     GridParams grid_;
     GridAnchor anchor_;
     Locations locations_;
