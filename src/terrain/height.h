@@ -96,9 +96,9 @@ private:
     noise::CubeMap continents_;
 };
 
-// Height of the visible surface above sea level (m) under a world position:
-// the terrain, or 0 over the sea (the flat water stand-in the terrain pass
-// draws) when the world has an ocean (field.params().ocean).
+// Height of the ground the camera stands on, m above sea level, under a world
+// position: the terrain, or the mean sea surface (0; waves and ocean.sea_level_m
+// are not counted) when the world has an ocean (field.params().ocean).
 double surfaceHeightM(const HeightField& field, const glm::dvec3& position);
 
 // Rise over run of a surface with this normal; 0 flat, 1 at 45 deg. GLSL: terrainSlope.
