@@ -746,3 +746,20 @@ TEST_F(TerrainGpu, ProbeMatchesTheCpuAtRandomDirections) {
                 materialMismatches, corners.size(), worstCorner);
     EXPECT_EQ(materialMismatches, 0);
 }
+
+TEST_F(TerrainGpu, CoastlineAgreesWithTheCpuAtTheBeach) {
+    // Across the default Earth's beach (43 N, 6.5 W), where the ground crosses sea level at a
+    // few per mille: the GPU's heights equal the CPU's to a centimetre, so that the coast
+    // the terrain pass draws is the coast the camera, the views and the ocean see.
+    terrain::HeightField field(std::filesystem::path(PLANET_TEST_OUT) / "beach_height_field");
+    field.update(TerrainParams{});
+    std::vector<glm::vec3> directions;
+    for (int i = 0; i <= 400; ++i)
+        directions.push_back(glm::vec3(directionFromLatLon(43.0, -6.49 - 0.02 * i / 400.0)));
+    const std::vector<ProbeResult> gpu = probeGpu(field.shape(), field.continents(), directions);
+    double worst = 0.0;
+    for (std::size_t i = 0; i < directions.size(); ++i)
+        worst = std::max(worst, std::abs(double(gpu[i].height) - field.height(directions[i])));
+    std::printf("beach: GPU - CPU height over 1.6 km across the coast: max %.3e m\n", worst);
+    EXPECT_LT(worst, 0.01);
+}

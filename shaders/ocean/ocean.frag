@@ -80,8 +80,9 @@ void main() {
     // drops becomes glitter roughness).
     float radiansPerPixel = 2.0 * atan(1.0 / frame.clipFromView[1][1]) * frame.viewport.w;
     float footprint = surfaceDistance * radiansPerPixel / max(abs(dot(view, up)), 0.02);
+    float waterDepth = uSeaLevel - terrainHeight(up, terrainShape, uContinents);  // below the mean surface
     float slopeVariance;
-    vec3 normal = oceanNormal(up, teOffset, footprint, slopeVariance);
+    vec3 normal = oceanNormal(up, teOffset, footprint, waterDepth, slopeVariance);
     // Seen from below only when the camera is under the sea: not from gl_FrontFacing, which
     // also flips on the far side of steep crests at grazing views, where the sea is seen from above.
     if (uCameraUnderwater) normal = -normal;
@@ -96,7 +97,6 @@ void main() {
     float edge = surfaceDistance * radiansPerPixel * uCoarsestEdgePixels;
     float sag = edge * edge / (8.0 * frame.planetCenterFromCamera.w);
     float cosIncidence = max(abs(dot(view, up)), 0.05);
-    float waterDepth = uSeaLevel - terrainHeight(up, terrainShape, uContinents);  // below the mean surface
     // Land: near the camera only where no crest can reach (waves may run up a beach, and the
     // depth test is exact there); where the meshes sag, wherever the terrain is above the sea.
     float farness = smoothstep(0.05, 0.5, sag);

@@ -1,7 +1,7 @@
 // Ocean probe: the displacement (Michelic Eq. 8) and normal (Eq. 10) the ocean shaders
 // compute, at a list of directions, for comparing the GPU with the double-precision CPU
 // reference (tests/test_ocean_gpu.cpp). One invocation per direction, every wave at full
-// level of detail.
+// level of detail, in deep water (no shoaling).
 // Input per point (std430, dvec4): direction xyz (unit, double), w unused.
 // Output per point (2 vec4): [0] displacement from the sea sphere (m, world axes), w 0;
 //                            [1] unit normal xyz, w: slope variance left over (0 here).
@@ -26,6 +26,6 @@ void main() {
     vec3 v = vec3(direction);
     vec3 dv = oceanDirectionOffset(direction);
     float slopeVariance;
-    results[2 * i] = vec4(oceanDisplacement(v, dv, 0.0), 0.0);
-    results[2 * i + 1] = vec4(oceanNormal(v, dv, 0.0, slopeVariance), slopeVariance);
+    results[2 * i] = vec4(oceanDisplacement(v, dv, 0.0, 1.0e9), 0.0);
+    results[2 * i + 1] = vec4(oceanNormal(v, dv, 0.0, 1.0e9, slopeVariance), slopeVariance);
 }

@@ -8,12 +8,22 @@ uniform int uWaveCount;
 uniform float uFadeStart;  // e0 of Michelic Eq. 11
 uniform float uFadeEnd;    // e1
 
+// A wave breaks when its height 2A reaches about 0.78 times the water depth (the breaker
+// index of a solitary wave; McCowan 1894): each wave's amplitude is held to 0.39 x depth,
+// so the big waves die out towards the shore while ripples run up to it, and the surface
+// meets the beach at still water instead of troughs cutting into the sand. waterDepth below
+// the mean surface, m (large in open water).
+float oceanShoaling(float amplitude, float waterDepth) {
+    return clamp(0.39 * waterDepth / max(amplitude, 1e-6), 0.0, 1.0);
+}
+
 // v - v_c: the point's unit direction minus the camera's, formed in double (gerstner.glsl).
 vec3 oceanDirectionOffset(dvec3 direction) { return vec3(direction - normalize(uCameraPosition)); }
 
 // Michelic Eq. 8 without its v r term: the displacement from the sea sphere at unit
-// direction v, keeping the waves a surface sampled every `footprint` metres can carry.
-vec3 oceanDisplacement(vec3 v, vec3 dv, float footprint) {
+// direction v, keeping the waves a surface sampled every `footprint` metres can carry,
+// each held to what the water depth below the mean surface allows (oceanShoaling).
+vec3 oceanDisplacement(vec3 v, vec3 dv, float footprint, float waterDepth) {
     vec3 displacement = vec3(0.0);
     for (int i = 0; i < uWaveCount; ++i) {
         OceanWave w = oceanWaves[i];
@@ -23,7 +33,7 @@ vec3 oceanDisplacement(vec3 v, vec3 dv, float footprint) {
         float oneMinusAbsCos;
         float phase = gerstnerPhase(w, v, dv, travel, oneMinusAbsCos);
         float q = gerstnerSteepness(w, oneMinusAbsCos, uFadeStart, uFadeEnd);
-        float a = w.shape.x * lod;
+        float a = w.shape.x * lod * oceanShoaling(w.shape.x, waterDepth);
         displacement += v * (a * sin(phase)) + travel * (q * a * cos(phase));
     }
     return displacement;
@@ -33,17 +43,17 @@ vec3 oceanDisplacement(vec3 v, vec3 dv, float footprint) {
 // slopes of the waves it cannot resolve go into slopeVariance instead (the mean square
 // slope of a sine of amplitude A and wavenumber k is (A k)^2 / 2), which widens the sun's
 // glitter as a rougher sea does.
-vec3 oceanNormal(vec3 v, vec3 dv, float footprint, out float slopeVariance) {
+vec3 oceanNormal(vec3 v, vec3 dv, float footprint, float waterDepth, out float slopeVariance) {
     vec3 normal = v;
     slopeVariance = 0.0;
     for (int i = 0; i < uWaveCount; ++i) {
         OceanWave w = oceanWaves[i];
         float lod = gerstnerLod(w, footprint);
-        if (lod <= 0.0) {  // sorted longest first: this and the rest only roughen
+        if (lod <= 0.0) {  // sorted longest first: this and the rest only roughen (short: no shoaling)
             slopeVariance += w.scale.z;
             break;
         }
-        float ak = w.shape.x * w.scale.x;
+        float ak = w.shape.x * w.scale.x * oceanShoaling(w.shape.x, waterDepth);
         slopeVariance += (1.0 - lod) * 0.5 * ak * ak;
         vec3 travel;
         float oneMinusAbsCos;

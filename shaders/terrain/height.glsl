@@ -11,15 +11,20 @@
 //   e = continentValue(d, continents): the baked continents cube map (noise/continents.h)
 //       sampled at d with GL_LINEAR and seamless filtering, in [-1, 1]; the coast is
 //       e = 0 (the bake places it so that a chosen share of the sphere is sea), e > 0 is land;
-//   sea  (e < 0): h = -oceanDepth * S(0, TERRAIN_SHELF_WIDTH, -e), a continental shelf
+//   sea  (e < 0): h = -oceanDepth * C(-e / TERRAIN_SHELF_WIDTH, mSea), a continental shelf
 //                 falling to a flat abyssal plain at exactly -oceanDepth;
-//   land (e >= 0): h = maxHeight * (TERRAIN_LOWLAND_SHARE * S(0, TERRAIN_LOWLAND_WIDTH, e)
+//   land (e >= 0): h = maxHeight * (TERRAIN_LOWLAND_SHARE * C(e / TERRAIN_LOWLAND_WIDTH, mLand)
 //                       + (1 - TERRAIN_LOWLAND_SHARE) * S(0, TERRAIN_INLAND_WIDTH, e) * m),
 //                 m = mountains (mix of fBm and ridged fBm at d * mountainFrequency, squared, in [0, 1];
 //                 mountainOctaves layers, Michelic Table 1's "noise layers"; 0 layers: m = 0,
 //                 the continents alone) weighted by how far inland we are, so coasts are gentle;
-// S is smoothstep (zero slope at both ends), so h and its gradient are continuous across
-// the coast, and h lies in [-oceanDepth, maxHeight] (clamped against float rounding).
+// S is smoothstep (zero slope at both ends). C(t, m) is the cubic from 0 to 1 on [0, 1]
+// with slope m at 0 and 0 at 1 (m = 0 is smoothstep): the coast has a slope, the same
+// dh/de on both sides (terrainCoastSlope), so h and its gradient are continuous across it,
+// and sea level crosses the ground at an angle. (With smoothstep on both sides the ground
+// was flat at the coast: kilometre-wide flats within centimetres of sea level, where the
+// mesh's interpolation, not the height field, decided what was wet.) h lies in
+// [-oceanDepth, maxHeight] (clamped against float rounding).
 //
 // The normal (terrainNormal) is analytic: the 3D gradient of h (chain rule through the
 // smoothsteps, the continents' baked gradient channels and the noise gradients of
@@ -55,7 +60,7 @@ const float TERRAIN_LOWLAND_SHARE = 0.1f;
 
 // Material rule thresholds (see terrainMaterial).
 const float TERRAIN_BEACH_DEPTH_M = 20.0f;          // sand down to 20 m below sea level, sea floor below
-const float TERRAIN_BEACH_HEIGHT_M = 20.0f;         // sand up to 20 m above sea level
+const float TERRAIN_BEACH_HEIGHT_M = 3.0f;          // sand up to 3 m above sea level (a few hundred m of beach at the coast's slope)
 // Rise over run above which the ground is bare rock: 0.2, about 11 deg. Low for a real slope,
 // but this height field has no detail finer than its last octave (about 30 km across at the
 // default 6 octaves of frequency 40), and slopes averaged over that are gentle: on the default
@@ -92,6 +97,24 @@ float terrainSmoothstepGrad(float edge0, float edge1, float x, OUT(float) deriva
     float t = clamp((x - edge0) / (edge1 - edge0), 0.0f, 1.0f);
     derivative = 6.0f * t * (1.0f - t) / (edge1 - edge0);
     return t * t * (3.0f - 2.0f * t);
+}
+
+// C(t, m) of the header and its derivative dC/dt: the cubic with C(0) = 0, C'(0) = m,
+// C(1) = 1, C'(1) = 0, for t clamped to [0, 1]; monotonic for m in [0, 3].
+float terrainCoastRamp(float t, float m, OUT(float) derivative) {
+    float x = clamp(t, 0.0f, 1.0f);
+    float inside = t > 0.0f && t < 1.0f ? 1.0f : 0.0f;
+    derivative = inside * (m + 2.0f * (3.0f - 2.0f * m) * x + 3.0f * (m - 2.0f) * x * x);
+    return x * (m + x * ((3.0f - 2.0f * m) + x * (m - 2.0f)));
+}
+
+// dh/de at the coast, m per unit of continent value, the same on both sides: half the
+// steepest that keeps both ramps monotonic (slope m <= 3 on each side), so the shallows and
+// the coastal plain keep most of their shape.
+float terrainCoastSlope(TerrainShape shape) {
+    float sea = 3.0f * shape.oceanDepth / TERRAIN_SHELF_WIDTH;
+    float land = 3.0f * TERRAIN_LOWLAND_SHARE * shape.maxHeight / TERRAIN_LOWLAND_WIDTH;
+    return 0.5f * min(sea, land);
 }
 
 // The continent value at a direction, in [-1, 1] (> 0 is land), and its gradient with
@@ -145,15 +168,21 @@ float terrainHeightGrad(vec3 unitDirection, TerrainShape shape, samplerCube cont
     vec3 continentGradient;
     float e = continentValueGrad(unitDirection, continents, continentGradient);
     float height;
+    float coastSlope = terrainCoastSlope(shape);
     if (e < 0.0f) {
         float dShelf;
-        float shelf = terrainSmoothstepGrad(0.0f, TERRAIN_SHELF_WIDTH, -e, dShelf);
+        float mSea = shape.oceanDepth > 0.0f ? coastSlope * TERRAIN_SHELF_WIDTH / shape.oceanDepth : 0.0f;
+        float shelf = terrainCoastRamp(-e / TERRAIN_SHELF_WIDTH, mSea, dShelf);
         height = -shape.oceanDepth * shelf;
-        gradient = (shape.oceanDepth * dShelf) * continentGradient;  // d(-D S(-e)) = D S'(-e) de
+        // d(-D C(-e / W)) = (D / W) C'(-e / W) de
+        gradient = (shape.oceanDepth * dShelf / TERRAIN_SHELF_WIDTH) * continentGradient;
     } else {
         float dLowland;
         float dInland;
-        float lowland = terrainSmoothstepGrad(0.0f, TERRAIN_LOWLAND_WIDTH, e, dLowland);
+        float lowlandHeight = TERRAIN_LOWLAND_SHARE * shape.maxHeight;
+        float mLand = lowlandHeight > 0.0f ? coastSlope * TERRAIN_LOWLAND_WIDTH / lowlandHeight : 0.0f;
+        float lowland = terrainCoastRamp(e / TERRAIN_LOWLAND_WIDTH, mLand, dLowland);
+        dLowland /= TERRAIN_LOWLAND_WIDTH;
         float inland = terrainSmoothstepGrad(0.0f, TERRAIN_INLAND_WIDTH, e, dInland);
         // Mountains squared: most of the land stays low, peaks are rare (mean land height
         // about 1/4 of maxHeight instead of 1/2).

@@ -4,7 +4,8 @@
 //
 //   ocean.vert   grid coordinates of the N x N vertices
 //   ocean.tesc   frustum culling with the highest crest and lowest trough, levels from edge size
-//   ocean.tese   grid -> sea sphere direction (double) -> Eq. 8 displacement -> camera-relative position
+//   ocean.tese   grid -> sea sphere direction (double) -> Eq. 8 displacement (in shallow water
+//                each wave no higher than 0.78 x depth) -> camera-relative position
 //   ocean.frag   Eq. 10 normal per pixel, Fresnel sky reflection, sun glitter, water body, aerial perspective
 //   underwater.frag  the water body around a camera below the sea surface
 //
