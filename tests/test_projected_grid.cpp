@@ -461,7 +461,10 @@ TEST(ProjectedGrid, VerticesAreEq1OfTheRotatedShiftedGrid) {
     const double phi = horizonAngle(glm::length(position), kRadiusM, kRadiusM + kMaxHeightM);
     const double z_s = 1.0 / std::tan(phi);
     const glm::dmat3 worldFromGrid = gridRotation(position);
-    const glm::dvec3 g(0.5, -0.75, (1.0 - 0.0625) * (1.0 - 0.31640625) + z_s);  // i = 6, j = 1
+    // i = 6, j = 1: g = (0.5, -0.75), |g|_inf = 0.75, moved to g (a + (1 - a) m (2 - m)).
+    const double scale = kGridCentreDensity + (1.0 - kGridCentreDensity) * 0.75 * 1.25;
+    const glm::dvec2 w = glm::dvec2(0.5, -0.75) * scale;
+    const glm::dvec3 g(w.x, w.y, (1.0 - std::pow(w.x, 4)) * (1.0 - std::pow(w.y, 4)) + z_s);
     const glm::dvec3 expected = glm::normalize(worldFromGrid * g) * kRadiusM;
     EXPECT_LT(glm::length(v[1 * 9 + 6] - expected), 1e-6);
     // Edge midpoint i = 8, j = 4 sits at exactly phi from the anchor.
@@ -624,4 +627,29 @@ TEST(ProjectedGrid, ParamsValidation) {
 }
 
 }  // namespace
+
+TEST(ProjectedGrid, VerticesCrowdTowardsTheCentreAndKeepTheBoundary) {
+    const int N = 101;
+    // The boundary stays put (coverage is the boundary's projection), with its spacing.
+    for (int i = 0; i < N; ++i) {
+        EXPECT_EQ(gridVertexCoordinate(i, 0, N), gridCoordinate(i, 0, N));
+        EXPECT_EQ(gridVertexCoordinate(N - 1, i, N), gridCoordinate(N - 1, i, N));
+    }
+    // Along a row through the centre: symmetric, strictly increasing, spacing growing from
+    // a of it to at most 1.32 times the even spacing, and the even spacing at the edge.
+    const double even = 2.0 / (N - 1);
+    double first = 0.0, largest = 0.0;
+    for (int i = 0; i + 1 < N; ++i) {
+        const double x0 = gridVertexCoordinate(i, N / 2, N).x, x1 = gridVertexCoordinate(i + 1, N / 2, N).x;
+        ASSERT_GT(x1, x0);
+        EXPECT_EQ(x0, -gridVertexCoordinate(N - 1 - i, N / 2, N).x);
+        if (i == N / 2) first = (x1 - x0) / even;
+        largest = std::max(largest, (x1 - x0) / even);
+    }
+    const double last = (gridVertexCoordinate(N - 1, N / 2, N).x - gridVertexCoordinate(N - 2, N / 2, N).x) / even;
+    EXPECT_LT(first, 0.1);  // next to the projection camera: 20 times denser than even
+    EXPECT_LT(largest, 1.34);
+    EXPECT_NEAR(last, 1.0, 0.02);
+}
+
 }  // namespace planet

@@ -13,7 +13,7 @@ void GridMesh::resize(int size) {
     std::vector<glm::vec2> coordinates;
     coordinates.reserve(static_cast<std::size_t>(size) * size);
     for (int j = 0; j < size; ++j)
-        for (int i = 0; i < size; ++i) coordinates.push_back(glm::vec2(gridCoordinate(i, j, size)));
+        for (int i = 0; i < size; ++i) coordinates.push_back(glm::vec2(gridVertexCoordinate(i, j, size)));
     std::vector<GLuint> patches;
     patches.reserve(static_cast<std::size_t>(size - 1) * (size - 1) * 4);
     const auto at = [size](int x, int y) { return static_cast<GLuint>(y * size + x); };

@@ -1,4 +1,4 @@
-// The projected grid's mesh on the GPU: N x N grid coordinates (gridCoordinate) as
+// The projected grid's mesh on the GPU: N x N grid coordinates (gridVertexCoordinate) as
 // (N-1)^2 four-vertex patches for the tessellation stages. The terrain and the ocean each
 // draw one (Michelic §6: 100 x 100 and 80 x 80).
 #pragma once

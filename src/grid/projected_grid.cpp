@@ -50,6 +50,14 @@ glm::dvec2 gridCoordinate(int i, int j, int N) {
     return {static_cast<double>(2 * i - (N - 1)) * scale, static_cast<double>(2 * j - (N - 1)) * scale};
 }
 
+glm::dvec2 gridVertexCoordinate(int i, int j, int N) {
+    const glm::dvec2 g = gridCoordinate(i, j, N);
+    const double m = std::max(std::abs(g.x), std::abs(g.y));
+    const double a = kGridCentreDensity;
+    // g * f(m) / m, f(m) / m = a + 2 (1 - a) m - (1 - a) m^2 (no division at the centre).
+    return g * (a + (1.0 - a) * m * (2.0 - m));
+}
+
 double hemisphereHeight(glm::dvec2 g, int n) {
     return (1.0 - std::pow(std::abs(g.x), n)) * (1.0 - std::pow(std::abs(g.y), n));
 }
@@ -168,7 +176,7 @@ std::vector<glm::dvec3> projectedGridVertices(const GridParams& params, const Gr
     vertices.reserve(static_cast<size_t>(N) * static_cast<size_t>(N));
     for (int j = 0; j < N; ++j) {
         for (int i = 0; i < N; ++i) {
-            const glm::dvec3 g = predisplaced(gridCoordinate(i, j, N), params.exponent, projection.zShift);
+            const glm::dvec3 g = predisplaced(gridVertexCoordinate(i, j, N), params.exponent, projection.zShift);
             vertices.push_back(projectToSphere(projection.worldFromGrid * g, planetRadiusM));
         }
     }

@@ -7,7 +7,7 @@
 // camera) and then in the world frame (scene/scene.h: centre at the origin,
 // +Z north):
 //
-//   1. g = (g_x, g_y) in [-1, 1]^2, evenly spaced          gridCoordinate
+//   1. g = (g_x, g_y) in [-1, 1]^2, denser at the centre   gridVertexCoordinate
 //   2. g_z = (1 - |g_x|^n)(1 - |g_y|^n) + z_s              predisplaced (Eq. 2, then the shift)
 //      The hemisphere pre-displacement keeps the projection one-to-one when
 //      z_s < 0 (paper figure 4); z_s sets how far from the camera the grid
@@ -87,6 +87,18 @@ inline constexpr double kMaxCoverageAngleRad = 2.0943951023931953;  // 120 deg
 // [0, N-1]: g = -1 + 2 (i, j) / (N - 1), in [-1, 1]^2, exactly +-1 at the edges
 // and symmetric under g -> -g (so the vertex set is symmetric under 90 deg turns).
 glm::dvec2 gridCoordinate(int i, int j, int N);
+
+// Where vertex (i, j) sits on the grid: gridCoordinate g moved along its ray from the
+// centre, g * f(m) / m with m = |g|_inf and f(t) = a t + 2 (1 - a) t^2 - (1 - a) t^3,
+// a = kGridCentreDensity: a bijection of [-1, 1]^2 onto itself that keeps each square ring of
+// vertices on a square ring and leaves the boundary and its spacing in place (f(1) = 1,
+// f'(1) = 1), so coverage is unchanged. Not in the paper: at low altitude the grid must reach
+// peaks beyond the horizon hundreds of kilometres away, and evenly spaced vertices put
+// kilometres between them at the camera's feet, more than tessellation (at most 64
+// subdivisions) can make up; here the spacing is a (1/20) of the even one at the centre (the
+// projection camera), at most 1.32 times it (at m = 2/3), and equal to it at the edge.
+inline constexpr double kGridCentreDensity = 0.05;
+glm::dvec2 gridVertexCoordinate(int i, int j, int N);
 
 // Eq. 2: the hemisphere approximation (1 - |g_x|^n)(1 - |g_y|^n); 1 at the
 // centre, 0 on the whole boundary. |g| so that odd n stays symmetric.
@@ -172,7 +184,7 @@ struct GridProjection {
 
 GridProjection gridProjection(const GridAnchor& anchor, double planetRadiusM, double maxTerrainHeightM);
 
-// All N x N world positions (index j * N + i, see gridCoordinate) on the
+// All N x N world positions (index j * N + i, see gridVertexCoordinate) on the
 // sphere of radius planetRadiusM, the CPU reference of the shader.
 std::vector<glm::dvec3> projectedGridVertices(const GridParams& params, const GridAnchor& anchor,
                                               double planetRadiusM, double maxTerrainHeightM);
