@@ -56,6 +56,7 @@ const TerrainPass::Locations& TerrainPass::locations() {
                   at("uPlanetRadius"),
                   at("uPlanetRadiusF"),
                   at("uMaxTerrainHeight"),
+                  at("uMinTerrainHeight"),
                   at("uTargetEdgePixels"),
                   at("uOcean"),
                   at("uLowlandAlbedo")};
@@ -89,6 +90,7 @@ void TerrainPass::draw(const Scene& scene, const Camera& camera) {
     glProgramUniform1d(p, l.planetRadius, radius);
     glProgramUniform1f(p, l.planetRadiusF, static_cast<float>(radius));
     glProgramUniform1f(p, l.maxTerrainHeight, static_cast<float>(maxHeight));
+    glProgramUniform1f(p, l.minTerrainHeight, static_cast<float>(-scene.terrain.ocean_depth_m));
     glProgramUniform1f(p, l.targetEdgePixels, static_cast<float>(scene.terrain.target_edge_px));
     glProgramUniform1i(p, l.ocean, scene.terrain.ocean ? 1 : 0);
     const glm::vec3 lowland(scene.planet.albedo);

@@ -53,6 +53,7 @@ private:
     struct Locations {
         GLuint program = 0;
         GLint worldFromGrid, zShift, gridExponent, cameraPosition, planetRadius, planetRadiusF, maxTerrainHeight,
+            minTerrainHeight,
             targetEdgePixels, ocean, lowlandAlbedo;
     };
     const Locations& locations();
