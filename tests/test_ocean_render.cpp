@@ -118,6 +118,26 @@ TEST_F(OceanRender, SunGlitterStandsWhereTheSunReflects) {
     EXPECT_NEAR(centroid.x, cx, 0.05 * kSize.x);
 }
 
+TEST_F(OceanRender, SunsetGlitterStandsBelowTheSun) {
+    // The sun 4 deg above the horizon, the camera 20 m up looking 4 deg down at its mirror
+    // image: the glitter column under the sun outshines the sea 20 deg to either side, and
+    // the frame is finite although the sun's light grazes the sea.
+    const Session s = openSea(20.0, -4.0, 4.0);
+    const ImageRGBAF hdr = renderHdr(s);
+    ASSERT_TRUE(test::allFinite(hdr));
+    const int cx = kSize.x / 2, cy = kSize.y / 2;
+    const int offset = static_cast<int>(20.0 / 60.0 * kSize.y);
+    auto column = [&](int x0) {  // mean over 7 columns and the 10 rows below the centre
+        double sum = 0.0;
+        for (int y = cy - 10; y < cy; ++y)
+            for (int x = x0 - 3; x <= x0 + 3; ++x) sum += luminance(at(hdr, x, y));
+        return sum / 70.0;
+    };
+    const double centre = column(cx), left = column(cx - offset), right = column(cx + offset);
+    std::printf("sunset glitter: centre %.4g, 20 deg left %.4g, right %.4g\n", centre, left, right);
+    EXPECT_GT(centre, 4.0 * std::max(left, right));
+}
+
 TEST_F(OceanRender, GlitterFollowsWaveSlope) {
     // The same view under a light breeze and a strong wind: the rougher sea's slopes (the
     // waves' and the ripples' finer than the waves, Cox & Munk) spread the glitter over more

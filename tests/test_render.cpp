@@ -4,6 +4,7 @@
 
 #include "app/session.h"
 #include "gl_test_support.h"
+#include "grid/projected_grid.h"
 #include "render/renderer.h"
 #include "terrain/height.h"
 #include "shaders_ray_sphere_double.h"
@@ -262,4 +263,33 @@ TEST_F(RenderTest, CameraIsKeptAboveTheTerrainNotJustTheSphere) {
     EXPECT_TRUE(keepAboveGround(s));
     EXPECT_NEAR(s.camera.altitude(s.scene.planetRadiusM()), ground + kCameraMinAltitudeM, 1e-3);
     EXPECT_FALSE(keepAboveGround(s));  // already above: unchanged
+}
+
+TEST_F(RenderTest, AnchorUpdatesDoNotPopVisibly) {
+    // When the camera has moved just under the hysteresis threshold, the grids are still
+    // projected from the old anchor; a renderer that starts afresh there projects them from
+    // the camera itself. The two frames show the same camera with the two meshes an anchor
+    // update switches between: they must look the same (the jump a user could see).
+    for (const std::string view : {"ground", "beach", "aircraft", "orbit"}) {
+        Session s = session("earth", view);
+        const glm::ivec2 size{320, 180};
+        renderer->render(s.scene, s.camera, size);  // anchors at the view's camera
+        const double threshold = anchorThresholdM(GridParams{}, s.camera.altitude(s.scene.planetRadiusM()));
+        const glm::dvec3 up = glm::normalize(s.camera.position);
+        const glm::dvec3 sideways = glm::normalize(glm::cross(up, glm::dvec3(0.0, 0.0, 1.0)));
+        s.camera.position += sideways * (0.9 * threshold);
+        keepAboveGround(s);
+        renderer->render(s.scene, s.camera, size);
+        const ImageRGBAF stale = readTextureRGBAF(renderer->targets().hdr(), size.x, size.y);
+        Renderer fresh(test::repoPaths().shaders(), atmosphere::TableSizes::reduced());
+        fresh.render(s.scene, s.camera, size);
+        const ImageRGBAF moved = readTextureRGBAF(fresh.targets().hdr(), size.x, size.y);
+        int changed = 0, pixels = size.x * size.y;
+        for (int i = 0; i < pixels; ++i) {
+            const float a = luminance(&stale.pixels[4 * i]), b = luminance(&moved.pixels[4 * i]);
+            changed += std::abs(a - b) > 0.05f * std::max(a, b) + 1e-4f;
+        }
+        std::printf("%s: an anchor update changes %d of %d pixels by more than 5 %%\n", view.c_str(), changed, pixels);
+        EXPECT_LT(changed, pixels / 200) << view;  // 0.5 %: the odd silhouette or shoreline pixel
+    }
 }
