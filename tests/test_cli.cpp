@@ -166,6 +166,17 @@ TEST_F(CliTest, ExploreWithoutDisplayRendersAStillAndSaysWhere) {
     EXPECT_TRUE(fs::exists(dir / "still.png"));
 }
 
+TEST_F(CliTest, TimeMustBeAFiniteNumber) {
+    for (const char* bad : {"nan", "inf", "1e10", "soon"}) {
+        const auto r = runCommand(planet(std::string("render --size 16x9 --time ") + bad + " --out t.png"));
+        EXPECT_NE(r.exitCode, 0) << bad;
+        EXPECT_TRUE(contains(r.output, "--time")) << r.output;
+        EXPECT_FALSE(fs::exists(dir / "t.png")) << bad;
+    }
+    const auto ok = runCommand(planet("render --size 16x9 --time 12.5 --out t.png"));
+    EXPECT_EQ(ok.exitCode, 0) << ok.output;
+}
+
 TEST_F(CliTest, OneBadOutputMeansNoOutputAtAll) {
     // The second output cannot be written: the first must not be left behind.
     const auto r = runCommand(planet("render --size 32x18 --out good.png --out /proc/no/such/x.exr"));

@@ -1,6 +1,8 @@
 // planet: command-line front end (CLI11). See README.md for every command.
 #include <CLI/CLI.hpp>
 
+#include <cmath>
+#include <cstdlib>
 #include <iostream>
 
 #include "app/commands.h"
@@ -19,7 +21,16 @@ void addCommon(CLI::App& cmd, planet::CommonOptions& o) {
         ->check(CLI::IsMember({"auto", "full", "reduced"}))
         ->capture_default_str();
     cmd.add_option("--time", o.time, "Clock of the first frame, s (the ocean's waves move with it)")
-        ->check(CLI::Range(-1e9, 1e9))
+        ->check(CLI::Validator(
+            [](std::string& text) -> std::string {
+                // CLI::Range lets NaN through (every comparison with it is false).
+                char* end = nullptr;
+                const double v = std::strtod(text.c_str(), &end);
+                if (end == text.c_str() || *end != '\0' || !std::isfinite(v) || std::abs(v) > 1e9)
+                    return "must be a finite number of seconds in [-1e9, 1e9], not '" + text + "'";
+                return {};
+            },
+            "SECONDS"))
         ->capture_default_str();
     cmd.add_flag("--gl-debug", o.glDebug, "Ask for a debug GL context and report KHR_debug messages synchronously");
 }
