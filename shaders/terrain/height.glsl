@@ -65,7 +65,8 @@ const float TERRAIN_BEACH_HEIGHT_M = 3.0f;          // sand up to 3 m above sea 
 // but this height field has no detail finer than its last octave (about 30 km across at the
 // default 6 octaves of frequency 40), and slopes averaged over that are gentle: on the default
 // planet's land the median is 0.05, the 99th percentile 0.24 (0.06 and 0.29 at 10 octaves),
-// so 0.2 leaves the steepest few percent rock.
+// so 0.2 leaves the steepest few percent rock. (Measured on the first default mountains, 6
+// octaves from 40 per radius; the current default, 8 from 120, is rougher and has more rock.)
 const float TERRAIN_ROCK_SLOPE = 0.2f;
 const float TERRAIN_SNOW_LINE_EQUATOR_M = 5200.0f;  // snow line at the equator ...
 const float TERRAIN_SNOW_FREE_LATITUDE = 1.3089969f;  // ... falling to 0 m at 75 deg (rad)

@@ -1,9 +1,13 @@
 // Terrain tessellation control (Michelic §3): culls patches outside a slightly widened view
 // frustum, counting the lowest sea floor and the highest possible terrain, and sets
-// tessellation levels from each edge's size on screen (grid/tessellation.glsl).
+// tessellation levels from each edge's size on screen (grid/tessellation.glsl), measured
+// between the corners on the terrain itself: on a mountain the ground is near the camera
+// even when the sea-level sphere is kilometres below it.
 #include "common/frame_uniforms.glsl"
 #include "terrain/grid.glsl"
 #include "grid/tessellation.glsl"
+#include "noise/simplex.glsl"
+#include "terrain/height.glsl"
 
 layout(vertices = 4) out;
 in vec2 vGrid[];
@@ -12,16 +16,20 @@ out vec2 tcGrid[];
 uniform float uMaxTerrainHeight;    // m above sea level
 uniform float uMinTerrainHeight;    // m, the deepest sea floor (<= 0)
 uniform float uTargetEdgePixels;    // wanted triangle edge length on screen
+layout(std140, binding = 2) uniform TerrainBlock {
+    TerrainShape terrainShape;
+};
+layout(binding = 10) uniform samplerCube uContinents;
 
 void main() {
     tcGrid[gl_InvocationID] = vGrid[gl_InvocationID];
     if (gl_InvocationID != 0) return;
 
-    vec3 seaLevel[4];
+    vec3 ground[4];
     vec3 corners[8];
     for (int i = 0; i < 4; ++i) {
         dvec3 d = gridDirection(vGrid[i]);
-        seaLevel[i] = cameraRelative(d, uPlanetRadius);
+        ground[i] = cameraRelative(d, uPlanetRadius + double(terrainHeight(vec3(d), terrainShape, uContinents)));
         corners[i] = cameraRelative(d, uPlanetRadius + double(uMinTerrainHeight));
         corners[i + 4] = cameraRelative(d, uPlanetRadius + double(uMaxTerrainHeight));
     }
@@ -29,5 +37,5 @@ void main() {
         cullPatch();
         return;
     }
-    setQuadLevels(seaLevel, uTargetEdgePixels);
+    setQuadLevels(ground, uTargetEdgePixels);
 }

@@ -17,8 +17,8 @@ namespace planet {
 struct TerrainParams {
     double max_height_m = 8000.0;       // highest possible terrain above sea level, m, [0, 50000]
     double ocean_depth_m = 4000.0;      // depth of the abyssal plains below sea level, m, [0, 20000]
-    int noise_octaves = 6;              // mountain noise layers (Michelic Table 1), 0 = continents only, [0, 10]
-    double mountain_frequency = 40.0;   // lowest mountain octave, per planet radius, [0.1, 10000]
+    int noise_octaves = 8;              // mountain noise layers (Michelic Table 1), 0 = continents only, [0, 10]
+    double mountain_frequency = 120.0;  // lowest mountain octave, per planet radius, [0.1, 10000]
     double ridged_weight = 0.6;         // mountains: 0 rounded fBm hills, 1 sharp ridged crests, [0, 1]
     double continent_frequency = 1.5;   // lowest continent octave, per planet radius, [0.01, 100] (baked)
     int continent_octaves = 6;          // fBm octaves baked into the continents map, [1, 10] (baked)
