@@ -106,6 +106,28 @@ TEST(PresetWaves, BadEntriesNameFileLineAndField) {
     EXPECT_EQ(notTables.field, "ocean.wave");
 }
 
+TEST(PresetWaves, LoopingCrestsAreRefused) {
+    // One wave with Q A k = 1.0 x 3 m x 2 pi / 10 m = 1.9 > 1: its crests would loop.
+    const InputError e = expectInputError([&] {
+        parsePreset("[[ocean.wave]]\norigin = [0.0, 0.0, 1.0]\namplitude_m = 3.0\nwavelength_m = 10.0\nsteepness = 1.0\n",
+                    "steep.toml");
+    });
+    EXPECT_EQ(e.field, "ocean.wave");
+    EXPECT_TRUE(contains(e.what(), "loop")) << e.what();
+    // Two waves, each fine alone (0.6), together too sharp (1.2).
+    Scene s;
+    s.waves.assign(2, ocean::GerstnerWave{});
+    for (ocean::GerstnerWave& w : s.waves) {
+        w.wavelength_m = 6.283185307179586;  // k = 1
+        w.amplitude_m = 0.6;
+        w.steepness = 1.0;
+    }
+    ASSERT_FALSE(validateScene(s).empty());
+    EXPECT_EQ(validateScene(s).front().field, "ocean.wave");
+    s.waves.pop_back();
+    EXPECT_TRUE(validateScene(s).empty());
+}
+
 TEST(PresetWaves, FadeEndMustExceedFadeStart) {
     const InputError e = expectInputError([&] { parsePreset("[ocean]\nfade_start = 0.01\nfade_end = 0.001\n", "f.toml"); });
     EXPECT_EQ(e.field, "ocean.fade_end");

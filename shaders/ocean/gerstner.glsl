@@ -71,8 +71,11 @@ float gerstnerPhase(OceanWave w, vec3 v, vec3 dv, OUT(vec3) travel, OUT(float) o
 }
 
 // Eq. 11: Q' = Q smoothstep(e0, e1, 1 - |v . o|).
+// e1 <= e0 (possible after rounding to float) is a step at e0, as in the CPU reference:
+// GLSL leaves smoothstep undefined there.
 float gerstnerSteepness(OceanWave w, float oneMinusAbsCos, float e0, float e1) {
-    return w.shape.y * smoothstep(e0, e1, oneMinusAbsCos);
+    float fade = e1 > e0 ? smoothstep(e0, e1, oneMinusAbsCos) : step(e0, oneMinusAbsCos);
+    return w.shape.y * fade;
 }
 
 // How much of a wave a surface sampled every `footprint` metres can carry: 1 for

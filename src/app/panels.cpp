@@ -9,6 +9,7 @@
 #include "ocean/ocean_gpu.h"
 #include "ocean/ocean_params_table.h"
 #include "ocean/wave_spectrum.h"
+#include "scene/preset_waves.h"
 #include "scene/scene_params.h"
 
 namespace planet {
@@ -185,22 +186,19 @@ bool waveWidgets(ocean::GerstnerWave& w) {
         w.origin = directionFromLatLon(lat, lon);
         changed = true;
     }
-    const double amplitude[2] = {0.0, 100.0}, wavelength[2] = {0.01, 10000.0}, unit[2] = {0.0, 1.0},
-                 speed[2] = {-1000.0, 1000.0}, phase[2] = {-10.0, 10.0};
-    changed |= ImGui::DragScalar("amplitude [m]", ImGuiDataType_Double, &w.amplitude_m, 0.005f, &amplitude[0],
-                                 &amplitude[1], "%.4g", ImGuiSliderFlags_AlwaysClamp);
-    if (ImGui::DragScalar("wavelength [m]", ImGuiDataType_Double, &w.wavelength_m,
-                          static_cast<float>(w.wavelength_m * 5e-3), &wavelength[0], &wavelength[1], "%.4g",
-                          ImGuiSliderFlags_AlwaysClamp)) {
-        w.speed_mps = ocean::deepWaterSpeed(w.wavelength_m);  // stays on the dispersion relation
-        changed = true;
+    for (const WaveField& f : waveFields()) {
+        double& value = w.*f.member;
+        const bool onDispersion = f.member == &ocean::GerstnerWave::wavelength_m &&
+                                  std::abs(w.speed_mps - ocean::deepWaterSpeed(w.wavelength_m)) <= 1e-9 * w.speed_mps;
+        const std::string label = std::string(f.key) + (f.unit[0] ? std::string(" [") + f.unit + "]" : std::string());
+        const float speed = static_cast<float>(std::max(std::abs(value) * 5e-3, 1e-4));
+        if (ImGui::DragScalar(label.c_str(), ImGuiDataType_Double, &value, speed, &f.lo, &f.hi, "%.5g",
+                              ImGuiSliderFlags_AlwaysClamp)) {
+            changed = true;
+            // A wave on the deep-water dispersion relation stays on it; a custom speed is kept.
+            if (onDispersion) w.speed_mps = ocean::deepWaterSpeed(w.wavelength_m);
+        }
     }
-    changed |= ImGui::DragScalar("steepness Q", ImGuiDataType_Double, &w.steepness, 0.005f, &unit[0], &unit[1], "%.3f",
-                                 ImGuiSliderFlags_AlwaysClamp);
-    changed |= ImGui::DragScalar("speed [m/s]", ImGuiDataType_Double, &w.speed_mps, 0.02f, &speed[0], &speed[1],
-                                 "%.4g", ImGuiSliderFlags_AlwaysClamp);
-    changed |= ImGui::DragScalar("phase [rad]", ImGuiDataType_Double, &w.phase_rad, 0.01f, &phase[0], &phase[1],
-                                 "%.3f", ImGuiSliderFlags_AlwaysClamp);
     return changed;
 }
 

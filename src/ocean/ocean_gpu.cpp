@@ -15,6 +15,7 @@ using glm::dot;
 using std::floor;
 using glm::max;
 using glm::smoothstep;
+using glm::step;
 using std::sqrt;
 inline float atan(float y, float x) { return std::atan2(y, x); }
 #define OUT(x) x&

@@ -34,8 +34,9 @@ std::vector<OceanWaveGpu> packWaves(const std::vector<GerstnerWave>& waves, cons
 glm::vec3 gpuPathDisplacement(const std::vector<OceanWaveGpu>& records, const glm::dvec3& direction,
                               const glm::dvec3& cameraPosition, const WaveFade& fade);
 
-// Slope variance (mean square slope, both axes) of a clean sea under a wind of this speed at
-// 12.5 m, Cox & Munk 1954: 0.003 + 5.12e-3 U.
+// Slope variance (mean square slope, both axes) of a clean sea under a wind of this speed,
+// Cox & Munk 1954: 0.003 + 5.12e-3 U (their wind was measured 12.5 m up; we pass the 10 m
+// wind, about 2 % slower over the sea).
 double coxMunkSlopeVariance(double windSpeedMps);
 
 // The slope variance the shading adds for ripples shorter than any wave of the set: Cox &

@@ -34,7 +34,7 @@ void addOceanParams(std::vector<ParamSpec>& table) {
     add("directional_spread_deg", "deg", 0.0, 180.0, "Spread of the wave directions about the wind.",
         &OceanParams::directional_spread_deg);
     add("min_wavelength_m", "m", 0.01, 10000.0, "Shortest generated wave.", &OceanParams::min_wavelength_m);
-    add("choppiness", "", 0.0, 1.0, "Sharpness of the crests: the sum of Q A k over the waves (below 1: no loops).",
+    add("choppiness", "", 0.0, 1.0, "Sharpness of the crests: the sum of Q A k over the waves (up to 1: no loops; cusps at 1).",
         &OceanParams::choppiness);
     add("seed", "", 0.0, 1e6, "Random seed of the wave set: same seed, same sea.", &OceanParams::seed);
     add("fade_start", "", 0.0, 1.0, "e0 of Michelic Eq. 11: Q is 0 where 1 - |v.o| is below it (near origins).",

@@ -23,7 +23,7 @@ struct OceanParams {
     double fetch_km = 0.0;             // JONSWAP fetch; 0: fully developed sea (Pierson-Moskowitz), km, [0, 10000]
     double directional_spread_deg = 30.0;  // std. deviation of wave directions about the wind, deg, [0, 180]
     double min_wavelength_m = 0.5;     // shortest generated wave, m, [0.01, 10000]
-    double choppiness = 0.6;           // sum over waves of Q_i A_i k_i (crest sharpness, < 1: no loops), [0, 1]
+    double choppiness = 0.6;           // sum over waves of Q_i A_i k_i (crest sharpness; up to 1 no loops, cusps at 1), [0, 1]
     int seed = 1;                      // same seed, same sea, [0, 1000000]
     // Eq. 11: Q fades to 0 where 1 - |v . o_i| < fade_start, fully on above fade_end.
     double fade_start = 1.0e-4;        // e0, [0, 1]

@@ -27,8 +27,8 @@
 // Phases are uniform in [0, 2 pi).
 //
 // Steepness: Q_i = choppiness / (k_i A_i N) clamped to [0, 1] (Finch, GPU Gems 1 ch. 1), so
-// that sum Q_i A_i k_i <= choppiness < 1: the horizontal Jacobian of Eq. 8 stays positive
-// (no loops at the crests).
+// that sum Q_i A_i k_i <= choppiness <= 1: the horizontal Jacobian of Eq. 8 stays >= 0 (no
+// loops at the crests; at a sum of exactly 1, a cusp at most).
 //
 // Deterministic: the same OceanParams give bit-identical waves (splitmix64, our own uniform and
 // normal draws: std:: distributions differ between standard libraries). Another libm may round

@@ -109,6 +109,16 @@ std::string validateWaves(const std::vector<GerstnerWave>& waves) {
         }
         return bad.str();
     }
+    // Crests loop where the horizontal Jacobian of Eq. 8 reaches 0: for the sum of the waves
+    // that cannot happen while sum Q_i A_i k_i <= 1 (Michelic Fig. 8d for one wave).
+    double sharpness = 0.0;
+    for (const GerstnerWave& w : waves) sharpness += w.steepness * w.amplitude_m * w.wavenumber();
+    if (!(sharpness <= 1.0)) {
+        std::ostringstream bad;
+        bad << "the sum of steepness x amplitude x wavenumber over the waves is " << sharpness
+            << ", above 1: the crests would loop (lower steepness or amplitude, or lengthen the waves)";
+        return bad.str();
+    }
     return "";
 }
 

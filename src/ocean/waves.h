@@ -76,7 +76,8 @@ glm::dvec3 gerstnerNormal(const std::vector<GerstnerWave>& waves, glm::dvec3 uni
 double gerstnerHeight(const std::vector<GerstnerWave>& waves, glm::dvec3 unitDirection, double seaRadius,
                       double time, const WaveFade& fade);
 
-// "" when every wave is valid (unit origin within 1e-6, amplitude >= 0 and finite,
+// "" when every wave is valid and sum Q_i A_i k_i <= 1 (no looping crests; a message
+// naming the sum otherwise); else (unit origin within 1e-6, amplitude >= 0 and finite,
 // wavelength > 0, steepness in [0, 1], finite speed and phase), else a message naming
 // the first bad wave by index and field.
 std::string validateWaves(const std::vector<GerstnerWave>& waves);

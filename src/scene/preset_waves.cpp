@@ -10,15 +10,10 @@ namespace planet {
 
 namespace {
 
-struct WaveField {
-    const char* key;
-    double lo, hi;
-    const char* unit;
-    double ocean::GerstnerWave::*member;
-};
 
-// The scalar fields, ranges as validateWaves checks them (speed and phase: any finite value).
-const WaveField kWaveFields[] = {
+// The scalar fields and the ranges a preset may give them (the explorer's panel uses the same;
+// validateWaves then checks the set as a whole).
+const std::vector<WaveField> kWaveFields = {
     {"amplitude_m", 0.0, 1000.0, "m", &ocean::GerstnerWave::amplitude_m},
     {"wavelength_m", 1e-3, 1e7, "m", &ocean::GerstnerWave::wavelength_m},
     {"steepness", 0.0, 1.0, "", &ocean::GerstnerWave::steepness},
@@ -99,6 +94,8 @@ std::string waveListToToml(const std::vector<ocean::GerstnerWave>& waves) {
     }
     return text;
 }
+
+const std::vector<WaveField>& waveFields() { return kWaveFields; }
 
 bool sameWaves(const std::vector<ocean::GerstnerWave>& a, const std::vector<ocean::GerstnerWave>& b) {
     if (a.size() != b.size()) return false;

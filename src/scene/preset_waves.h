@@ -21,6 +21,16 @@
 
 namespace planet {
 
+// A wave's scalar fields with the ranges a preset may give them; the explorer's Waves
+// panel draws one widget per entry, so the two always agree.
+struct WaveField {
+    const char* key;  // TOML key, e.g. "amplitude_m"
+    double lo, hi;    // inclusive range
+    const char* unit;
+    double ocean::GerstnerWave::*member;
+};
+const std::vector<WaveField>& waveFields();
+
 // Reads the list at node (the value of ocean.wave). Throws InputError naming file,
 // line and field (e.g. "ocean.wave[2].steepness") for a bad entry.
 std::vector<ocean::GerstnerWave> readWaveList(const toml::node& node, const std::string& file);

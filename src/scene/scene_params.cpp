@@ -105,10 +105,8 @@ std::vector<SceneProblem> validateScene(const Scene& scene) {
     if (scene.terrain.grid_exponent != 2 && scene.terrain.grid_exponent != 4)
         problems.push_back({"terrain.grid_exponent", "must be 2 or 4 (Michelic Eq. 2), not " +
                                                          std::to_string(scene.terrain.grid_exponent)});
-    if (!(scene.ocean.fade_end > scene.ocean.fade_start))
-        problems.push_back({"ocean.fade_end", "e1 " + formatNumber(scene.ocean.fade_end) +
-                                                  " must be above ocean.fade_start (e0) " +
-                                                  formatNumber(scene.ocean.fade_start) + " (Michelic Eq. 11)"});
+    if (const std::string ocean = ocean::validateOceanParams(scene.ocean); !ocean.empty())
+        problems.push_back({"ocean.fade_end", ocean});
     if (const std::string waves = ocean::validateWaves(scene.waves); !waves.empty())
         problems.push_back({"ocean.wave", waves});
     return problems;
