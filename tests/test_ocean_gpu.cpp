@@ -90,13 +90,11 @@ namespace {
 class OceanGpu : public test::GLTest {};
 }  // namespace
 
-TEST_F(OceanGpu, ProbeMatchesTheDoubleReference) {
-    OceanParams params;
-    params.wave_count = 200;
-    const std::vector<ocean::GerstnerWave> waves = ocean::generateWaves(params);
-    const std::vector<ocean::OceanWaveGpu> records = ocean::packWaves(waves, cameraPosition(), kSeaRadius, kTime);
-    const std::vector<glm::dvec3> points = pointsAroundCamera(2.0e3, 4096, 11);
+namespace {
 
+// shaders/ocean/ocean_probe.comp at `points`: per point the displacement and the normal.
+std::vector<glm::vec4> probeGpu(const std::vector<ocean::OceanWaveGpu>& records, const std::vector<glm::dvec3>& points,
+                                const glm::dvec3& camera, const OceanParams& params) {
     const gl::Program program = gl::buildProgram(
         {std::filesystem::path(PLANET_SOURCE_DIR) / "shaders", gl::shaderPreamble()}, {"ocean_probe", {"ocean/ocean_probe.comp"}});
     std::vector<glm::dvec4> input;
@@ -107,7 +105,6 @@ TEST_F(OceanGpu, ProbeMatchesTheDoubleReference) {
     glNamedBufferStorage(inputBuffer.id(), static_cast<GLsizeiptr>(input.size() * sizeof(glm::dvec4)), input.data(), 0);
     glNamedBufferStorage(outputBuffer.id(), outputBytes, nullptr, 0);
     const GLuint p = program.id();
-    const glm::dvec3 camera = cameraPosition();
     glProgramUniform1i(p, 0, static_cast<GLint>(points.size()));
     glProgramUniform3dv(p, glGetUniformLocation(p, "uCameraPosition"), 1, &camera.x);
     glProgramUniform1i(p, glGetUniformLocation(p, "uWaveCount"), static_cast<GLint>(records.size()));
@@ -122,6 +119,18 @@ TEST_F(OceanGpu, ProbeMatchesTheDoubleReference) {
     std::vector<glm::vec4> gpu(points.size() * 2);
     glGetNamedBufferSubData(outputBuffer.id(), 0, outputBytes, gpu.data());
     glUseProgram(0);
+    return gpu;
+}
+
+}  // namespace
+
+TEST_F(OceanGpu, ProbeMatchesTheDoubleReference) {
+    OceanParams params;
+    params.wave_count = 200;
+    const std::vector<ocean::GerstnerWave> waves = ocean::generateWaves(params);
+    const std::vector<ocean::OceanWaveGpu> records = ocean::packWaves(waves, cameraPosition(), kSeaRadius, kTime);
+    const std::vector<glm::dvec3> points = pointsAroundCamera(2.0e3, 4096, 11);
+    const std::vector<glm::vec4> gpu = probeGpu(records, points, cameraPosition(), params);
 
     double worstDisplacement = 0.0, worstNormal = 0.0, amplitude = ocean::maxWaveHeight(waves);
     for (std::size_t i = 0; i < points.size(); ++i) {
@@ -138,4 +147,36 @@ TEST_F(OceanGpu, ProbeMatchesTheDoubleReference) {
     // the GPU's own sin/cos, which GLSL allows to be less precise than libm's).
     EXPECT_LT(worstDisplacement, 1.0e-3);
     EXPECT_LT(worstNormal, 1.0e-3);
+}
+
+TEST_F(OceanGpu, NormalsStayRightNextToAWavesOrigin) {
+    // A camera 100 m from a wave's origin, points from 1 m to 50 m from it: the direction
+    // of travel must not be formed as v cos t - o there (it cancels in float: at 1 m, sin t
+    // is 1.6e-7). The normal matches the double reference to 1e-3 rad.
+    OceanParams params;
+    ocean::GerstnerWave w;
+    w.origin = directionFromLatLon(-20.0, 60.0);
+    w.amplitude_m = 0.3;
+    w.wavelength_m = 8.0;
+    w.steepness = 0.5;
+    w.speed_mps = ocean::deepWaterSpeed(w.wavelength_m);
+    const std::vector<ocean::GerstnerWave> waves{w};
+    const glm::dvec3 east = glm::normalize(glm::cross(glm::dvec3(0.0, 0.0, 1.0), w.origin));
+    const glm::dvec3 north = glm::cross(w.origin, east);
+    auto at = [&](double metres, double azimuth) {
+        const double angle = metres / kSeaRadius;
+        return glm::normalize(std::cos(angle) * w.origin +
+                              std::sin(angle) * (std::cos(azimuth) * north + std::sin(azimuth) * east));
+    };
+    const glm::dvec3 camera = at(100.0, 0.3) * (kSeaRadius + 5.0);
+    std::vector<glm::dvec3> points;
+    for (int i = 0; i < 200; ++i) points.push_back(at(1.0 + 49.0 * i / 199.0, 0.1 * i));
+    const std::vector<ocean::OceanWaveGpu> records = ocean::packWaves(waves, camera, kSeaRadius, kTime);
+    const std::vector<glm::vec4> gpu = probeGpu(records, points, camera, params);
+    double worst = 0.0;
+    for (std::size_t i = 0; i < points.size(); ++i)
+        worst = std::max(worst, angleBetween(glm::dvec3(gpu[2 * i + 1]),
+                                             ocean::gerstnerNormal(waves, points[i], kSeaRadius, kTime, fadeOf(params))));
+    std::printf("normals 1-50 m from a wave's origin: max %.2e rad off the double reference\n", worst);
+    EXPECT_LT(worst, 1.0e-3);
 }

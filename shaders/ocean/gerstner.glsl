@@ -44,10 +44,10 @@ float gerstnerAngle(float y, float x) {
     return atan(y, x);
 }
 
-// Phase of wave w at unit direction v (dv = v - v_c); also the unit direction of travel
+// Phase of wave w at the unit direction v = v_c + dv (only the offset is needed); also the unit direction of travel
 // d_i (Eq. 7, normalised: away from o_i) and 1 - |v . o_i| (Eq. 11's argument), precise
 // near the origin as sin^2 / (1 + |cos|).
-float gerstnerPhase(OceanWave w, vec3 v, vec3 dv, OUT(vec3) travel, OUT(float) oneMinusAbsCos) {
+float gerstnerPhase(OceanWave w, vec3 dv, OUT(vec3) travel, OUT(float) oneMinusAbsCos) {
     vec3 o = oceanXyz(w.originKr);
     vec3 e = oceanXyz(w.frameE);
     vec3 f = cross(o, e);
@@ -61,7 +61,12 @@ float gerstnerPhase(OceanWave w, vec3 v, vec3 dv, OUT(vec3) travel, OUT(float) o
     float ds = (de * (2.0f * sinC + de) + df * df) / max(sinT + sinC, 1.0e-30f);
     float dTheta = gerstnerAngle(ds * cosC - dc * sinC, 1.0f + dc * cosC + ds * sinC);
     float cosT = cosC + dc;
-    travel = (v * cosT - o) / max(sinT, 1.0e-30f);  // Eq. 7: v x ((v - o) x v) = v (v.o) - o, length sin t
+    // Eq. 7: v x ((v - o) x v) = v (v.o) - o, of length sin t. With v = cos t o + sin t u (u the
+    // unit tangent at o towards v, from the offsets: (sinE e + df f) / sin t), that is
+    // sin t (cos t u - sin t o): normalised without forming v cos t - o, which cancels in
+    // float near the origin and the antipode.
+    vec3 towards = (e * sinE + f * df) / max(sinT, 1.0e-30f);
+    travel = towards * cosT - o * sinT;
     oneMinusAbsCos = sinT * sinT / (1.0f + abs(cosT));
     // Reduced to about [-pi, pi] before it reaches sin and cos: GPUs' sin and cos lose
     // accuracy fast for large arguments (tens of thousands of radians 2 km away).

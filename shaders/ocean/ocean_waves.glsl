@@ -31,7 +31,7 @@ vec3 oceanDisplacement(vec3 v, vec3 dv, float footprint, float waterDepth) {
         if (lod <= 0.0) break;  // sorted longest first: the rest are shorter still
         vec3 travel;
         float oneMinusAbsCos;
-        float phase = gerstnerPhase(w, v, dv, travel, oneMinusAbsCos);
+        float phase = gerstnerPhase(w, dv, travel, oneMinusAbsCos);
         float q = gerstnerSteepness(w, oneMinusAbsCos, uFadeStart, uFadeEnd);
         float a = w.shape.x * lod * oceanShoaling(w.shape.x, waterDepth);
         displacement += v * (a * sin(phase)) + travel * (q * a * cos(phase));
@@ -57,7 +57,7 @@ vec3 oceanNormal(vec3 v, vec3 dv, float footprint, float waterDepth, out float s
         slopeVariance += (1.0 - lod) * 0.5 * ak * ak;
         vec3 travel;
         float oneMinusAbsCos;
-        float phase = gerstnerPhase(w, v, dv, travel, oneMinusAbsCos);
+        float phase = gerstnerPhase(w, dv, travel, oneMinusAbsCos);
         float q = gerstnerSteepness(w, oneMinusAbsCos, uFadeStart, uFadeEnd);
         normal -= v * (lod * q * ak * sin(phase)) + travel * (lod * ak * cos(phase));
     }

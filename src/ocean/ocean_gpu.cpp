@@ -92,7 +92,7 @@ glm::vec3 gpuPathDisplacement(const std::vector<OceanWaveGpu>& records, const gl
         const glsl::OceanWave w{r.originKr, r.frameE, r.shape, r.scale};
         glm::vec3 travel;
         float oneMinusAbsCos;
-        const float phase = glsl::gerstnerPhase(w, vf, dv, travel, oneMinusAbsCos);
+        const float phase = glsl::gerstnerPhase(w, dv, travel, oneMinusAbsCos);
         const float q = glsl::gerstnerSteepness(w, oneMinusAbsCos, static_cast<float>(fade.e0), static_cast<float>(fade.e1));
         const float a = r.shape.x;
         displacement += vf * (a * std::sin(phase)) + travel * (q * a * std::cos(phase));  // Michelic Eq. 8
