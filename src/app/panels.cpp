@@ -237,7 +237,7 @@ bool drawWavePanel(Scene& scene, WaveClock& clock) {
     for (std::size_t i = 0; i < shown; ++i) {
         ImGui::PushID(static_cast<int>(i));
         char title[96];
-        std::snprintf(title, sizeof title, "wave %zu: %.3g m long, %.3g m high", i, scene.waves[i].wavelength_m,
+        std::snprintf(title, sizeof title, "wave %zu: %.3g m long, amplitude %.3g m", i, scene.waves[i].wavelength_m,
                       scene.waves[i].amplitude_m);
         if (ImGui::TreeNode(title)) {
             changed |= waveWidgets(scene.waves[i]);
