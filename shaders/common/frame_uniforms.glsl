@@ -17,6 +17,9 @@ vec3 worldRayFromNdc(vec2 ndc) {
     return normalize(mat3(frame.worldFromView) * (view.xyz / view.w));
 }
 
+// Angle one pixel subtends vertically, rad (from the vertical field of view).
+float radiansPerPixel() { return 2.0 * atan(1.0 / frame.clipFromView[1][1]) * frame.viewport.w; }
+
 // Reversed-Z infinite projection: depth = near / distance along the view axis.
 float depthFromViewDistance(float viewDistance) { return frame.camera.x / viewDistance; }
 float viewDistanceFromDepth(float depth) { return frame.camera.x / depth; }

@@ -8,9 +8,8 @@ const float MAX_TESSELLATION_LEVEL = 64.0;
 // nearer end, in units of targetPixels. Depends on the two points only, so patches sharing
 // the edge agree (no cracks).
 float edgeLevel(vec3 a, vec3 b, float targetPixels) {
-    float pixelsPerRadian = frame.viewport.y / (2.0 * atan(1.0 / frame.clipFromView[1][1]));
     float angle = length(a - b) / max(min(length(a), length(b)), 1e-3);
-    return clamp(angle * pixelsPerRadian / targetPixels, 1.0, MAX_TESSELLATION_LEVEL);
+    return clamp(angle / radiansPerPixel() / targetPixels, 1.0, MAX_TESSELLATION_LEVEL);
 }
 
 // True when all eight camera-relative corners of a patch's bounding shell lie outside one

@@ -78,8 +78,8 @@ void main() {
     // A pixel's footprint on the sea: its size at this distance, stretched along the view by
     // 1 / cos(incidence) (the long axis, so grazing views do not alias into sparkle; what it
     // drops becomes glitter roughness).
-    float radiansPerPixel = 2.0 * atan(1.0 / frame.clipFromView[1][1]) * frame.viewport.w;
-    float footprint = surfaceDistance * radiansPerPixel / max(abs(dot(view, up)), 0.02);
+    float pixelAngle = radiansPerPixel();
+    float footprint = surfaceDistance * pixelAngle / max(abs(dot(view, up)), 0.02);
     float waterDepth = uSeaLevel - terrainHeight(up, terrainShape, uContinents);  // below the mean surface
     float slopeVariance;
     vec3 normal = oceanNormal(up, teOffset, footprint, waterDepth, slopeVariance);
@@ -94,7 +94,7 @@ void main() {
 
     // How far the meshes may sag below the sphere here (see above), m, and what that means
     // along this ray.
-    float edge = surfaceDistance * radiansPerPixel * uCoarsestEdgePixels;
+    float edge = surfaceDistance * pixelAngle * uCoarsestEdgePixels;
     float sag = edge * edge / (8.0 * frame.planetCenterFromCamera.w);
     float cosIncidence = max(abs(dot(view, up)), 0.05);
     // Land: near the camera only where no crest can reach (waves may run up a beach, and the

@@ -28,8 +28,7 @@ void main() {
     vec2 g = mix(mix(tcGrid[0], tcGrid[1], uv.x), mix(tcGrid[3], tcGrid[2], uv.x), uv.y);
     dvec3 direction = gridDirection(g);
     vec3 sphere = cameraRelative(direction, uPlanetRadius);
-    float radiansPerPixel = 2.0 * atan(1.0 / frame.clipFromView[1][1]) * frame.viewport.w;
-    float vertexSpacing = length(sphere) * radiansPerPixel * uTargetEdgePixels;
+    float vertexSpacing = length(sphere) * radiansPerPixel() * uTargetEdgePixels;
     vec3 v = vec3(direction);
     vec3 dv = oceanDirectionOffset(direction);
     float waterDepth = uSeaLevel - terrainHeight(v, terrainShape, uContinents);

@@ -37,6 +37,20 @@ void GridMesh::resize(int size) {
     indexCount_ = static_cast<GLsizei>(patches.size());
 }
 
+GridUniforms GridUniforms::lookUp(GLuint program) {
+    auto at = [program](const char* name) { return glGetUniformLocation(program, name); };
+    return {at("uWorldFromGrid"), at("uZShift"), at("uGridExponent"), at("uCameraPosition"), at("uPlanetRadius")};
+}
+
+void GridUniforms::set(GLuint program, const GridProjection& projection, int exponent,
+                       const glm::dvec3& cameraPosition, double radius) const {
+    glProgramUniformMatrix3dv(program, worldFromGrid, 1, GL_FALSE, &projection.worldFromGrid[0][0]);
+    glProgramUniform1d(program, zShift, projection.zShift);
+    glProgramUniform1i(program, gridExponent, exponent);
+    glProgramUniform3dv(program, this->cameraPosition, 1, &cameraPosition.x);
+    glProgramUniform1d(program, planetRadius, radius);
+}
+
 void GridMesh::draw() const {
     glBindVertexArray(vertexArray_.id());
     glPatchParameteri(GL_PATCH_VERTICES, 4);

@@ -6,9 +6,23 @@
 #include <string>
 #include <utility>
 
+#include <glm/glm.hpp>
+
 #include "gl/handle.h"
+#include "grid/projected_grid.h"
 
 namespace planet {
+
+// The uniforms of shaders/terrain/grid.glsl (the grid's projection on the GPU) in one
+// program: looked up once per program, set once per frame by every pass that draws a grid.
+struct GridUniforms {
+    GLint worldFromGrid = -1, zShift = -1, gridExponent = -1, cameraPosition = -1, planetRadius = -1;
+
+    static GridUniforms lookUp(GLuint program);
+    // Eq. 1-4's frame and shift, Eq. 2's n, the camera (world, m) and the sphere's radius (m).
+    void set(GLuint program, const GridProjection& projection, int exponent, const glm::dvec3& cameraPosition,
+             double radius) const;
+};
 
 class GridMesh {
 public:
@@ -16,7 +30,6 @@ public:
 
     // Rebuilds the buffers when the size changed; size in [2, 4096].
     void resize(int size);
-    int size() const { return size_; }
     // Draws the patches (GL_PATCHES, 4 vertices each) with the bound program.
     void draw() const;
 

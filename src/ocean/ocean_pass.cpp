@@ -30,11 +30,7 @@ const OceanPass::Locations& OceanPass::locations() {
     if (locations_.program == p) return locations_;
     auto at = [p](const char* name) { return glGetUniformLocation(p, name); };
     locations_ = {p,
-                  at("uWorldFromGrid"),
-                  at("uZShift"),
-                  at("uGridExponent"),
-                  at("uCameraPosition"),
-                  at("uPlanetRadius"),
+                  GridUniforms::lookUp(p),
                   at("uMaxWaveHeight"),
                   at("uTargetEdgePixels"),
                   at("uWaveCount"),
@@ -86,11 +82,7 @@ void OceanPass::drawSurface(const Scene& scene, const Camera& camera) {
 
     const Locations& l = locations();
     const GLuint p = l.program;
-    glProgramUniformMatrix3dv(p, l.worldFromGrid, 1, GL_FALSE, &projection.worldFromGrid[0][0]);
-    glProgramUniform1d(p, l.zShift, projection.zShift);
-    glProgramUniform1i(p, l.gridExponent, grid.exponent);
-    glProgramUniform3dv(p, l.cameraPosition, 1, &camera.position.x);
-    glProgramUniform1d(p, l.planetRadius, radius);
+    l.grid.set(p, projection, grid.exponent, camera.position, radius);
     glProgramUniform1f(p, l.maxWaveHeight, static_cast<float>(maxHeight));
     glProgramUniform1f(p, l.targetEdgePixels, static_cast<float>(scene.ocean.target_edge_px));
     glProgramUniform1i(p, l.waveCount, static_cast<GLint>(scene.waves.size()));

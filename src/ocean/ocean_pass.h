@@ -41,12 +41,12 @@ public:
 
     gl::HotProgram& surfaceProgram() { return surface_; }
     gl::HotProgram& underwaterProgram() { return underwater_.program(); }
-    const GridAnchor& anchor() const { return anchor_; }
 
 private:
     struct Locations {
         GLuint program = 0;
-        GLint worldFromGrid, zShift, gridExponent, cameraPosition, planetRadius, maxWaveHeight, targetEdgePixels,
+        GridUniforms grid;
+        GLint maxWaveHeight, targetEdgePixels,
             waveCount, fadeStart, fadeEnd, cameraUnderwater, subgridSlopeVariance, seaLevel,
             coarsestEdgePixels;
     };

@@ -49,11 +49,7 @@ const TerrainPass::Locations& TerrainPass::locations() {
     if (locations_.program == p) return locations_;
     auto at = [p](const char* name) { return glGetUniformLocation(p, name); };
     locations_ = {p,
-                  at("uWorldFromGrid"),
-                  at("uZShift"),
-                  at("uGridExponent"),
-                  at("uCameraPosition"),
-                  at("uPlanetRadius"),
+                  GridUniforms::lookUp(p),
                   at("uPlanetRadiusF"),
                   at("uMaxTerrainHeight"),
                   at("uMinTerrainHeight"),
@@ -83,11 +79,7 @@ void TerrainPass::draw(const Scene& scene, const Camera& camera) {
 
     const Locations& l = locations();
     const GLuint p = l.program;
-    glProgramUniformMatrix3dv(p, l.worldFromGrid, 1, GL_FALSE, &projection.worldFromGrid[0][0]);
-    glProgramUniform1d(p, l.zShift, projection.zShift);
-    glProgramUniform1i(p, l.gridExponent, grid_.exponent);
-    glProgramUniform3dv(p, l.cameraPosition, 1, &camera.position.x);
-    glProgramUniform1d(p, l.planetRadius, radius);
+    l.grid.set(p, projection, grid_.exponent, camera.position, radius);
     glProgramUniform1f(p, l.planetRadiusF, static_cast<float>(radius));
     glProgramUniform1f(p, l.maxTerrainHeight, static_cast<float>(maxHeight));
     glProgramUniform1f(p, l.minTerrainHeight, static_cast<float>(-scene.terrain.ocean_depth_m));

@@ -43,7 +43,6 @@ public:
     // Draws into the bound G-buffer (depth test on, reversed-Z).
     void draw(const Scene& scene, const Camera& camera);
     gl::HotProgram& program() { return program_; }
-    const GridAnchor& anchor() const { return anchor_; }
     // Binds what terrain/height.glsl needs, as of the last draw: TerrainBlock (uniform
     // binding 2) and the continents (texture unit 10). The ocean uses it for the sea floor.
     void bindHeightField() const;
@@ -52,7 +51,8 @@ private:
     // Uniform locations, looked up again only when hot reload replaced the program.
     struct Locations {
         GLuint program = 0;
-        GLint worldFromGrid, zShift, gridExponent, cameraPosition, planetRadius, planetRadiusF, maxTerrainHeight,
+        GridUniforms grid;
+        GLint planetRadiusF, maxTerrainHeight,
             minTerrainHeight,
             targetEdgePixels, ocean, lowlandAlbedo;
     };
