@@ -17,6 +17,14 @@ vec3 worldRayFromNdc(vec2 ndc) {
     return normalize(mat3(frame.worldFromView) * (view.xyz / view.w));
 }
 
+const float M_PER_KM = 1000.0;
+
+// The camera relative to the planet centre in km (the atmosphere model's unit), from the
+// radial up and the altitude formed in double on the CPU.
+vec3 cameraFromPlanetCentreKm() {
+    return frame.cameraUp.xyz * ((frame.planetCenterFromCamera.w + frame.cameraUp.w) / M_PER_KM);
+}
+
 // Angle one pixel subtends vertically, rad (from the vertical field of view).
 float radiansPerPixel() { return 2.0 * atan(1.0 / frame.clipFromView[1][1]) * frame.viewport.w; }
 

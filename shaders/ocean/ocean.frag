@@ -64,7 +64,6 @@ uniform float uCoarsestEdgePixels;  // the larger of the terrain's and the ocean
 layout(location = 0) out vec4 outRadiance;
 layout(depth_greater) out float gl_FragDepth;  // reversed-Z: only ever moved towards the camera
 
-const float M_PER_KM = 1000.0;
 const float SHORE_FADE_M = 0.5;  // water path over which the sea fades in at the shore
 
 void main() {
@@ -115,7 +114,7 @@ void main() {
     vec3 behind = texelFetch(seabedRadiance, pixel, 0).rgb;
 
     // Air: camera and surface point in km from the planet centre (the camera's radius formed in double).
-    vec3 camera = frame.cameraUp.xyz * ((frame.planetCenterFromCamera.w + frame.cameraUp.w) / M_PER_KM);
+    vec3 camera = cameraFromPlanetCentreKm();
     vec3 point = camera + tePosition / M_PER_KM;
     vec3 airTransmittance;
     vec3 inscatter = GetSkyRadianceToPointAlongRay(atmosphere, transmittance_texture, scattering_texture,
@@ -143,8 +142,9 @@ void main() {
     vec3 skyIrradiance;
     vec3 sunIrradiance = GetSunAndSkyIrradiance(atmosphere, transmittance_texture, irradiance_texture, point, up, sun,
                                                 skyIrradiance);
-    // The sun's irradiance on a surface facing it (GetSunAndSkyIrradiance weights by the normal).
-    vec3 sunAtSurface = sunIrradiance / max(dot(up, sun), 1e-4);
+    // The sun's irradiance on a surface facing it: through the atmosphere, not yet weighted by a normal.
+    vec3 sunAtSurface = atmosphere.solar_irradiance *
+                        GetTransmittanceToSun(atmosphere, transmittance_texture, length(point), dot(point, sun) / length(point));
     vec3 glitter = dot(up, sun) > 0.0
                        ? sunAtSurface * sunGlitter(normal, -view, sun, slopeVariance + uSubgridSlopeVariance)
                        : vec3(0.0);

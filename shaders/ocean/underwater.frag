@@ -28,7 +28,7 @@ void main() {
     vec3 forward = -vec3(frame.worldFromView[2]);
     float distance = depth > 0.0 ? viewDistanceFromDepth(depth) / max(dot(dir, forward), 1e-6) : 1e30;
     vec3 up = frame.cameraUp.xyz;
-    vec3 surfacePoint = up * ((frame.planetCenterFromCamera.w + frame.cameraUp.w + uCameraDepth) / 1000.0);
+    vec3 surfacePoint = cameraFromPlanetCentreKm() + up * (uCameraDepth / M_PER_KM);
     vec3 skyIrradiance;
     vec3 sunIrradiance = GetSunAndSkyIrradiance(atmosphere, transmittance_texture, irradiance_texture, surfacePoint,
                                                 up, frame.sunDirection.xyz, skyIrradiance);

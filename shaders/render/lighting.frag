@@ -35,7 +35,6 @@ layout(binding = 9) uniform sampler3D elek_single_mie_scattering_texture;
 
 layout(location = 0) out vec4 outRadiance;
 
-const float M_PER_KM = 1000.0;
 const float LIMB_DARKENING_U = 0.6;
 const float MAX_HDR_RADIANCE = 6.0e4;  // below the largest half float (65504)  // linear law I(mu) = 1 - u (1 - mu), visible light
 
@@ -60,8 +59,7 @@ void main() {
     vec3 dir = worldRayFromNdc(vNdc);
     vec3 sun = frame.sunDirection.xyz;
     // Camera relative to the planet centre in km, from the altitude formed in double.
-    float radiusM = frame.planetCenterFromCamera.w;
-    vec3 camera = frame.cameraUp.xyz * ((radiusM + frame.cameraUp.w) / M_PER_KM);
+    vec3 camera = cameraFromPlanetCentreKm();
     vec3 transmittance;
 
     int material = int(texelFetch(gMaterial, pixel, 0).r * 255.0 + 0.5);
