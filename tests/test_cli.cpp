@@ -124,7 +124,7 @@ TEST_F(CliTest, BenchWritesTableCsvAndPlot) {
         ++rows;
         sawSpaceTonemap = sawSpaceTonemap || contains(line, ",space,tonemap,3,");
     }
-    EXPECT_EQ(rows, 2 * 5);  // (terrain, atmosphere, ocean, tonemap, frame) x 2 views
+    EXPECT_EQ(rows, 2 * 7);  // (prepare, terrain, surface light, ocean, sky, tonemap, frame) x 2 views
     EXPECT_TRUE(sawSpaceTonemap);
 
     int w = 0, h = 0, n = 0;

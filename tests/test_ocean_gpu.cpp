@@ -10,8 +10,11 @@
 
 #include "gl/program.h"
 #include "gl_test_support.h"
+#include "grid/grid_mesh.h"
+#include "ocean/ocean_block.h"
 #include "ocean/ocean_gpu.h"
 #include "ocean/wave_spectrum.h"
+#include "render/bindings.h"
 #include "scene/scene.h"
 
 using namespace planet;
@@ -106,14 +109,22 @@ std::vector<glm::vec4> probeGpu(const std::vector<ocean::OceanWaveGpu>& records,
     glNamedBufferStorage(outputBuffer.id(), outputBytes, nullptr, 0);
     const GLuint p = program.id();
     glProgramUniform1i(p, 0, static_cast<GLint>(points.size()));
-    glProgramUniform3dv(p, glGetUniformLocation(p, "uCameraPosition"), 1, &camera.x);
-    glProgramUniform1i(p, glGetUniformLocation(p, "uWaveCount"), static_cast<GLint>(records.size()));
-    glProgramUniform1f(p, glGetUniformLocation(p, "uFadeStart"), static_cast<float>(params.fade_start));
-    glProgramUniform1f(p, glGetUniformLocation(p, "uFadeEnd"), static_cast<float>(params.fade_end));
+    // The blocks the ocean's stages read: the camera from the grid's, count and fade from the ocean's.
+    GridBlock grid{};
+    grid.cameraPositionAndRadius = glm::dvec4(camera, 0.0);
+    ocean::OceanBlock block{};
+    block.waveCount = static_cast<int>(records.size());
+    block.fadeStart = static_cast<float>(params.fade_start);
+    block.fadeEnd = static_cast<float>(params.fade_end);
+    gl::Buffer gridBuffer, oceanBuffer;
+    glNamedBufferStorage(gridBuffer.id(), sizeof grid, &grid, 0);
+    glNamedBufferStorage(oceanBuffer.id(), sizeof block, &block, 0);
+    glBindBufferBase(GL_UNIFORM_BUFFER, binding::BLOCK_GRID, gridBuffer.id());
+    glBindBufferBase(GL_UNIFORM_BUFFER, binding::BLOCK_OCEAN, oceanBuffer.id());
     glUseProgram(p);
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, inputBuffer.id());
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, outputBuffer.id());
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 3, waveBuffer.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding::BUFFER_PROBE_INPUT, inputBuffer.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding::BUFFER_PROBE_OUTPUT, outputBuffer.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding::BUFFER_OCEAN_WAVES, waveBuffer.id());
     glDispatchCompute(static_cast<GLuint>((points.size() + 63) / 64), 1, 1);
     glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
     std::vector<glm::vec4> gpu(points.size() * 2);

@@ -9,6 +9,7 @@
 #include "shaders_ray_sphere_double.h"
 #include "ocean/ocean_pass.h"
 #include "ocean/wave_spectrum.h"
+#include "render/frame_uniforms.h"
 #include "render/renderer.h"
 
 using namespace planet;
@@ -195,7 +196,7 @@ TEST_F(OceanRender, SubmergedCameraGivesWaterNotNan) {
     double aboveRatio = 0.0, aboveMean = 0.0, belowRatio = 0.0, belowMean = 0.0;
     stats(3.0, aboveRatio, aboveMean);
     stats(-3.0, belowRatio, belowMean);
-    ASSERT_GT(OceanPass::cameraDepthM(s.scene, s.camera), 0.0);
+    ASSERT_GT(cameraDepthBelowSeaM(s.scene, s.camera), 0.0);
     std::printf("red / blue above %.3f below %.3f; mean luminance above %.4g below %.4g\n", aboveRatio, belowRatio,
                 aboveMean, belowMean);
     EXPECT_LT(belowRatio, 0.5 * aboveRatio);

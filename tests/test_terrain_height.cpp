@@ -23,6 +23,7 @@
 #include "gl/program.h"
 #include "gl_test_support.h"
 #include "noise/continents.h"
+#include "terrain/continents.h"
 #include "terrain/height.h"
 #include "terrain/terrain_params_table.h"
 #include "terrain/terrain_pass.h"
@@ -671,7 +672,7 @@ std::vector<ProbeResult> probeGpu(const terrain::TerrainShape& shape, const nois
     glNamedBufferStorage(shapeBuffer.id(), sizeof(shape), &shape, 0);  // std140 mirror, copied as is
     glNamedBufferStorage(inputBuffer.id(), static_cast<GLsizeiptr>(input.size() * sizeof(glm::vec4)), input.data(), 0);
     glNamedBufferStorage(outputBuffer.id(), outputBytes, nullptr, 0);
-    const gl::Texture continents = makeContinentsTexture(map);
+    const gl::Texture continents = terrain::makeContinentsTexture(map);
     glEnable(GL_TEXTURE_CUBE_MAP_SEAMLESS);
     glBindTextureUnit(0, continents.id());
     glUseProgram(program.id());

@@ -30,7 +30,9 @@
 //
 // Needs definitions.glsl, functions.glsl (GetScattering, phase functions,
 // GetTransmittance...), the sizes ELEK_TEXTURE_R_SIZE, ELEK_TEXTURE_MU_SIZE,
-// ELEK_TEXTURE_MU_S_SIZE and the ScatteringTexture type.
+// ELEK_TEXTURE_MU_S_SIZE and the ScatteringTexture type. Include before
+// rendering.glsl: the render-time lookups there take either table
+// (GetCombinedScatteringFrom), so sky and aerial perspective are written once.
 
 const Number ELEK_W_SLOPE = 2.8;   // Elek's W: exp(-2.8 mu_s - 0.8)
 const Number ELEK_W_OFFSET = 0.8;
@@ -116,107 +118,4 @@ Spectrum GetCombinedScatteringElek(IN(AtmosphereParameters) atmosphere, IN(Scatt
     vec3 uvw = GetElekTextureUvwFromRMuMuS(atmosphere, r, mu, mu_s, ray_r_mu_intersects_ground);
     single_mie_scattering = Spectrum(texture(elek_single_mie_scattering_texture, uvw));
     return Spectrum(texture(elek_scattering_texture, uvw));
-}
-
-// Phase functions at the real nu (Elek §4.1.2); as ApplyPhaseFunctions in rendering.glsl.
-Spectrum ApplyPhaseFunctionsElek(IN(AtmosphereParameters) atmosphere, IN(Spectrum) scattering,
-                                 IN(Spectrum) single_mie_scattering, Number nu) {
-    return scattering * RenderRayleighPhaseFunction(atmosphere, nu) +
-           single_mie_scattering * MiePhaseFunction(atmosphere.mie_phase_function_g, nu);
-}
-
-// GetSkyRadiance (rendering.glsl) with Elek's table.
-Spectrum GetSkyRadianceElek(IN(AtmosphereParameters) atmosphere, IN(TransmittanceTexture) transmittance_texture,
-                            IN(ScatteringTexture) elek_scattering_texture,
-                            IN(ScatteringTexture) elek_single_mie_scattering_texture, IN(vec3) camera_position,
-                            IN(vec3) view_ray, IN(vec3) sun_direction, OUT(Spectrum) transmittance) {
-    ViewRay ray = ViewRayInAtmosphere(atmosphere, camera_position, view_ray, sun_direction);
-    if (!ray.inside) {
-        transmittance = Spectrum(1.0);
-        return Spectrum(0.0);
-    }
-    Length r = ray.r;
-    Number mu = ray.mu;
-    Number mu_s = ray.mu_s;
-    Number nu = ray.nu;
-    bool ray_r_mu_intersects_ground = RayIntersectsGround(atmosphere, r, mu);
-
-    transmittance = ray_r_mu_intersects_ground
-                        ? Spectrum(0.0)
-                        : GetTransmittanceToTopAtmosphereBoundary(atmosphere, transmittance_texture, r, mu);
-    Spectrum single_mie_scattering;
-    Spectrum scattering =
-        GetCombinedScatteringElek(atmosphere, elek_scattering_texture, elek_single_mie_scattering_texture, r, mu,
-                                  mu_s, ray_r_mu_intersects_ground, single_mie_scattering);
-    return ApplyPhaseFunctionsElek(atmosphere, scattering, single_mie_scattering, nu) * NightFade(atmosphere, mu_s);
-}
-
-// ScatteringBetween (rendering.glsl) with Elek's table: phase-free in-scattering
-// between (r, mu) and the point at distance d, L(a->b) = L(a->inf) - T(a->b) L(b->inf).
-Spectrum ScatteringBetweenElek(IN(AtmosphereParameters) atmosphere, IN(TransmittanceTexture) transmittance_texture,
-                               IN(ScatteringTexture) elek_scattering_texture,
-                               IN(ScatteringTexture) elek_single_mie_scattering_texture, Length r, Number mu,
-                               Number mu_s, Number nu, Length d, OUT(Spectrum) transmittance,
-                               OUT(Spectrum) single_mie_scattering) {
-    bool ray_r_mu_intersects_ground = RayIntersectsGround(atmosphere, r, mu);
-    transmittance = GetTransmittance(atmosphere, transmittance_texture, r, mu, d, ray_r_mu_intersects_ground);
-    Spectrum scattering =
-        GetCombinedScatteringElek(atmosphere, elek_scattering_texture, elek_single_mie_scattering_texture, r, mu,
-                                  mu_s, ray_r_mu_intersects_ground, single_mie_scattering);
-    Length r_p = ClampRadius(atmosphere, sqrt(d * d + 2.0 * r * mu * d + r * r));
-    Number mu_p = ClampCosine((r * mu + d) / r_p);
-    Number mu_s_p = ClampCosine((r * mu_s + d * nu) / r_p);
-    Spectrum single_mie_scattering_p;
-    Spectrum scattering_p =
-        GetCombinedScatteringElek(atmosphere, elek_scattering_texture, elek_single_mie_scattering_texture, r_p, mu_p,
-                                  mu_s_p, ray_r_mu_intersects_ground, single_mie_scattering_p);
-    single_mie_scattering = max(single_mie_scattering - transmittance * single_mie_scattering_p, Spectrum(0.0));
-    return max(scattering - transmittance * scattering_p, Spectrum(0.0));
-}
-
-// GetSkyRadianceToPointAlongRay (rendering.glsl) with Elek's table, with the
-// same Sperlhofer 5.1.2 horizon blend and 5.1.3 Mie fade.
-Spectrum GetSkyRadianceToPointAlongRayElek(IN(AtmosphereParameters) atmosphere,
-                                           IN(TransmittanceTexture) transmittance_texture,
-                                           IN(ScatteringTexture) elek_scattering_texture,
-                                           IN(ScatteringTexture) elek_single_mie_scattering_texture,
-                                           IN(vec3) camera_position, IN(vec3) view_ray, Length distance,
-                                           IN(vec3) sun_direction, OUT(Spectrum) transmittance) {
-    ViewRay ray = ViewRayInAtmosphere(atmosphere, camera_position, view_ray, sun_direction);
-    if (!ray.inside) {
-        transmittance = Spectrum(1.0);
-        return Spectrum(0.0);
-    }
-    Length r = ray.r;
-    Number mu = ray.mu;
-    Number mu_s = ray.mu_s;
-    Number nu = ray.nu;
-    Length d = max(distance - ray.skipped, Length(0.0));
-
-    const Number EPS = 0.004;
-    Number mu_horizon = ElekHorizonMu(atmosphere, r);
-    Spectrum single_mie_scattering;
-    Spectrum scattering;
-    if (abs(mu - mu_horizon) < EPS) {
-        Number a = (mu - mu_horizon + EPS) / (2.0 * EPS);
-        Spectrum transmittance_below;
-        Spectrum mie_below;
-        Spectrum below = ScatteringBetweenElek(atmosphere, transmittance_texture, elek_scattering_texture,
-                                               elek_single_mie_scattering_texture, r, mu_horizon - EPS, mu_s, nu, d,
-                                               transmittance_below, mie_below);
-        Spectrum transmittance_above;
-        Spectrum mie_above;
-        Spectrum above = ScatteringBetweenElek(atmosphere, transmittance_texture, elek_scattering_texture,
-                                               elek_single_mie_scattering_texture, r, mu_horizon + EPS, mu_s, nu, d,
-                                               transmittance_above, mie_above);
-        scattering = mix(below, above, a);
-        single_mie_scattering = mix(mie_below, mie_above, a);
-        transmittance = mix(transmittance_below, transmittance_above, a);
-    } else {
-        scattering = ScatteringBetweenElek(atmosphere, transmittance_texture, elek_scattering_texture,
-                                           elek_single_mie_scattering_texture, r, mu, mu_s, nu, d, transmittance,
-                                           single_mie_scattering);
-    }
-    single_mie_scattering = single_mie_scattering * smoothstep(Number(0.0), Number(0.01), mu_s);
-    return ApplyPhaseFunctionsElek(atmosphere, scattering, single_mie_scattering, nu) * NightFade(atmosphere, mu_s);
 }

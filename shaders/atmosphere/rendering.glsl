@@ -7,6 +7,12 @@
 // centre, in km. Sperlhofer 5.1 horizon fixes: in-scattering near the horizon
 // is interpolated from samples above and below it (5.1.2) and single Mie
 // scattering fades out as the sun sets (5.1.3).
+//
+// Every lookup takes `elek_table`: false reads Bruneton's 4D table (r, mu, mu_s, nu),
+// true Elek's 3D table (elek_table.glsl; include it first), passed in the same two
+// ScatteringTexture arguments. The ray-level functions are written once for both; in
+// GLSL the flag is a compile-time constant at every call (atmosphere/interface.glsl), so
+// the unused lookup is folded away.
 
 // The tables end at the lowest sun they cover (mu_s_min, about -12 deg on
 // Earth) and clamp beyond it, which would repeat that twilight all night.
@@ -23,6 +29,20 @@ Spectrum GetCombinedScattering(IN(AtmosphereParameters) atmosphere, IN(Scatterin
     single_mie_scattering =
         GetScattering(atmosphere, single_mie_scattering_texture, r, mu, mu_s, nu, ray_r_mu_intersects_ground);
     return GetScattering(atmosphere, scattering_texture, r, mu, mu_s, nu, ray_r_mu_intersects_ground);
+}
+
+// Either table's lookup (see the file header): Rayleigh + multiple part returned, single
+// Mie in `single_mie_scattering`, both phase-free.
+Spectrum GetCombinedScatteringFrom(IN(AtmosphereParameters) atmosphere, bool elek_table,
+                                   IN(ScatteringTexture) scattering_texture,
+                                   IN(ScatteringTexture) single_mie_scattering_texture, Length r, Number mu,
+                                   Number mu_s, Number nu, bool ray_r_mu_intersects_ground,
+                                   OUT(Spectrum) single_mie_scattering) {
+    if (elek_table)
+        return GetCombinedScatteringElek(atmosphere, scattering_texture, single_mie_scattering_texture, r, mu, mu_s,
+                                         ray_r_mu_intersects_ground, single_mie_scattering);
+    return GetCombinedScattering(atmosphere, scattering_texture, single_mie_scattering_texture, r, mu, mu_s, nu,
+                                 ray_r_mu_intersects_ground, single_mie_scattering);
 }
 
 Spectrum ApplyPhaseFunctions(IN(AtmosphereParameters) atmosphere, IN(Spectrum) scattering,
@@ -71,10 +91,10 @@ ViewRay ViewRayInAtmosphere(IN(AtmosphereParameters) atmosphere, IN(vec3) camera
 // Radiance scattered towards a camera at `camera` along `view_ray` up to the
 // ground or space, without the ground's own reflected light or the sun disc.
 // `transmittance` is that of the whole ray (0 if it hits the ground).
-Spectrum GetSkyRadiance(IN(AtmosphereParameters) atmosphere, IN(TransmittanceTexture) transmittance_texture,
-                        IN(ScatteringTexture) scattering_texture, IN(ScatteringTexture) single_mie_scattering_texture,
-                        IN(vec3) camera_position, IN(vec3) view_ray, IN(vec3) sun_direction,
-                        OUT(Spectrum) transmittance) {
+Spectrum GetSkyRadianceFrom(IN(AtmosphereParameters) atmosphere, bool elek_table,
+                            IN(TransmittanceTexture) transmittance_texture, IN(ScatteringTexture) scattering_texture,
+                            IN(ScatteringTexture) single_mie_scattering_texture, IN(vec3) camera_position,
+                            IN(vec3) view_ray, IN(vec3) sun_direction, OUT(Spectrum) transmittance) {
     ViewRay ray = ViewRayInAtmosphere(atmosphere, camera_position, view_ray, sun_direction);
     if (!ray.inside) {
         transmittance = Spectrum(1.0);  // the ray misses the atmosphere
@@ -90,8 +110,9 @@ Spectrum GetSkyRadiance(IN(AtmosphereParameters) atmosphere, IN(TransmittanceTex
                         ? Spectrum(0.0)
                         : GetTransmittanceToTopAtmosphereBoundary(atmosphere, transmittance_texture, r, mu);
     Spectrum single_mie_scattering;
-    Spectrum scattering = GetCombinedScattering(atmosphere, scattering_texture, single_mie_scattering_texture, r, mu,
-                                                mu_s, nu, ray_r_mu_intersects_ground, single_mie_scattering);
+    Spectrum scattering =
+        GetCombinedScatteringFrom(atmosphere, elek_table, scattering_texture, single_mie_scattering_texture, r, mu,
+                                  mu_s, nu, ray_r_mu_intersects_ground, single_mie_scattering);
     return ApplyPhaseFunctions(atmosphere, scattering, single_mie_scattering, nu) * NightFade(atmosphere, mu_s);
 }
 
@@ -111,21 +132,22 @@ Spectrum GetViewRayTransmittance(IN(AtmosphereParameters) atmosphere, IN(Transmi
 
 // In-scattering between (r, mu) and the point at distance d along the ray
 // (Sperlhofer Eq. 4-18: L(a->b) = L(a->inf) - T(a->b) L(b->inf)), phase-free.
-Spectrum ScatteringBetween(IN(AtmosphereParameters) atmosphere, IN(TransmittanceTexture) transmittance_texture,
-                           IN(ScatteringTexture) scattering_texture,
+Spectrum ScatteringBetween(IN(AtmosphereParameters) atmosphere, bool elek_table,
+                           IN(TransmittanceTexture) transmittance_texture, IN(ScatteringTexture) scattering_texture,
                            IN(ScatteringTexture) single_mie_scattering_texture, Length r, Number mu, Number mu_s,
                            Number nu, Length d, OUT(Spectrum) transmittance, OUT(Spectrum) single_mie_scattering) {
     bool ray_r_mu_intersects_ground = RayIntersectsGround(atmosphere, r, mu);
     transmittance = GetTransmittance(atmosphere, transmittance_texture, r, mu, d, ray_r_mu_intersects_ground);
-    Spectrum scattering = GetCombinedScattering(atmosphere, scattering_texture, single_mie_scattering_texture, r, mu,
-                                                mu_s, nu, ray_r_mu_intersects_ground, single_mie_scattering);
+    Spectrum scattering =
+        GetCombinedScatteringFrom(atmosphere, elek_table, scattering_texture, single_mie_scattering_texture, r, mu,
+                                  mu_s, nu, ray_r_mu_intersects_ground, single_mie_scattering);
     Length r_p = ClampRadius(atmosphere, sqrt(d * d + 2.0 * r * mu * d + r * r));
     Number mu_p = ClampCosine((r * mu + d) / r_p);
     Number mu_s_p = ClampCosine((r * mu_s + d * nu) / r_p);
     Spectrum single_mie_scattering_p;
-    Spectrum scattering_p = GetCombinedScattering(atmosphere, scattering_texture, single_mie_scattering_texture, r_p,
-                                                  mu_p, mu_s_p, nu, ray_r_mu_intersects_ground,
-                                                  single_mie_scattering_p);
+    Spectrum scattering_p =
+        GetCombinedScatteringFrom(atmosphere, elek_table, scattering_texture, single_mie_scattering_texture, r_p, mu_p,
+                                  mu_s_p, nu, ray_r_mu_intersects_ground, single_mie_scattering_p);
     single_mie_scattering = max(single_mie_scattering - transmittance * single_mie_scattering_p, Spectrum(0.0));
     return max(scattering - transmittance * scattering_p, Spectrum(0.0));
 }
@@ -135,12 +157,12 @@ Spectrum ScatteringBetween(IN(AtmosphereParameters) atmosphere, IN(Transmittance
 // transmittance between them. Taking the ray and distance rather than the
 // point keeps a point 2 m away exact: in float, point - camera at planet scale
 // would be rounded to half a metre.
-Spectrum GetSkyRadianceToPointAlongRay(IN(AtmosphereParameters) atmosphere,
-                                       IN(TransmittanceTexture) transmittance_texture,
-                                       IN(ScatteringTexture) scattering_texture,
-                                       IN(ScatteringTexture) single_mie_scattering_texture, IN(vec3) camera_position,
-                                       IN(vec3) view_ray, Length distance, IN(vec3) sun_direction,
-                                       OUT(Spectrum) transmittance) {
+Spectrum GetSkyRadianceToPointAlongRayFrom(IN(AtmosphereParameters) atmosphere, bool elek_table,
+                                           IN(TransmittanceTexture) transmittance_texture,
+                                           IN(ScatteringTexture) scattering_texture,
+                                           IN(ScatteringTexture) single_mie_scattering_texture,
+                                           IN(vec3) camera_position, IN(vec3) view_ray, Length distance,
+                                           IN(vec3) sun_direction, OUT(Spectrum) transmittance) {
     ViewRay ray = ViewRayInAtmosphere(atmosphere, camera_position, view_ray, sun_direction);
     if (!ray.inside) {
         transmittance = Spectrum(1.0);
@@ -159,7 +181,7 @@ Spectrum GetSkyRadianceToPointAlongRay(IN(AtmosphereParameters) atmosphere,
     Number mu_horizon = -SafeSqrt(1.0 - (atmosphere.bottom_radius / r) * (atmosphere.bottom_radius / r));
     bool near_horizon = abs(mu - mu_horizon) < EPS;
     Spectrum single_mie_scattering;
-    Spectrum scattering = ScatteringBetween(atmosphere, transmittance_texture, scattering_texture,
+    Spectrum scattering = ScatteringBetween(atmosphere, elek_table, transmittance_texture, scattering_texture,
                                             single_mie_scattering_texture, r,
                                             near_horizon ? mu_horizon - EPS : mu, mu_s, nu, d, transmittance,
                                             single_mie_scattering);
@@ -167,7 +189,7 @@ Spectrum GetSkyRadianceToPointAlongRay(IN(AtmosphereParameters) atmosphere,
         Number a = (mu - mu_horizon + EPS) / (2.0 * EPS);
         Spectrum transmittance_above;
         Spectrum mie_above;
-        Spectrum above = ScatteringBetween(atmosphere, transmittance_texture, scattering_texture,
+        Spectrum above = ScatteringBetween(atmosphere, elek_table, transmittance_texture, scattering_texture,
                                            single_mie_scattering_texture, r, mu_horizon + EPS, mu_s, nu, d,
                                            transmittance_above, mie_above);
         scattering = mix(scattering, above, a);
@@ -177,6 +199,43 @@ Spectrum GetSkyRadianceToPointAlongRay(IN(AtmosphereParameters) atmosphere,
     // Sperlhofer 5.1.3: single Mie scattering is unreliable once the sun has set.
     single_mie_scattering = single_mie_scattering * smoothstep(Number(0.0), Number(0.01), mu_s);
     return ApplyPhaseFunctions(atmosphere, scattering, single_mie_scattering, nu) * NightFade(atmosphere, mu_s);
+}
+
+// The lookups above with Bruneton's 4D table and with Elek's 3D table, by name.
+Spectrum GetSkyRadiance(IN(AtmosphereParameters) atmosphere, IN(TransmittanceTexture) transmittance_texture,
+                        IN(ScatteringTexture) scattering_texture, IN(ScatteringTexture) single_mie_scattering_texture,
+                        IN(vec3) camera_position, IN(vec3) view_ray, IN(vec3) sun_direction,
+                        OUT(Spectrum) transmittance) {
+    return GetSkyRadianceFrom(atmosphere, false, transmittance_texture, scattering_texture,
+                              single_mie_scattering_texture, camera_position, view_ray, sun_direction, transmittance);
+}
+Spectrum GetSkyRadianceElek(IN(AtmosphereParameters) atmosphere, IN(TransmittanceTexture) transmittance_texture,
+                            IN(ScatteringTexture) elek_scattering_texture,
+                            IN(ScatteringTexture) elek_single_mie_scattering_texture, IN(vec3) camera_position,
+                            IN(vec3) view_ray, IN(vec3) sun_direction, OUT(Spectrum) transmittance) {
+    return GetSkyRadianceFrom(atmosphere, true, transmittance_texture, elek_scattering_texture,
+                              elek_single_mie_scattering_texture, camera_position, view_ray, sun_direction,
+                              transmittance);
+}
+Spectrum GetSkyRadianceToPointAlongRay(IN(AtmosphereParameters) atmosphere,
+                                       IN(TransmittanceTexture) transmittance_texture,
+                                       IN(ScatteringTexture) scattering_texture,
+                                       IN(ScatteringTexture) single_mie_scattering_texture, IN(vec3) camera_position,
+                                       IN(vec3) view_ray, Length distance, IN(vec3) sun_direction,
+                                       OUT(Spectrum) transmittance) {
+    return GetSkyRadianceToPointAlongRayFrom(atmosphere, false, transmittance_texture, scattering_texture,
+                                             single_mie_scattering_texture, camera_position, view_ray, distance,
+                                             sun_direction, transmittance);
+}
+Spectrum GetSkyRadianceToPointAlongRayElek(IN(AtmosphereParameters) atmosphere,
+                                           IN(TransmittanceTexture) transmittance_texture,
+                                           IN(ScatteringTexture) elek_scattering_texture,
+                                           IN(ScatteringTexture) elek_single_mie_scattering_texture,
+                                           IN(vec3) camera_position, IN(vec3) view_ray, Length distance,
+                                           IN(vec3) sun_direction, OUT(Spectrum) transmittance) {
+    return GetSkyRadianceToPointAlongRayFrom(atmosphere, true, transmittance_texture, elek_scattering_texture,
+                                             elek_single_mie_scattering_texture, camera_position, view_ray, distance,
+                                             sun_direction, transmittance);
 }
 
 // The same for two points (positions relative to the planet centre, km).

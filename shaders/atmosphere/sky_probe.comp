@@ -9,6 +9,7 @@
 #include "atmosphere/definitions.glsl"
 #include "atmosphere/uniforms.glsl"
 #include "atmosphere/functions.glsl"
+#include "atmosphere/elek_table.glsl"
 #include "atmosphere/rendering.glsl"
 
 layout(local_size_x = 64, local_size_y = 1, local_size_z = 1) in;

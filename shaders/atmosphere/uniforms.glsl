@@ -1,15 +1,26 @@
 // The atmosphere's parameters as a uniform block; mirror of src/atmosphere/uniforms.h.
 // Include after definitions.glsl; atmosphereParameters() rebuilds the struct the
 // model functions take.
-layout(std140, binding = 1) uniform AtmosphereUniforms {
-    vec4 solarIrradiance;       // rgb; w: sun angular radius
-    vec4 radii;                 // bottom, top (km), Mie g, mu_s_min
-    vec4 rayleighScattering;    // rgb; w: Elek phase flag
-    vec4 mieScattering;         // rgb; w: 1 = render with Elek's 3D table (lighting.frag)
-    vec4 mieExtinction;
-    vec4 absorptionExtinction;
-    vec4 groundAlbedo;
-    vec4 profiles[12];          // [profile][layer][2]: (width, exp_term, exp_scale, linear), (constant)
+#include "common/bindings.glsl"
+
+layout(std140, binding = BLOCK_ATMOSPHERE) uniform AtmosphereBlock {
+    vec3 solarIrradiance;        // W m^-2 nm^-1
+    float sunAngularRadius;      // rad
+    float bottomRadius;          // km
+    float topRadius;             // km
+    float miePhaseG;
+    float muSMin;
+    vec3 rayleighScattering;     // 1/km
+    float elekRayleighPhase;     // 1: Elek's Rayleigh phase (Eq. 15)
+    vec3 mieScattering;
+    float padding0;
+    vec3 mieExtinction;
+    float padding1;
+    vec3 absorptionExtinction;
+    float padding2;
+    vec3 groundAlbedo;
+    float padding3;
+    vec4 profiles[12];           // [profile][layer][2]: (width, exp_term, exp_scale, linear), (constant)
 } atmosphereUniforms;
 
 DensityProfile densityProfile(int index) {
@@ -24,20 +35,20 @@ DensityProfile densityProfile(int index) {
 
 AtmosphereParameters atmosphereParameters() {
     AtmosphereParameters a;
-    a.solar_irradiance = atmosphereUniforms.solarIrradiance.rgb;
-    a.sun_angular_radius = atmosphereUniforms.solarIrradiance.w;
-    a.bottom_radius = atmosphereUniforms.radii.x;
-    a.top_radius = atmosphereUniforms.radii.y;
+    a.solar_irradiance = atmosphereUniforms.solarIrradiance;
+    a.sun_angular_radius = atmosphereUniforms.sunAngularRadius;
+    a.bottom_radius = atmosphereUniforms.bottomRadius;
+    a.top_radius = atmosphereUniforms.topRadius;
     a.rayleigh_density = densityProfile(0);
-    a.rayleigh_scattering = atmosphereUniforms.rayleighScattering.rgb;
+    a.rayleigh_scattering = atmosphereUniforms.rayleighScattering;
     a.mie_density = densityProfile(1);
-    a.mie_scattering = atmosphereUniforms.mieScattering.rgb;
-    a.mie_extinction = atmosphereUniforms.mieExtinction.rgb;
-    a.mie_phase_function_g = atmosphereUniforms.radii.z;
+    a.mie_scattering = atmosphereUniforms.mieScattering;
+    a.mie_extinction = atmosphereUniforms.mieExtinction;
+    a.mie_phase_function_g = atmosphereUniforms.miePhaseG;
     a.absorption_density = densityProfile(2);
-    a.absorption_extinction = atmosphereUniforms.absorptionExtinction.rgb;
-    a.ground_albedo = atmosphereUniforms.groundAlbedo.rgb;
-    a.mu_s_min = atmosphereUniforms.radii.w;
-    a.elek_rayleigh_phase = atmosphereUniforms.rayleighScattering.w;
+    a.absorption_extinction = atmosphereUniforms.absorptionExtinction;
+    a.ground_albedo = atmosphereUniforms.groundAlbedo;
+    a.mu_s_min = atmosphereUniforms.muSMin;
+    a.elek_rayleigh_phase = atmosphereUniforms.elekRayleighPhase;
     return a;
 }

@@ -1,14 +1,30 @@
-// Per-frame uniform block; mirror of src/render/frame_uniforms.h (std140).
-layout(std140, binding = 0) uniform FrameUniforms {
-    mat4 clipFromView;
+// The per-frame uniform block every pass reads; mirror of src/render/frame_uniforms.h
+// (std140: each vec3 is followed by one float that fills its 16 bytes).
+#include "common/bindings.glsl"
+
+layout(std140, binding = BLOCK_FRAME) uniform FrameBlock {
+    mat4 clipFromView;           // reversed-Z, infinite far plane
     mat4 viewFromClip;
-    mat4 viewFromWorld;
-    mat4 worldFromView;
-    vec4 planetCenterFromCamera;  // xyz: centre - camera (m); w: planet radius (m)
-    vec4 cameraUp;                // xyz: radial up at the camera; w: camera altitude (m)
-    vec4 sunDirection;            // xyz: towards the sun; w: angular radius (rad)
-    vec4 viewport;                // w, h, 1/w, 1/h
-    vec4 camera;                  // x: near plane (m); y: exposure
+    mat4 viewFromWorld;          // rotation only: world axes, camera at the origin
+    mat4 worldFromView;          // rotation only
+    mat4 previousClipFromWorld;  // the previous frame's clipFromView * viewFromWorld (its camera at the origin)
+    vec3 planetCenterFromCamera; // m, world axes, formed in double
+    float planetRadius;          // m
+    vec3 cameraUp;               // radial unit up at the camera
+    float cameraAltitude;        // m above the planet radius, formed in double
+    vec3 sunDirection;           // unit, towards the sun
+    float time;                  // s: the scene's clock (waves, wind)
+    vec3 cameraFromPrevious;     // m: this frame's camera - the previous frame's, formed in double
+    float historyValid;          // 1 when the previous frame's targets may be reprojected, else 0
+    vec2 viewportSize;           // pixels
+    vec2 inverseViewportSize;
+    vec2 jitter;                 // sub-pixel offset of this frame's sample (Halton 2, 3), pixels in [-0.5, 0.5]
+    float nearPlane;             // m
+    float exposure;              // tone mapping: display = 1 - exp(-exposure * radiance)
+    int frameIndex;              // frames since the renderer started
+    float cameraDepthBelowSea;   // m below the mean sea surface (> 0: the camera is under water)
+    float padding0;
+    float padding1;
 } frame;
 
 // World-oriented direction of the view ray through a point in NDC (x, y in [-1, 1]).
@@ -21,13 +37,19 @@ const float M_PER_KM = 1000.0;
 
 // The camera relative to the planet centre in km (the atmosphere model's unit), from the
 // radial up and the altitude formed in double on the CPU.
-vec3 cameraFromPlanetCentreKm() {
-    return frame.cameraUp.xyz * ((frame.planetCenterFromCamera.w + frame.cameraUp.w) / M_PER_KM);
-}
+vec3 cameraFromPlanetCentreKm() { return frame.cameraUp * ((frame.planetRadius + frame.cameraAltitude) / M_PER_KM); }
 
 // Angle one pixel subtends vertically, rad (from the vertical field of view).
-float radiansPerPixel() { return 2.0 * atan(1.0 / frame.clipFromView[1][1]) * frame.viewport.w; }
+float radiansPerPixel() { return 2.0 * atan(1.0 / frame.clipFromView[1][1]) * frame.inverseViewportSize.y; }
 
 // Reversed-Z infinite projection: depth = near / distance along the view axis.
-float depthFromViewDistance(float viewDistance) { return frame.camera.x / viewDistance; }
-float viewDistanceFromDepth(float depth) { return frame.camera.x / depth; }
+float depthFromViewDistance(float viewDistance) { return frame.nearPlane / viewDistance; }
+float viewDistanceFromDepth(float depth) { return frame.nearPlane / depth; }
+
+// Where a point (m, relative to this frame's camera, world axes) was in the previous
+// frame's NDC: the offset between the cameras comes formed in double, so nothing of planet
+// size is subtracted here. Meaningful only where frame.historyValid is 1.
+vec3 previousNdcFromWorld(vec3 pointFromCamera) {
+    vec4 clip = frame.previousClipFromWorld * vec4(pointFromCamera + frame.cameraFromPrevious, 1.0);
+    return clip.xyz / clip.w;
+}

@@ -4,13 +4,12 @@
 #include "common/frame_uniforms.glsl"
 #include "terrain/grid.glsl"
 #include "grid/tessellation.glsl"
+#include "ocean/ocean_block.glsl"
 
 layout(vertices = 4) out;
 in vec2 vGrid[];
 out vec2 tcGrid[];
 
-uniform float uMaxWaveHeight;      // m: the sum of the amplitudes
-uniform float uTargetEdgePixels;
 
 void main() {
     tcGrid[gl_InvocationID] = vGrid[gl_InvocationID];
@@ -19,13 +18,13 @@ void main() {
     vec3 corners[8];
     for (int i = 0; i < 4; ++i) {
         dvec3 d = gridDirection(vGrid[i]);
-        mean[i] = cameraRelative(d, uPlanetRadius);
-        corners[i] = cameraRelative(d, uPlanetRadius - double(uMaxWaveHeight));
-        corners[i + 4] = cameraRelative(d, uPlanetRadius + double(uMaxWaveHeight));
+        mean[i] = cameraRelative(d, gridSphereRadius());
+        corners[i] = cameraRelative(d, gridSphereRadius() - double(ocean.maxWaveHeight));
+        corners[i + 4] = cameraRelative(d, gridSphereRadius() + double(ocean.maxWaveHeight));
     }
     if (outsideFrustum(corners)) {
         cullPatch();
         return;
     }
-    setQuadLevels(mean, uTargetEdgePixels);
+    setQuadLevels(mean, ocean.targetEdgePixels);
 }

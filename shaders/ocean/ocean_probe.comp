@@ -6,16 +6,17 @@
 // Output per point (2 vec4): [0] displacement from the sea sphere (m, world axes), w 0;
 //                            [1] unit normal xyz, w: slope variance left over (0 here).
 #include "terrain/grid.glsl"
+#include "ocean/ocean_block.glsl"
 #include "ocean/gerstner.glsl"
 #include "ocean/ocean_waves.glsl"
 
 layout(local_size_x = 64, local_size_y = 1, local_size_z = 1) in;
 layout(location = 0) uniform int pointCount;
 
-layout(std430, binding = 0) readonly buffer ProbeDirections {
+layout(std430, binding = BUFFER_PROBE_INPUT) readonly buffer ProbeDirections {
     dvec4 directions[];
 };
-layout(std430, binding = 1) writeonly buffer ProbeResults {
+layout(std430, binding = BUFFER_PROBE_OUTPUT) writeonly buffer ProbeResults {
     vec4 results[];
 };
 

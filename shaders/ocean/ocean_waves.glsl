@@ -1,12 +1,10 @@
 // The wave set on the GPU and the sums over it (GLSL only; the per-wave terms are the
 // shared gerstner.glsl). The records come longest first (ocean/ocean_gpu.h), so each sum
-// stops at the first wave its sampling cannot carry. Include after terrain/grid.glsl (uCameraPosition) and ocean/gerstner.glsl.
-layout(std430, binding = 3) readonly buffer OceanWaves {
+// stops at the first wave its sampling cannot carry. Include after terrain/grid.glsl (the
+// camera), ocean/ocean_block.glsl (count, fade) and ocean/gerstner.glsl.
+layout(std430, binding = BUFFER_OCEAN_WAVES) readonly buffer OceanWaves {
     OceanWave oceanWaves[];
 };
-uniform int uWaveCount;
-uniform float uFadeStart;  // e0 of Michelic Eq. 11
-uniform float uFadeEnd;    // e1
 
 // A wave breaks when its height 2A reaches about 0.78 times the water depth (the breaker
 // index of a solitary wave; McCowan 1894): each wave's amplitude is held to 0.39 x depth,
@@ -18,21 +16,21 @@ float oceanShoaling(float amplitude, float waterDepth) {
 }
 
 // v - v_c: the point's unit direction minus the camera's, formed in double (gerstner.glsl).
-vec3 oceanDirectionOffset(dvec3 direction) { return vec3(direction - normalize(uCameraPosition)); }
+vec3 oceanDirectionOffset(dvec3 direction) { return vec3(direction - normalize(gridCameraPosition())); }
 
 // Michelic Eq. 8 without its v r term: the displacement from the sea sphere at unit
 // direction v, keeping the waves a surface sampled every `footprint` metres can carry,
 // each held to what the water depth below the mean surface allows (oceanShoaling).
 vec3 oceanDisplacement(vec3 v, vec3 dv, float footprint, float waterDepth) {
     vec3 displacement = vec3(0.0);
-    for (int i = 0; i < uWaveCount; ++i) {
+    for (int i = 0; i < ocean.waveCount; ++i) {
         OceanWave w = oceanWaves[i];
         float lod = gerstnerLod(w, footprint);
         if (lod <= 0.0) break;  // sorted longest first: the rest are shorter still
         vec3 travel;
         float oneMinusAbsCos;
         float phase = gerstnerPhase(w, dv, travel, oneMinusAbsCos);
-        float q = gerstnerSteepness(w, oneMinusAbsCos, uFadeStart, uFadeEnd);
+        float q = gerstnerSteepness(w, oneMinusAbsCos, ocean.fadeStart, ocean.fadeEnd);
         float a = w.shape.x * lod * oceanShoaling(w.shape.x, waterDepth);
         displacement += v * (a * sin(phase)) + travel * (q * a * cos(phase));
     }
@@ -46,7 +44,7 @@ vec3 oceanDisplacement(vec3 v, vec3 dv, float footprint, float waterDepth) {
 vec3 oceanNormal(vec3 v, vec3 dv, float footprint, float waterDepth, out float slopeVariance) {
     vec3 normal = v;
     slopeVariance = 0.0;
-    for (int i = 0; i < uWaveCount; ++i) {
+    for (int i = 0; i < ocean.waveCount; ++i) {
         OceanWave w = oceanWaves[i];
         float lod = gerstnerLod(w, footprint);
         if (lod <= 0.0) {  // sorted longest first: this and the rest only roughen (short: no shoaling)
@@ -58,7 +56,7 @@ vec3 oceanNormal(vec3 v, vec3 dv, float footprint, float waterDepth, out float s
         vec3 travel;
         float oneMinusAbsCos;
         float phase = gerstnerPhase(w, dv, travel, oneMinusAbsCos);
-        float q = gerstnerSteepness(w, oneMinusAbsCos, uFadeStart, uFadeEnd);
+        float q = gerstnerSteepness(w, oneMinusAbsCos, ocean.fadeStart, ocean.fadeEnd);
         normal -= v * (lod * q * ak * sin(phase)) + travel * (lod * ak * cos(phase));
     }
     return normalize(normal);

@@ -5,11 +5,23 @@
 // (Eq. 1). In double precision: the direction feeds positions of planet size
 // that are then made camera-relative, and float would round them to half a
 // metre (visible steps when standing on a beach).
-uniform dmat3 uWorldFromGrid;
-uniform double uZShift;
-uniform int uGridExponent;       // n of Eq. 2
-uniform dvec3 uCameraPosition;   // world frame, m
-uniform double uPlanetRadius;    // m, sea level
+#include "common/bindings.glsl"
+
+// The grid of the pass that draws, uploaded before the frame (src/grid/grid_mesh.h:
+// GridBlock, std140: a dvec4 takes 32 bytes).
+layout(std140, binding = BLOCK_GRID) uniform GridBlock {
+    dvec4 worldFromGridColumns[3];  // Eq. 4's rotation, by column (w unused)
+    dvec4 cameraPositionAndRadius;  // xyz: the camera, world frame, m; w: the grid sphere's radius, m
+    double zShift;                  // z_s of Eq. 3
+    int exponent;                   // n of Eq. 2
+} grid;
+
+dmat3 worldFromGrid() {
+    return dmat3(grid.worldFromGridColumns[0].xyz, grid.worldFromGridColumns[1].xyz, grid.worldFromGridColumns[2].xyz);
+}
+dvec3 gridCameraPosition() { return grid.cameraPositionAndRadius.xyz; }
+// The sphere the grid lies on: the planet radius for the terrain, the sea's for the ocean.
+double gridSphereRadius() { return grid.cameraPositionAndRadius.w; }
 
 double powInt(double x, int n) {
     double result = 1.0;
@@ -20,9 +32,9 @@ double powInt(double x, int n) {
 // Unit direction from the planet centre for grid coordinate g.
 dvec3 gridDirection(vec2 g) {
     double gx = double(g.x), gy = double(g.y);
-    double hemisphere = (1.0 - powInt(abs(gx), uGridExponent)) * (1.0 - powInt(abs(gy), uGridExponent));  // Eq. 2
-    return normalize(uWorldFromGrid * dvec3(gx, gy, hemisphere + uZShift));                                 // Eq. 4, 1
+    double hemisphere = (1.0 - powInt(abs(gx), grid.exponent)) * (1.0 - powInt(abs(gy), grid.exponent));  // Eq. 2
+    return normalize(worldFromGrid() * dvec3(gx, gy, hemisphere + grid.zShift));                                 // Eq. 4, 1
 }
 
 // Camera-relative position (m, world axes) of the point at `radius` along a direction.
-vec3 cameraRelative(dvec3 direction, double radius) { return vec3(direction * radius - uCameraPosition); }
+vec3 cameraRelative(dvec3 direction, double radius) { return vec3(direction * radius - gridCameraPosition()); }

@@ -13,13 +13,7 @@ layout(vertices = 4) out;
 in vec2 vGrid[];
 out vec2 tcGrid[];
 
-uniform float uMaxTerrainHeight;    // m above sea level
-uniform float uMinTerrainHeight;    // m, the deepest sea floor (<= 0)
-uniform float uTargetEdgePixels;    // wanted triangle edge length on screen
-layout(std140, binding = 2) uniform TerrainBlock {
-    TerrainShape terrainShape;
-};
-layout(binding = 10) uniform samplerCube uContinents;
+#include "terrain/terrain_block.glsl"
 
 void main() {
     tcGrid[gl_InvocationID] = vGrid[gl_InvocationID];
@@ -29,13 +23,13 @@ void main() {
     vec3 corners[8];
     for (int i = 0; i < 4; ++i) {
         dvec3 d = gridDirection(vGrid[i]);
-        ground[i] = cameraRelative(d, uPlanetRadius + double(terrainHeight(vec3(d), terrainShape, uContinents)));
-        corners[i] = cameraRelative(d, uPlanetRadius + double(uMinTerrainHeight));
-        corners[i + 4] = cameraRelative(d, uPlanetRadius + double(uMaxTerrainHeight));
+        ground[i] = cameraRelative(d, gridSphereRadius() + double(terrainHeight(vec3(d), terrainShape, uContinents)));
+        corners[i] = cameraRelative(d, gridSphereRadius() - double(terrainShape.oceanDepth));
+        corners[i + 4] = cameraRelative(d, gridSphereRadius() + double(terrainShape.maxHeight));
     }
     if (outsideFrustum(corners)) {
         cullPatch();
         return;
     }
-    setQuadLevels(ground, uTargetEdgePixels);
+    setQuadLevels(ground, terrainTargetEdgePixels);
 }

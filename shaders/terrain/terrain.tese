@@ -13,17 +13,14 @@ in vec2 tcGrid[];
 out vec3 teDirection;   // unit direction from the planet centre
 out float teHeight;     // m above sea level (negative: under water)
 
-layout(std140, binding = 2) uniform TerrainBlock {
-    TerrainShape terrainShape;
-};
-layout(binding = 10) uniform samplerCube uContinents;  // noise/continents.h, RGBA32F
+#include "terrain/terrain_block.glsl"
 
 void main() {
     vec2 uv = gl_TessCoord.xy;
     vec2 g = mix(mix(tcGrid[0], tcGrid[1], uv.x), mix(tcGrid[3], tcGrid[2], uv.x), uv.y);
     dvec3 direction = gridDirection(g);
     float height = terrainHeight(vec3(direction), terrainShape, uContinents);
-    vec3 position = cameraRelative(direction, uPlanetRadius + double(height));
+    vec3 position = cameraRelative(direction, gridSphereRadius() + double(height));
     teDirection = vec3(direction);
     teHeight = height;
     gl_Position = frame.clipFromView * (frame.viewFromWorld * vec4(position, 1.0));

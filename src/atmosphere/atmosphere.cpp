@@ -5,6 +5,7 @@
 
 #include "atmosphere/parameters.h"
 #include "atmosphere/table_cache.h"
+#include "render/bindings.h"
 #include "util/log.h"
 
 namespace planet::atmosphere {
@@ -15,7 +16,7 @@ bool Atmosphere::Target::operator==(const Target& o) const {
 
 Atmosphere::Target Atmosphere::targetFor(const Scene& scene) {
     Target t{makeAtmosphereUniforms(makeAtmosphereParameters(scene)), scene.atmosphere.scattering_orders};
-    t.uniforms.rayleighScattering.w = 0.0f;  // Elek's Rayleigh phase is applied at render time, not in the tables
+    t.uniforms.elekRayleighPhase = 0.0f;  // Elek's Rayleigh phase is applied at render time, not in the tables
     return t;
 }
 
@@ -84,18 +85,21 @@ void Atmosphere::finishJob() {
 
 void Atmosphere::writeUniforms() {
     AtmosphereUniforms u = current_.uniforms;
-    u.mieScattering.w = flags_.elek3dTable ? 1.0f : 0.0f;
-    u.rayleighScattering.w = flags_.elekRayleighPhase ? 1.0f : 0.0f;
+    u.elekRayleighPhase = flags_.elekRayleighPhase ? 1.0f : 0.0f;
     glNamedBufferSubData(uniforms_.id(), 0, sizeof u, &u);
 }
 
 void Atmosphere::bind() const {
     const GLuint textures[] = {tables_->transmittance.id(), tables_->scattering.id(), tables_->singleMie.id(),
                                tables_->irradiance.id()};
-    glBindTextures(kFirstTableUnit, 4, textures);
+    static_assert(binding::UNIT_SCATTERING == binding::UNIT_TRANSMITTANCE + 1 &&
+                  binding::UNIT_SINGLE_MIE == binding::UNIT_TRANSMITTANCE + 2 &&
+                  binding::UNIT_IRRADIANCE == binding::UNIT_TRANSMITTANCE + 3 &&
+                  binding::UNIT_ELEK_SINGLE_MIE == binding::UNIT_ELEK_SCATTERING + 1);
+    glBindTextures(binding::UNIT_TRANSMITTANCE, 4, textures);
     const GLuint elekTextures[] = {tables_->elekScattering.id(), tables_->elekSingleMie.id()};
-    glBindTextures(kFirstElekTableUnit, 2, elekTextures);
-    glBindBufferBase(GL_UNIFORM_BUFFER, kAtmosphereUniformBinding, uniforms_.id());
+    glBindTextures(binding::UNIT_ELEK_SCATTERING, 2, elekTextures);
+    glBindBufferBase(GL_UNIFORM_BUFFER, binding::BLOCK_ATMOSPHERE, uniforms_.id());
 }
 
 }  // namespace planet::atmosphere

@@ -11,8 +11,8 @@
 //
 // The tables include Elek's 3D table (elek_table.glsl), built as the last step
 // of every precomputation. Which parametrization the frame uses is the preset's
-// atmosphere.elek_3d_table, a render-time choice: it only sets the w of the
-// uniform block's mieScattering, never rebuilds.
+// atmosphere.elek_3d_table, a render-time choice of program variant
+// (render/atmosphere_program.h); it never rebuilds.
 #pragma once
 
 #include <filesystem>
@@ -25,18 +25,17 @@
 
 namespace planet::atmosphere {
 
-// Texture units the atmosphere's tables are bound to for rendering.
-constexpr unsigned kFirstTableUnit = 4;  // transmittance 4, scattering 5, single Mie 6, irradiance 7
-constexpr unsigned kFirstElekTableUnit = 8;  // Elek scattering 8, Elek single Mie 9
-
 class Atmosphere {
 public:
     Atmosphere(const std::filesystem::path& shaderRoot, const TableSizes& sizes);
 
     // Brings the tables towards the scene's atmosphere (see above).
     void update(const Scene& scene);
-    // Binds the tables (units kFirstTableUnit..+3, kFirstElekTableUnit..+1) and the parameter block.
+    // Binds the tables at their units (UNIT_TRANSMITTANCE ... UNIT_ELEK_SINGLE_MIE in
+    // shaders/common/bindings.glsl) and the parameter block at BLOCK_ATMOSPHERE.
     void bind() const;
+    // Whether there are tables yet (the first update() makes them).
+    bool ready() const { return tables_.has_value(); }
 
     bool rebuilding() const { return job_.has_value(); }
     double rebuildProgress() const { return job_ ? job_->progress() : 1.0; }
@@ -54,7 +53,7 @@ private:
     static Target targetFor(const Scene& scene);
     GpuTables loadOrCompute(const AtmosphereParameters& parameters, int orders);
     void finishJob();
-    void writeUniforms();  // current_.uniforms with the Elek flag
+    void writeUniforms();  // current_.uniforms with the render-time flags
 
     std::filesystem::path shaderRoot_;  // the model's sources are part of the cache key
     GpuPrecompute precompute_;

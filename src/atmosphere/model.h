@@ -79,8 +79,8 @@ public:
 
     // The shared functions, as members (`const Number PI` becomes a constant member).
 #include "shaders/atmosphere/functions.glsl"
-#include "shaders/atmosphere/rendering.glsl"
 #include "shaders/atmosphere/elek_table.glsl"
+#include "shaders/atmosphere/rendering.glsl"
 };
 
 #undef IN

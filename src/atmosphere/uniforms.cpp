@@ -1,6 +1,10 @@
 #include "atmosphere/uniforms.h"
 
+#include "render/bindings.h"
+
 namespace planet::atmosphere {
+
+static_assert(kAtmosphereUniformBinding == binding::BLOCK_ATMOSPHERE);
 
 namespace {
 
@@ -16,13 +20,18 @@ void packProfile(const DensityProfile& profile, glm::vec4 (&out)[2][2]) {
 
 AtmosphereUniforms makeAtmosphereUniforms(const AtmosphereParameters& p) {
     AtmosphereUniforms u{};
-    u.solarIrradiance = glm::vec4(glm::vec3(p.solar_irradiance), p.sun_angular_radius);
-    u.radii = glm::vec4(p.bottom_radius, p.top_radius, p.mie_phase_function_g, p.mu_s_min);
-    u.rayleighScattering = glm::vec4(glm::vec3(p.rayleigh_scattering), p.elek_rayleigh_phase);
-    u.mieScattering = glm::vec4(glm::vec3(p.mie_scattering), 0.0f);  // w: Elek 3D table flag, set by Atmosphere
-    u.mieExtinction = glm::vec4(glm::vec3(p.mie_extinction), 0.0f);
-    u.absorptionExtinction = glm::vec4(glm::vec3(p.absorption_extinction), 0.0f);
-    u.groundAlbedo = glm::vec4(glm::vec3(p.ground_albedo), 0.0f);
+    u.solarIrradiance = glm::vec3(p.solar_irradiance);
+    u.sunAngularRadius = static_cast<float>(p.sun_angular_radius);
+    u.bottomRadius = static_cast<float>(p.bottom_radius);
+    u.topRadius = static_cast<float>(p.top_radius);
+    u.miePhaseG = static_cast<float>(p.mie_phase_function_g);
+    u.muSMin = static_cast<float>(p.mu_s_min);
+    u.rayleighScattering = glm::vec3(p.rayleigh_scattering);
+    u.elekRayleighPhase = static_cast<float>(p.elek_rayleigh_phase);
+    u.mieScattering = glm::vec3(p.mie_scattering);
+    u.mieExtinction = glm::vec3(p.mie_extinction);
+    u.absorptionExtinction = glm::vec3(p.absorption_extinction);
+    u.groundAlbedo = glm::vec3(p.ground_albedo);
     packProfile(p.rayleigh_density, u.profiles[0]);
     packProfile(p.mie_density, u.profiles[1]);
     packProfile(p.absorption_density, u.profiles[2]);

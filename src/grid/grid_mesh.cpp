@@ -1,5 +1,7 @@
 #include "grid/grid_mesh.h"
 
+#include "render/bindings.h"
+
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -37,21 +39,27 @@ void GridMesh::resize(int size) {
     indexCount_ = static_cast<GLsizei>(patches.size());
 }
 
-GridUniforms GridUniforms::lookUp(GLuint program) {
-    auto at = [program](const char* name) { return glGetUniformLocation(program, name); };
-    return {at("uWorldFromGrid"), at("uZShift"), at("uGridExponent"), at("uCameraPosition"), at("uPlanetRadius")};
+GridBlock makeGridBlock(const GridProjection& projection, int exponent, const glm::dvec3& cameraPosition,
+                        double radius) {
+    GridBlock b{};
+    for (int i = 0; i < 3; ++i) b.worldFromGridColumns[i] = glm::dvec4(projection.worldFromGrid[i], 0.0);
+    b.cameraPositionAndRadius = glm::dvec4(cameraPosition, radius);
+    b.zShift = projection.zShift;
+    b.exponent = exponent;
+    return b;
 }
 
-void GridUniforms::set(GLuint program, const GridProjection& projection, int exponent,
-                       const glm::dvec3& cameraPosition, double radius) const {
-    glProgramUniformMatrix3dv(program, worldFromGrid, 1, GL_FALSE, &projection.worldFromGrid[0][0]);
-    glProgramUniform1d(program, zShift, projection.zShift);
-    glProgramUniform1i(program, gridExponent, exponent);
-    glProgramUniform3dv(program, this->cameraPosition, 1, &cameraPosition.x);
-    glProgramUniform1d(program, planetRadius, radius);
+GridMesh::GridMesh(std::string label) : label_(std::move(label)) {
+    glNamedBufferStorage(block_.id(), sizeof(GridBlock), nullptr, GL_DYNAMIC_STORAGE_BIT);
+    block_.label((label_ + " GridBlock").c_str());
+}
+
+void GridMesh::setProjection(const GridBlock& block) {
+    glNamedBufferSubData(block_.id(), 0, sizeof block, &block);
 }
 
 void GridMesh::draw() const {
+    glBindBufferBase(GL_UNIFORM_BUFFER, binding::BLOCK_GRID, block_.id());
     glBindVertexArray(vertexArray_.id());
     glPatchParameteri(GL_PATCH_VERTICES, 4);
     glDrawElements(GL_PATCHES, indexCount_, GL_UNSIGNED_INT, nullptr);

@@ -3,6 +3,7 @@
 // draw one (Michelic §6: 100 x 100 and 80 x 80).
 #pragma once
 
+#include <cstddef>
 #include <string>
 #include <utility>
 
@@ -13,24 +14,33 @@
 
 namespace planet {
 
-// The uniforms of shaders/terrain/grid.glsl (the grid's projection on the GPU) in one
-// program: looked up once per program, set once per frame by every pass that draws a grid.
-struct GridUniforms {
-    GLint worldFromGrid = -1, zShift = -1, gridExponent = -1, cameraPosition = -1, planetRadius = -1;
-
-    static GridUniforms lookUp(GLuint program);
-    // Eq. 1-4's frame and shift, Eq. 2's n, the camera (world, m) and the sphere's radius (m).
-    void set(GLuint program, const GridProjection& projection, int exponent, const glm::dvec3& cameraPosition,
-             double radius) const;
+// GridBlock: the grid's projection as shaders/terrain/grid.glsl reads it (BLOCK_GRID,
+// std140: a dvec4 takes 32 bytes). Each pass that draws a grid owns one (GridMesh).
+struct GridBlock {
+    glm::dvec4 worldFromGridColumns[3];  // Eq. 4's rotation by column, w 0
+    glm::dvec4 cameraPositionAndRadius;  // camera (world, m); w: the grid sphere's radius, m
+    double zShift;                       // z_s of Eq. 3
+    int exponent;                        // n of Eq. 2
+    int padding[5] = {0, 0, 0, 0, 0};
 };
+static_assert(offsetof(GridBlock, cameraPositionAndRadius) == 96 && offsetof(GridBlock, zShift) == 128 &&
+                  offsetof(GridBlock, exponent) == 136 && sizeof(GridBlock) == 160,
+              "GridBlock must match std140 (shaders/terrain/grid.glsl)");
+
+// Eq. 1-4's frame and shift, Eq. 2's n, the camera (world, m) and the sphere's radius (m).
+GridBlock makeGridBlock(const GridProjection& projection, int exponent, const glm::dvec3& cameraPosition,
+                        double radius);
 
 class GridMesh {
 public:
-    explicit GridMesh(std::string label) : label_(std::move(label)) {}
+    explicit GridMesh(std::string label);
 
     // Rebuilds the buffers when the size changed; size in [2, 4096].
     void resize(int size);
-    // Draws the patches (GL_PATCHES, 4 vertices each) with the bound program.
+    // Uploads the grid's projection (the prepare step).
+    void setProjection(const GridBlock& block);
+    // Binds the grid's block at BLOCK_GRID and draws the patches (GL_PATCHES, 4 vertices
+    // each) with the bound program.
     void draw() const;
 
 private:
@@ -38,6 +48,7 @@ private:
     gl::VertexArray vertexArray_;
     gl::Buffer vertices_;
     gl::Buffer indices_;
+    gl::Buffer block_;  // GridBlock
     int size_ = 0;
     GLsizei indexCount_ = 0;
 };

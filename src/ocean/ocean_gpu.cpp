@@ -1,5 +1,6 @@
 // Packing the waves for the GPU, and gerstner.glsl compiled as C++ (ocean_gpu.h).
 #include "ocean/ocean_gpu.h"
+#include "ocean/ocean_block.h"
 
 #include <algorithm>
 #include <cmath>
@@ -116,6 +117,23 @@ double maxWaveHeight(const std::vector<GerstnerWave>& waves) {
     double sum = 0.0;
     for (const GerstnerWave& w : waves) sum += w.amplitude_m;
     return sum;
+}
+
+}  // namespace planet::ocean
+
+namespace planet::ocean {
+
+OceanBlock makeOceanBlock(const Scene& scene) {
+    OceanBlock b{};
+    b.seaLevel = static_cast<float>(scene.ocean.sea_level_m);
+    b.maxWaveHeight = static_cast<float>(maxWaveHeight(scene.waves));
+    b.targetEdgePixels = static_cast<float>(scene.ocean.target_edge_px);
+    b.coarsestEdgePixels = static_cast<float>(std::max(scene.terrain.target_edge_px, scene.ocean.target_edge_px));
+    b.fadeStart = static_cast<float>(scene.ocean.fade_start);
+    b.fadeEnd = static_cast<float>(scene.ocean.fade_end);
+    b.subgridSlopeVariance = static_cast<float>(subgridSlopeVariance(scene.waves, scene.ocean.wind_speed_mps));
+    b.waveCount = static_cast<int>(scene.waves.size());
+    return b;
 }
 
 }  // namespace planet::ocean

@@ -2,7 +2,28 @@
 
 namespace planet {
 
-FrameUniforms makeFrameUniforms(const Scene& scene, const Camera& camera, glm::ivec2 size) {
+double halton(int index, int base) {
+    double result = 0.0;
+    double fraction = 1.0;
+    for (int i = index; i > 0; i /= base) {
+        fraction /= base;
+        result += fraction * (i % base);
+    }
+    return result;
+}
+
+glm::vec2 subPixelJitter(int frameIndex) {
+    const int i = frameIndex % 16 + 1;  // from 1: element 0 of every Halton sequence is 0
+    return glm::vec2(static_cast<float>(halton(i, 2) - 0.5), static_cast<float>(halton(i, 3) - 0.5));
+}
+
+double cameraDepthBelowSeaM(const Scene& scene, const Camera& camera) {
+    if (!scene.terrain.ocean) return -1.0;
+    return scene.planetRadiusM() + scene.ocean.sea_level_m - glm::length(camera.position);
+}
+
+FrameUniforms makeFrameUniforms(const Scene& scene, const Camera& camera, glm::ivec2 size, int frameIndex,
+                                const std::optional<PreviousFrame>& previous) {
     const double aspect = static_cast<double>(size.x) / static_cast<double>(size.y);
     const glm::dmat4 clipFromView = camera.clipFromView(aspect);
     const double radius = scene.planetRadiusM();
@@ -19,11 +40,26 @@ FrameUniforms makeFrameUniforms(const Scene& scene, const Camera& camera, glm::i
     u.viewFromClip = glm::mat4(glm::inverse(clipFromView));
     u.viewFromWorld = camera.viewFromWorldRotation();
     u.worldFromView = glm::mat4(glm::dmat4(camera.worldFromView()));
-    u.planetCenterFromCamera = glm::vec4(glm::vec3(centreFromCamera), static_cast<float>(radius));
-    u.cameraUp = glm::vec4(glm::vec3(up), static_cast<float>(distance - radius));
-    u.sunDirection = glm::vec4(glm::vec3(scene.sunDirection()), static_cast<float>(scene.sun.angular_radius_rad));
-    u.viewport = glm::vec4(size.x, size.y, 1.0f / static_cast<float>(size.x), 1.0f / static_cast<float>(size.y));
-    u.camera = glm::vec4(static_cast<float>(camera.near_m), static_cast<float>(scene.render.exposure), 0.0f, 0.0f);
+    const Camera& before = previous ? previous->camera : camera;
+    const glm::ivec2 beforeSize = previous ? previous->size : size;
+    const double beforeAspect = static_cast<double>(beforeSize.x) / static_cast<double>(beforeSize.y);
+    u.previousClipFromWorld =
+        glm::mat4(before.clipFromView(beforeAspect) * glm::dmat4(glm::transpose(before.worldFromView())));
+    u.planetCenterFromCamera = glm::vec3(centreFromCamera);
+    u.planetRadius = static_cast<float>(radius);
+    u.cameraUp = glm::vec3(up);
+    u.cameraAltitude = static_cast<float>(distance - radius);
+    u.sunDirection = glm::vec3(scene.sunDirection());
+    u.time = static_cast<float>(scene.time_s);
+    u.cameraFromPrevious = glm::vec3(camera.position - before.position);
+    u.historyValid = previous ? 1.0f : 0.0f;
+    u.viewportSize = glm::vec2(size);
+    u.inverseViewportSize = 1.0f / glm::vec2(size);
+    u.jitter = subPixelJitter(frameIndex);
+    u.nearPlane = static_cast<float>(camera.near_m);
+    u.exposure = static_cast<float>(scene.render.exposure);
+    u.frameIndex = frameIndex;
+    u.cameraDepthBelowSea = static_cast<float>(cameraDepthBelowSeaM(scene, camera));
     return u;
 }
 

@@ -1,6 +1,7 @@
 #include "render/render_targets.h"
 
 #include <algorithm>
+#include <initializer_list>
 #include <stdexcept>
 #include <string>
 
@@ -26,10 +27,31 @@ void checkComplete(const gl::Framebuffer& fb, const char* name) {
                                  std::to_string(status) + ")");
 }
 
+void copyImage(const gl::Texture& from, const gl::Texture& to, glm::ivec2 size) {
+    glCopyImageSubData(from.id(), GL_TEXTURE_2D, 0, 0, 0, 0, to.id(), GL_TEXTURE_2D, 0, 0, 0, 0, size.x, size.y, 1);
+}
+
+gl::Framebuffer makeFramebuffer(std::initializer_list<const gl::Texture*> colours, const gl::Texture* depth,
+                                const char* name) {
+    gl::Framebuffer fb;
+    GLenum buffers[8];
+    GLsizei count = 0;
+    for (const gl::Texture* c : colours) {
+        glNamedFramebufferTexture(fb.id(), GL_COLOR_ATTACHMENT0 + count, c->id(), 0);
+        buffers[count] = GL_COLOR_ATTACHMENT0 + count;
+        ++count;
+    }
+    if (depth) glNamedFramebufferTexture(fb.id(), GL_DEPTH_ATTACHMENT, depth->id(), 0);
+    glNamedFramebufferDrawBuffers(fb.id(), count, buffers);
+    fb.label(name);
+    checkComplete(fb, name);
+    return fb;
+}
+
 }  // namespace
 
-void RenderTargets::resize(glm::ivec2 size) {
-    if (size == size_) return;
+bool RenderTargets::resize(glm::ivec2 size) {
+    if (size == size_) return false;
     if (size.x <= 0 || size.y <= 0) throw std::invalid_argument("render target size must be positive");
     GLint maxSize = 0, maxViewport[2] = {0, 0};
     glGetIntegerv(GL_MAX_TEXTURE_SIZE, &maxSize);
@@ -44,43 +66,37 @@ void RenderTargets::resize(glm::ivec2 size) {
     gbuffer_.albedo = makeTexture(GL_RGBA8, size, "gbuffer.albedo");
     gbuffer_.material = makeTexture(GL_RGBA8, size, "gbuffer.material");
     gbuffer_.depth = makeTexture(GL_DEPTH_COMPONENT32F, size, "gbuffer.depth");
-    gbuffer_.framebuffer = gl::Framebuffer();
-    const GLuint fb = gbuffer_.framebuffer.id();
-    glNamedFramebufferTexture(fb, GL_COLOR_ATTACHMENT0, gbuffer_.normal.id(), 0);
-    glNamedFramebufferTexture(fb, GL_COLOR_ATTACHMENT1, gbuffer_.albedo.id(), 0);
-    glNamedFramebufferTexture(fb, GL_COLOR_ATTACHMENT2, gbuffer_.material.id(), 0);
-    glNamedFramebufferTexture(fb, GL_DEPTH_ATTACHMENT, gbuffer_.depth.id(), 0);
-    const GLenum buffers[] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1, GL_COLOR_ATTACHMENT2};
-    glNamedFramebufferDrawBuffers(fb, 3, buffers);
-    gbuffer_.framebuffer.label("gbuffer");
-    checkComplete(gbuffer_.framebuffer, "gbuffer");
-
+    gbuffer_.framebuffer = makeFramebuffer({&gbuffer_.normal, &gbuffer_.albedo, &gbuffer_.material},
+                                           &gbuffer_.depth, "gbuffer");
+    surfaceRadiance_ = makeTexture(GL_RGBA16F, size, "surface radiance");
+    surfaceDistance_ = makeTexture(GL_R32F, size, "surface distance");
+    surfaceFramebuffer_ =
+        makeFramebuffer({&surfaceRadiance_, &surfaceDistance_}, &gbuffer_.depth, "surface radiance + depth");
     hdr_ = makeTexture(GL_RGBA16F, size, "hdr");
-    hdrFramebuffer_ = gl::Framebuffer();
-    glNamedFramebufferTexture(hdrFramebuffer_.id(), GL_COLOR_ATTACHMENT0, hdr_.id(), 0);
-    hdrFramebuffer_.label("hdr");
-    checkComplete(hdrFramebuffer_, "hdr");
-
+    hdrFramebuffer_ = makeFramebuffer({&hdr_}, nullptr, "hdr");
     ldr_ = makeTexture(GL_RGBA8, size, "ldr");
-    ldrFramebuffer_ = gl::Framebuffer();
-    glNamedFramebufferTexture(ldrFramebuffer_.id(), GL_COLOR_ATTACHMENT0, ldr_.id(), 0);
-    ldrFramebuffer_.label("ldr");
-    checkComplete(ldrFramebuffer_, "ldr");
-
-    surfaceFramebuffer_ = gl::Framebuffer();
-    glNamedFramebufferTexture(surfaceFramebuffer_.id(), GL_COLOR_ATTACHMENT0, hdr_.id(), 0);
-    glNamedFramebufferTexture(surfaceFramebuffer_.id(), GL_DEPTH_ATTACHMENT, gbuffer_.depth.id(), 0);
-    surfaceFramebuffer_.label("hdr + depth");
-    checkComplete(surfaceFramebuffer_, "hdr + depth");
+    ldrFramebuffer_ = makeFramebuffer({&ldr_}, nullptr, "ldr");
     seabedDepth_ = makeTexture(GL_DEPTH_COMPONENT32F, size, "seabed depth");
     seabedRadiance_ = makeTexture(GL_RGBA16F, size, "seabed radiance");
+    history_.radiance = makeTexture(GL_RGBA16F, size, "history.radiance");
+    history_.surfaceDistance = makeTexture(GL_R32F, size, "history.surface distance");
+    return true;
+}
+
+void RenderTargets::clearSurface() const {
+    const float zero[4] = {0, 0, 0, 0};
+    glClearNamedFramebufferfv(surfaceFramebuffer_.id(), GL_COLOR, 0, zero);
+    glClearNamedFramebufferfv(surfaceFramebuffer_.id(), GL_COLOR, 1, zero);
 }
 
 void RenderTargets::copySeabed() const {
-    glCopyImageSubData(gbuffer_.depth.id(), GL_TEXTURE_2D, 0, 0, 0, 0, seabedDepth_.id(), GL_TEXTURE_2D, 0, 0, 0, 0,
-                       size_.x, size_.y, 1);
-    glCopyImageSubData(hdr_.id(), GL_TEXTURE_2D, 0, 0, 0, 0, seabedRadiance_.id(), GL_TEXTURE_2D, 0, 0, 0, 0, size_.x,
-                       size_.y, 1);
+    copyImage(gbuffer_.depth, seabedDepth_, size_);
+    copyImage(surfaceRadiance_, seabedRadiance_, size_);
+}
+
+void RenderTargets::keepHistory() const {
+    copyImage(hdr_, history_.radiance, size_);
+    copyImage(surfaceDistance_, history_.surfaceDistance, size_);
 }
 
 }  // namespace planet

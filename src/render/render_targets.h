@@ -1,14 +1,20 @@
-// The frame's render targets: G-buffer, HDR radiance and the display image.
+// The frame's render targets.
 //
-//   gbuffer  normal (RGBA16F, world axes), albedo (RGBA8, linear), material
-//            (RGBA8: id/255, roughness), depth (DEPTH32F, reversed-Z)
-//   hdr      RGBA16F linear radiance (what `render --out x.exr` writes)
-//   ldr      RGBA8 tone-mapped sRGB bytes (what the window shows and PNGs hold)
-//   seabed   copies of the G-buffer depth and of hdr taken before the ocean pass, which
-//            reads them while drawing into hdr + the G-buffer depth (surfaceFramebuffer)
+//   gbuffer   normal (RGBA16F, world axes), albedo (RGBA8, linear), material
+//             (RGBA8: id/255, roughness), depth (DEPTH32F, reversed-Z)
+//   surface   surfaceRadiance (RGBA16F): the radiance leaving the surface point towards the
+//             camera, no air in it; surfaceDistance (R32F): metres along the view ray to that
+//             point, 0 where there is none. Written by the surface light and the ocean
+//             (surfaceFramebuffer, with the G-buffer's depth for the sea).
+//   seabed    copies of the G-buffer depth and of the surface radiance taken before the
+//             ocean, which reads them while drawing over them
+//   hdr       RGBA16F linear radiance arriving at the camera (what `render --out x.exr` writes)
+//   ldr       RGBA8 tone-mapped sRGB bytes (what the window shows and PNGs hold)
+//   history   the previous frame's hdr and surface distance, kept for temporal work
+//             (FrameUniforms: previousClipFromWorld, cameraFromPrevious, historyValid)
 //
-// Layout must match shaders/common/gbuffer.glsl. Resized only when the frame
-// size changes; a 0x0 size (minimised window) holds no textures.
+// Layout must match shaders/common/gbuffer.glsl. Resized only when the frame size
+// changes (which drops the history); a 0x0 size (minimised window) holds no textures.
 #pragma once
 
 #include <glm/glm.hpp>
@@ -25,35 +31,51 @@ struct GBuffer {
     gl::Framebuffer framebuffer;
 };
 
+struct FrameHistory {
+    gl::Texture radiance{GL_TEXTURE_2D};         // RGBA16F, the previous frame's hdr
+    gl::Texture surfaceDistance{GL_TEXTURE_2D};  // R32F, the previous frame's surface distance
+};
+
 class RenderTargets {
 public:
-    // (Re)allocates for a size; no-op when unchanged. Size must be positive.
-    void resize(glm::ivec2 size);
+    // (Re)allocates for a size; returns true when it did (the history is then empty).
+    // Size must be positive.
+    bool resize(glm::ivec2 size);
     glm::ivec2 size() const { return size_; }
 
     const GBuffer& gbuffer() const { return gbuffer_; }
+    const gl::Texture& surfaceRadiance() const { return surfaceRadiance_; }
+    const gl::Texture& surfaceDistance() const { return surfaceDistance_; }
     const gl::Texture& hdr() const { return hdr_; }
     const gl::Texture& ldr() const { return ldr_; }
+    const FrameHistory& history() const { return history_; }
     GLuint hdrFramebuffer() const { return hdrFramebuffer_.id(); }
     GLuint ldrFramebuffer() const { return ldrFramebuffer_.id(); }
-    // hdr with the G-buffer's depth attached: for surfaces drawn forward after lighting.
+    // surface radiance + distance with the G-buffer's depth attached.
     GLuint surfaceFramebuffer() const { return surfaceFramebuffer_.id(); }
 
-    // Copies the G-buffer depth and hdr into seabedDepth() and seabedRadiance().
+    // Clears the surface targets to "no surface" (radiance 0, distance 0).
+    void clearSurface() const;
+    // Copies the G-buffer depth and the surface radiance into seabedDepth() and seabedRadiance().
     void copySeabed() const;
     const gl::Texture& seabedDepth() const { return seabedDepth_; }
     const gl::Texture& seabedRadiance() const { return seabedRadiance_; }
+    // Copies this frame's hdr and surface distance into history().
+    void keepHistory() const;
 
 private:
     glm::ivec2 size_{0, 0};
     GBuffer gbuffer_;
+    gl::Texture surfaceRadiance_{GL_TEXTURE_2D};
+    gl::Texture surfaceDistance_{GL_TEXTURE_2D};
     gl::Texture hdr_{GL_TEXTURE_2D};
     gl::Texture ldr_{GL_TEXTURE_2D};
+    gl::Framebuffer surfaceFramebuffer_;
     gl::Framebuffer hdrFramebuffer_;
     gl::Framebuffer ldrFramebuffer_;
-    gl::Framebuffer surfaceFramebuffer_;
     gl::Texture seabedDepth_{GL_TEXTURE_2D};
     gl::Texture seabedRadiance_{GL_TEXTURE_2D};
+    FrameHistory history_;
 };
 
 }  // namespace planet

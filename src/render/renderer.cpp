@@ -1,108 +1,228 @@
 #include "render/renderer.h"
 
+#include <algorithm>
+#include <cmath>
+#include <set>
+#include <stdexcept>
+
 #include "gl/debug.h"
-#include "render/frame_uniforms.h"
+#include "render/bindings.h"
+#include "scene/preset.h"
 
 namespace planet {
 
 namespace {
-gl::ShaderSources lightingSources(const std::filesystem::path& root, const atmosphere::TableSizes& sizes, bool elek) {
-    return {root, gl::shaderPreamble() + atmosphere::atmosphereShaderDefines(sizes) +
-                      "#define ELEK_TABLE " + (elek ? "1" : "0") + "\n"};
+
+using R = FrameResource;
+
+gl::ShaderSources withAtmosphere(const gl::ShaderSources& s, const atmosphere::TableSizes& sizes) {
+    return {s.root, s.preamble + atmosphere::atmosphereShaderDefines(sizes)};
 }
+
+// A camera that moved farther than this in one frame (or turned further) has jumped: what
+// the history shows is somewhere else (a view bookmark, a teleport), not the last frame.
+constexpr double kJumpFractionOfAltitude = 0.25;
+constexpr double kJumpMinimumM = 10.0;
+constexpr double kJumpTurnCos = 0.866;  // 30 degrees
+
 }  // namespace
 
-Renderer::Renderer(const std::filesystem::path& shaderRoot, const atmosphere::TableSizes& atmosphereTables)
+const char* frameResourceName(FrameResource r) {
+    switch (r) {
+        case R::GBuffer: return "G-buffer";
+        case R::SurfaceRadiance: return "surface radiance";
+        case R::HdrRadiance: return "HDR radiance";
+        case R::LdrImage: return "LDR image";
+        case R::Window: return "window";
+    }
+    return "?";
+}
+
+std::vector<std::string> checkPassOrder(const std::vector<PassDeclaration>& passes) {
+    std::vector<std::string> problems;
+    std::set<FrameResource> written;
+    for (const PassDeclaration& p : passes) {
+        for (FrameResource r : p.reads)
+            if (!written.count(r))
+                problems.push_back("pass '" + p.name + "' reads " + frameResourceName(r) + " before any pass writes it");
+        written.insert(p.writes.begin(), p.writes.end());
+    }
+    return problems;
+}
+
+Renderer::Renderer(const std::filesystem::path& shaderRoot, const atmosphere::TableSizes& atmosphereTables,
+                   std::filesystem::path continentsCache)
     : sources_{shaderRoot, gl::shaderPreamble()},
       atmosphere_(shaderRoot, atmosphereTables),
+      continents_(continentsCache.empty() ? noise::defaultContinentsCacheRoot() : std::move(continentsCache)),
       terrain_(sources_),
-      lighting4D_(lightingSources(shaderRoot, atmosphereTables, false), "atmosphere 4D", "render/lighting.frag"),
-      lightingElek_(lightingSources(shaderRoot, atmosphereTables, true), "atmosphere Elek 3D", "render/lighting.frag"),
-      ocean_(lightingSources(shaderRoot, atmosphereTables, false)),
-      tonemap_(sources_, "tonemap", "render/tonemap.frag") {
+      surfaceLight_(withAtmosphere(sources_, atmosphereTables), "surface light", "render/surface_light.frag"),
+      ocean_(sources_, atmosphereTables),
+      sky_(sources_, atmosphereTables, gl::ProgramDesc{"sky", {"common/fullscreen.vert", "render/sky.frag"}}),
+      tonemap_(sources_, "tonemap", "render/tonemap.frag"),
+      passes_(makePasses()) {
     glNamedBufferStorage(frameUniforms_.id(), sizeof(FrameUniforms), nullptr, GL_DYNAMIC_STORAGE_BIT);
-    frameUniforms_.label("FrameUniforms");
+    frameUniforms_.label("FrameBlock");
     emptyVertexArray_.label("fullscreen triangle");
+    const std::vector<std::string> problems = checkPassOrder(passDeclarations());
+    if (!problems.empty()) throw std::logic_error("frame pass order: " + problems.front());
+}
+
+std::vector<Renderer::Pass> Renderer::makePasses() {
+    auto always = [](const Scene&) { return true; };
+    std::vector<Pass> passes;
+    passes.push_back({{"terrain", {}, {R::GBuffer}}, always,
+                      [this](const Scene&) {
+                          const GLuint fb = targets_.gbuffer().framebuffer.id();
+                          const float zero[4] = {0, 0, 0, 0};
+                          for (GLint i = 0; i < 3; ++i) glClearNamedFramebufferfv(fb, GL_COLOR, i, zero);
+                          const float farDepth = 0.0f;  // reversed-Z: 0 is infinitely far
+                          glClearNamedFramebufferfv(fb, GL_DEPTH, 0, &farDepth);
+                          glBindFramebuffer(GL_FRAMEBUFFER, fb);
+                          terrain_.draw();
+                      },
+                      [this] { return std::vector<gl::HotProgram*>{&terrain_.program()}; }});
+    passes.push_back({{"surface light", {R::GBuffer}, {R::SurfaceRadiance}}, always,
+                      [this](const Scene&) {
+                          targets_.clearSurface();
+                          glBindFramebuffer(GL_FRAMEBUFFER, targets_.surfaceFramebuffer());
+                          const GBuffer& g = targets_.gbuffer();
+                          glBindTextureUnit(binding::UNIT_GBUFFER_NORMAL, g.normal.id());
+                          glBindTextureUnit(binding::UNIT_GBUFFER_ALBEDO, g.albedo.id());
+                          glBindTextureUnit(binding::UNIT_GBUFFER_MATERIAL, g.material.id());
+                          glBindTextureUnit(binding::UNIT_GBUFFER_DEPTH, g.depth.id());
+                          glBindVertexArray(emptyVertexArray_.id());
+                          surfaceLight_.draw();
+                      },
+                      [this] { return std::vector<gl::HotProgram*>{&surfaceLight_.program()}; }});
+    passes.push_back({{"ocean", {R::GBuffer, R::SurfaceRadiance}, {R::SurfaceRadiance, R::GBuffer}},
+                      [](const Scene& s) { return s.terrain.ocean; },
+                      [this](const Scene& s) {
+                          targets_.copySeabed();
+                          glBindFramebuffer(GL_FRAMEBUFFER, targets_.surfaceFramebuffer());
+                          glBindTextureUnit(binding::UNIT_SEABED_DEPTH, targets_.seabedDepth().id());
+                          glBindTextureUnit(binding::UNIT_SEABED_RADIANCE, targets_.seabedRadiance().id());
+                          ocean_.draw(s.atmosphere.elek_3d_table);
+                      },
+                      [this] { return ocean_.program().built(); }});
+    passes.push_back({{"sky", {R::SurfaceRadiance}, {R::HdrRadiance}}, always,
+                      [this](const Scene& s) {
+                          glBindFramebuffer(GL_FRAMEBUFFER, targets_.hdrFramebuffer());
+                          glBindTextureUnit(binding::UNIT_SURFACE_RADIANCE, targets_.surfaceRadiance().id());
+                          glBindTextureUnit(binding::UNIT_SURFACE_DISTANCE, targets_.surfaceDistance().id());
+                          glBindVertexArray(emptyVertexArray_.id());
+                          glUseProgram(sky_.get(s.atmosphere.elek_3d_table).id());
+                          glDrawArrays(GL_TRIANGLES, 0, 3);
+                      },
+                      [this] { return sky_.built(); }});
+    passes.push_back({{"tonemap", {R::HdrRadiance}, {R::LdrImage}}, always,
+                      [this](const Scene&) {
+                          glBindFramebuffer(GL_FRAMEBUFFER, targets_.ldrFramebuffer());
+                          glBindTextureUnit(binding::UNIT_HDR_RADIANCE, targets_.hdr().id());
+                          glBindVertexArray(emptyVertexArray_.id());
+                          tonemap_.draw();
+                      },
+                      [this] { return std::vector<gl::HotProgram*>{&tonemap_.program()}; }});
+    passes.push_back({{"ui", {R::LdrImage}, {R::Window}}, [this](const Scene&) { return bool(present_); },
+                      [this](const Scene&) {
+                          glBindFramebuffer(GL_FRAMEBUFFER, 0);
+                          present_();
+                      },
+                      [] { return std::vector<gl::HotProgram*>{}; }});
+    return passes;
+}
+
+std::vector<PassDeclaration> Renderer::passDeclarations() const {
+    std::vector<PassDeclaration> d;
+    for (const Pass& p : passes_) d.push_back(p.declaration);
+    return d;
+}
+
+bool Renderer::historyUsable(const Scene& scene, const Camera& camera, bool resized) const {
+    if (resized || !previous_) return false;
+    const Camera& before = previous_->camera;
+    const double altitude = std::max(camera.altitude(scene.planetRadiusM()), 0.0);
+    const double moved = glm::length(camera.position - before.position);
+    if (moved > std::max(kJumpMinimumM, kJumpFractionOfAltitude * altitude)) return false;
+    if (glm::dot(camera.forward(), before.forward()) < kJumpTurnCos) return false;
+    if (camera.fovY_rad != before.fovY_rad) return false;
+    return sceneKey_ == previousSceneKey_;
+}
+
+void Renderer::prepare(const Scene& scene, const Camera& camera, glm::ivec2 size) {
+    PrepareReport report;
+    const bool resized = targets_.resize(size);
+    if (atmosphere_.rebuilding()) {  // a chunk of a rebuild: its own profiler line
+        gl::DebugGroup group("atmosphere tables");
+        auto timing = profiler_.pass("atmosphere tables");
+        atmosphere_.update(scene);
+        report.atmosphereRebuildStep = true;
+    } else {
+        const bool first = !atmosphere_.ready();
+        atmosphere_.update(scene);  // usually nothing to do; starts a rebuild when the atmosphere changed
+        report.atmosphereTablesMade = first;
+    }
+    gl::DebugGroup group("prepare");
+    auto timing = profiler_.pass("prepare");
+    report.continentsUpdated = continents_.update(scene.terrain);
+    glBindTextureUnit(binding::UNIT_CONTINENTS, continents_.texture().id());
+    // Filter across cube faces as the CPU's sampleContinents does.
+    glEnable(GL_TEXTURE_CUBE_MAP_SEAMLESS);
+
+    sceneKey_ = presetToToml(scene, "", "");  // every parameter, as a preset would save it
+    report.historyValid = historyUsable(scene, camera, resized);
+    const FrameUniforms uniforms = makeFrameUniforms(scene, camera, size, frameIndex_,
+                                                     report.historyValid ? previous_ : std::nullopt);
+    glNamedBufferSubData(frameUniforms_.id(), 0, sizeof uniforms, &uniforms);
+    glBindBufferBase(GL_UNIFORM_BUFFER, binding::BLOCK_FRAME, frameUniforms_.id());
+    atmosphere_.bind();
+    terrain_.prepare(scene, camera);
+    if (scene.terrain.ocean) ocean_.prepare(scene, camera);
+    lastPrepare_ = report;
 }
 
 void Renderer::render(const Scene& scene, const Camera& camera, glm::ivec2 size,
                       const std::function<void()>& present) {
     if (size.x <= 0 || size.y <= 0) return;
-    targets_.resize(size);
+    present_ = present;
     profiler_.beginFrame();
-    if (atmosphere_.rebuilding()) {
-        gl::DebugGroup group("atmosphere tables");
-        auto timing = profiler_.pass("atmosphere tables");
-        atmosphere_.update(scene);
-    } else {
-        atmosphere_.update(scene);  // usually nothing to do; starts a rebuild when the atmosphere changed
-    }
+    prepare(scene, camera, size);
 
-    const FrameUniforms uniforms = makeFrameUniforms(scene, camera, size);
-    glNamedBufferSubData(frameUniforms_.id(), 0, sizeof uniforms, &uniforms);
-    glBindBufferBase(GL_UNIFORM_BUFFER, 0, frameUniforms_.id());
     glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE);  // reversed-Z needs [0, 1] clip depth
     glViewport(0, 0, size.x, size.y);
-    glBindVertexArray(emptyVertexArray_.id());
     glDisable(GL_BLEND);
-
-    {
-        gl::DebugGroup group("terrain");
-        auto timing = profiler_.pass("terrain");
-        const GLuint fb = targets_.gbuffer().framebuffer.id();
-        const float zero[4] = {0, 0, 0, 0};
-        for (GLint i = 0; i < 3; ++i) glClearNamedFramebufferfv(fb, GL_COLOR, i, zero);
-        const float farDepth = 0.0f;  // reversed-Z: 0 is infinitely far
-        glClearNamedFramebufferfv(fb, GL_DEPTH, 0, &farDepth);
-        glBindFramebuffer(GL_FRAMEBUFFER, fb);
-        terrain_.draw(scene, camera);
-    }
-    {
-        gl::DebugGroup group("atmosphere");  // lighting + aerial perspective + sky, over the G-buffer
-        auto timing = profiler_.pass("atmosphere");
-        glBindFramebuffer(GL_FRAMEBUFFER, targets_.hdrFramebuffer());
-        const GBuffer& g = targets_.gbuffer();
-        const GLuint inputs[] = {g.normal.id(), g.albedo.id(), g.material.id(), g.depth.id()};
-        glBindTextures(0, 4, inputs);
-        atmosphere_.bind();
-        (atmosphere_.usesElekTable() ? lightingElek_ : lighting4D_).draw();
-    }
-    if (scene.terrain.ocean) {
-        gl::DebugGroup group("ocean");
-        auto timing = profiler_.pass("ocean");
-        targets_.copySeabed();
-        glBindFramebuffer(GL_FRAMEBUFFER, targets_.surfaceFramebuffer());
-        const GLuint inputs[] = {targets_.seabedDepth().id(), targets_.seabedRadiance().id()};
-        glBindTextures(0, 2, inputs);
-        atmosphere_.bind();
-        terrain_.bindHeightField();  // the sea floor's height, for the far sea
-        if (OceanPass::cameraDepthM(scene, camera) > 0.0) {
-            glBindVertexArray(emptyVertexArray_.id());
-            ocean_.drawUnderwater(scene, camera);
-        }
-        ocean_.drawSurface(scene, camera);
-        glBindVertexArray(emptyVertexArray_.id());
-    }
-    {
-        gl::DebugGroup group("tonemap");
-        auto timing = profiler_.pass("tonemap");
-        glBindFramebuffer(GL_FRAMEBUFFER, targets_.ldrFramebuffer());
-        const GLuint input = targets_.hdr().id();
-        glBindTextures(0, 1, &input);
-        tonemap_.draw();
+#ifndef NDEBUG
+    std::set<FrameResource> written;
+#endif
+    for (const Pass& pass : passes_) {
+        if (!pass.enabled(scene)) continue;
+#ifndef NDEBUG  // the declared order, checked against what ran this frame
+        for (FrameResource r : pass.declaration.reads)
+            if (!written.count(r))
+                throw std::logic_error("pass '" + pass.declaration.name + "' reads " + frameResourceName(r) +
+                                       " that no pass wrote this frame");
+        written.insert(pass.declaration.writes.begin(), pass.declaration.writes.end());
+#endif
+        gl::DebugGroup group(pass.declaration.name);
+        auto timing = profiler_.pass(pass.declaration.name);
+        pass.draw(scene);
     }
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
-    if (present) {
-        gl::DebugGroup group("ui");
-        auto timing = profiler_.pass("ui");
-        present();
-    }
+    targets_.keepHistory();
+    previous_ = PreviousFrame{camera, size};
+    previousSceneKey_ = sceneKey_;
+    ++frameIndex_;
+    present_ = nullptr;
     profiler_.endFrame();
 }
 
 std::vector<gl::HotProgram*> Renderer::programs() {
-    return {&terrain_.program(),       &lighting4D_.program(),         &lightingElek_.program(),
-            &ocean_.surfaceProgram(), &ocean_.underwaterProgram(), &tonemap_.program()};
+    std::vector<gl::HotProgram*> all;
+    for (const Pass& p : passes_) {
+        const std::vector<gl::HotProgram*> mine = p.programs();
+        all.insert(all.end(), mine.begin(), mine.end());
+    }
+    return all;
 }
 
 bool Renderer::reloadShaders(bool force) {

@@ -1,43 +1,89 @@
-// The frame: a short list of named passes, each in its own debug group and
-// profiler scope, with data flowing one way (STYLE habit 6).
+// The frame: prepare, then a short list of declared passes (STYLE habits 6 and 15).
 //
-//   pass        reads                         writes
-//   atmosphere tables  scene.atmosphere       the tables, only while they are rebuilt (a chunk a frame)
-//   terrain     frame uniforms, terrain, grid G-buffer (normal, albedo, material, depth)
-//   atmosphere  G-buffer, atmosphere tables   HDR radiance: surface light, aerial perspective, sky, sun
-//                                             (render/lighting.frag, a post-process over the G-buffer)
-//   ocean       seabed copies, waves, tables  HDR radiance and depth where the sea is (src/ocean), when
-//                                             terrain.ocean is on; the water body first when the camera is under it
-//   tonemap     HDR radiance, exposure        LDR (display-ready sRGB)
+// prepare   brings every baked resource up to date before anything draws: the atmosphere
+//           tables (loaded or made on first use; while tuning, one chunk of a rebuild a
+//           frame, profiled as "atmosphere tables"), the continents map on the GPU and its
+//           CPU copy (terrain/continents.h, one owner); then uploads the frame's blocks
+//           (FrameBlock, TerrainBlock, GridBlocks, OceanBlock) and packs the waves, and binds
+//           what every pass reads at the units of shaders/common/bindings.glsl.
 //
-//   ui          LDR                           the window (explorer only: blit + panels)
+//   pass           reads                                writes
+//   terrain        blocks, continents                   G-buffer (normal, albedo, material, depth)
+//   surface light  G-buffer, atmosphere                 surface radiance R_G + distance: the light
+//                                                       leaving each surface point, no air in it
+//                                                       (render/surface_light.frag; Elek Eq. 17, 20)
+//   ocean          seabed copies, waves, atmosphere     the sea's R_G + distance, and depth, where
+//                                                       the sea is (when terrain.ocean is on)
+//   sky            surface radiance + distance,         HDR radiance: what lies between the camera
+//                  atmosphere                           and R_G or space -- transmittance and
+//                                                       in-scattering, the sky, the sun disc; the
+//                                                       water body under water (render/sky.frag).
+//                                                       The clouds' march goes here (Michelic Eq. 17-20).
+//   tonemap        HDR radiance, exposure               LDR (display-ready sRGB)
+//   ui             LDR                                  the window (explorer only: blit + panels)
 //
-// `planet render` reads HDR or LDR back instead of presenting. A later issue adds the
-// clouds between ocean and tonemap.
+// Each pass is a record {name, reads, writes, draw}: the debug group, the profiler scope and
+// the order check (every read written earlier in the frame; checked when the list is built,
+// and on every frame in debug builds) come from it, and so does the hot-reload list.
+// After the passes the HDR radiance and surface distance are kept as the frame history,
+// with the camera (double) they were rendered from; the history is dropped on a resize, a
+// jump of the camera, or a change of the scene's parameters.
+//
+// `planet render` reads HDR or LDR back instead of presenting.
 #pragma once
 
 #include <filesystem>
 #include <functional>
+#include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "atmosphere/atmosphere.h"
-#include "scene/camera.h"
 #include "gl/handle.h"
 #include "gl/program.h"
 #include "ocean/ocean_pass.h"
+#include "render/atmosphere_program.h"
 #include "render/fullscreen_pass.h"
+#include "render/frame_uniforms.h"
 #include "render/profiler.h"
 #include "render/render_targets.h"
+#include "scene/camera.h"
 #include "scene/scene.h"
+#include "terrain/continents.h"
 #include "terrain/terrain_pass.h"
 
 namespace planet {
 
+// What a pass reads and writes, for the order check. The baked resources, the blocks and
+// the atmosphere tables are made by prepare() and are not listed.
+enum class FrameResource { GBuffer, SurfaceRadiance, HdrRadiance, LdrImage, Window };
+const char* frameResourceName(FrameResource r);
+
+struct PassDeclaration {
+    std::string name;
+    std::vector<FrameResource> reads;
+    std::vector<FrameResource> writes;
+};
+// The problems of a pass order: each read that no earlier pass wrote, as
+// "pass 'sky' reads surface radiance before any pass writes it". Empty when the order holds.
+std::vector<std::string> checkPassOrder(const std::vector<PassDeclaration>& passes);
+
+// What prepare() did in the last frame (tests and the log read it).
+struct PrepareReport {
+    bool atmosphereTablesMade = false;   // loaded or computed at once (first use)
+    bool atmosphereRebuildStep = false;  // one chunk of a rebuild ran
+    bool continentsUpdated = false;      // the continents map was loaded or baked, and uploaded
+    bool historyValid = false;           // the previous frame may be reprojected
+};
+
 class Renderer {
 public:
-    // Throws gl::ShaderError. The first render() makes the atmosphere tables.
-    Renderer(const std::filesystem::path& shaderRoot, const atmosphere::TableSizes& atmosphereTables);
+    // Throws gl::ShaderError. The first render() makes the atmosphere tables and the
+    // continents (from the cache when they are there). The continents cache folder is
+    // noise::defaultContinentsCacheRoot() unless given.
+    Renderer(const std::filesystem::path& shaderRoot, const atmosphere::TableSizes& atmosphereTables,
+             std::filesystem::path continentsCache = {});
 
     // Renders one frame into targets(). `present`, when given, runs last as the
     // "ui" pass (the explorer blits LDR to its window and draws panels there),
@@ -48,7 +94,12 @@ public:
 
     const RenderTargets& targets() const { return targets_; }
     const atmosphere::Atmosphere& atmosphere() const { return atmosphere_; }
+    // The continents map the terrain draws, also on the CPU (share it with the camera's ground).
+    const terrain::Continents& continents() const { return continents_; }
     Profiler& profiler() { return profiler_; }
+    const PrepareReport& lastPrepare() const { return lastPrepare_; }
+    int frameIndex() const { return frameIndex_; }
+    std::vector<PassDeclaration> passDeclarations() const;
 
     // Hot reload: rebuilds programs whose files changed. Broken edits keep the
     // last good program; shaderErrors() then lists the messages (empty when all is well).
@@ -56,19 +107,37 @@ public:
     std::vector<std::string> shaderErrors();
 
 private:
+    struct Pass {
+        PassDeclaration declaration;
+        std::function<bool(const Scene&)> enabled;      // drawn this frame?
+        std::function<void(const Scene&)> draw;
+        std::function<std::vector<gl::HotProgram*>()> programs;  // for hot reload
+    };
+    std::vector<Pass> makePasses();
+    void prepare(const Scene& scene, const Camera& camera, glm::ivec2 size);
+    bool historyUsable(const Scene& scene, const Camera& camera, bool resized) const;
     std::vector<gl::HotProgram*> programs();
 
     gl::ShaderSources sources_;
     atmosphere::Atmosphere atmosphere_;
+    terrain::Continents continents_;
     TerrainPass terrain_;
-    FullscreenPass lighting4D_;    // the atmosphere pass with Bruneton's 4D table
-    FullscreenPass lightingElek_;  // ... with Elek's 3D table (ELEK_TABLE 1)
+    FullscreenPass surfaceLight_;
     OceanPass ocean_;
+    AtmosphereProgram sky_;
     FullscreenPass tonemap_;
     gl::Buffer frameUniforms_;
     gl::VertexArray emptyVertexArray_;
     RenderTargets targets_;
     Profiler profiler_;
+    std::vector<Pass> passes_;
+    std::function<void()> present_;  // this frame's ui, while render() runs
+
+    int frameIndex_ = 0;
+    std::optional<PreviousFrame> previous_;  // the frame the history holds
+    std::string previousSceneKey_;           // its parameters (presetToToml)
+    std::string sceneKey_;                   // this frame's
+    PrepareReport lastPrepare_;
 };
 
 }  // namespace planet

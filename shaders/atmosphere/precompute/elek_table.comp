@@ -5,8 +5,8 @@
 #include "atmosphere/definitions.glsl"
 #include "atmosphere/uniforms.glsl"
 #include "atmosphere/functions.glsl"
-#include "atmosphere/rendering.glsl"
 #include "atmosphere/elek_table.glsl"
+#include "atmosphere/rendering.glsl"
 
 layout(local_size_x = 8, local_size_y = 8, local_size_z = 1) in;
 

@@ -1,0 +1,103 @@
+// The atmosphere as every shader that draws sees it (after Bruneton's kAtmosphereShader):
+// the tables declared once at the units of common/bindings.glsl, the parameter block, and
+// a handful of functions that take positions (km, relative to the planet centre) and
+// directions only. Callers never name a texture, a unit or a table layout.
+//
+//   SkyRadiance                 light scattered towards the camera along a ray to space
+//                               or the ground, and the ray's transmittance
+//   SkyRadianceToPoint          the same up to a point at a given distance (aerial
+//                               perspective: Elek Eq. 19-20, Sperlhofer Eq. 4-18)
+//   TransmittanceToPoint        transmittance alone along the same segment
+//   SunIrradianceAtPoint        the solar irradiance arriving at a point, through the air and
+//                               times the sun's visibility there (Elek Eq. 17)
+//   SunAndSkyIrradiance         what lights a surface with a normal: the direct sun
+//                               (visibility included) and the sky (Elek Eq. 17, 20)
+//   SunDiscRadiance             the limb-darkened disc, before the atmosphere
+//   SunVisibility               the hook through which shadows enter: the fraction of the
+//                               sun seen from a point; 1 today, the clouds' and the
+//                               terrain's shadows go here, and every caller above uses it.
+//
+// Bruneton's 4D table or Elek's 3D table (preset atmosphere.elek_3d_table) is chosen here,
+// at compile time: a program including this file is built once with ELEK_TABLE 0 and once
+// with ELEK_TABLE 1 (src/render/atmosphere_programs.h), because software renderers run
+// both sides of even a uniform branch. Transmittance and irradiance are the same in both.
+#include "common/bindings.glsl"
+#include "common/constants.glsl"
+#include "atmosphere/definitions.glsl"
+#include "atmosphere/uniforms.glsl"
+#include "atmosphere/functions.glsl"
+#include "atmosphere/elek_table.glsl"
+#include "atmosphere/rendering.glsl"
+
+#ifndef ELEK_TABLE
+#define ELEK_TABLE 0
+#endif
+
+layout(binding = UNIT_TRANSMITTANCE) uniform sampler2D transmittance_texture;
+layout(binding = UNIT_IRRADIANCE) uniform sampler2D irradiance_texture;
+#if ELEK_TABLE
+layout(binding = UNIT_ELEK_SCATTERING) uniform sampler3D scattering_texture;
+layout(binding = UNIT_ELEK_SINGLE_MIE) uniform sampler3D single_mie_scattering_texture;
+#else
+layout(binding = UNIT_SCATTERING) uniform sampler3D scattering_texture;
+layout(binding = UNIT_SINGLE_MIE) uniform sampler3D single_mie_scattering_texture;
+#endif
+const bool USE_ELEK_TABLE = ELEK_TABLE != 0;
+
+const float LIMB_DARKENING_U = 0.6;     // linear law I(mu) = 1 - u (1 - mu), visible light
+const float MAX_HDR_RADIANCE = 6.0e4;   // below the largest half float (65504)
+
+// The fraction of the sun's disc seen from `point` (km from the planet centre): 1 until
+// something casts shadows (cloud and terrain shadows come through here).
+float SunVisibility(vec3 point) { return 1.0; }
+
+vec3 SkyRadiance(vec3 camera, vec3 viewRay, vec3 sun, out vec3 transmittance) {
+    return GetSkyRadianceFrom(atmosphereParameters(), USE_ELEK_TABLE, transmittance_texture, scattering_texture,
+                              single_mie_scattering_texture, camera, viewRay, sun, transmittance);
+}
+
+// `distance` in km along the unit `viewRay` (ray and distance rather than the point, so a
+// point 2 m away stays exact in float).
+vec3 SkyRadianceToPoint(vec3 camera, vec3 viewRay, float distance, vec3 sun, out vec3 transmittance) {
+    return GetSkyRadianceToPointAlongRayFrom(atmosphereParameters(), USE_ELEK_TABLE, transmittance_texture,
+                                             scattering_texture, single_mie_scattering_texture, camera, viewRay,
+                                             distance, sun, transmittance);
+}
+
+vec3 TransmittanceToPoint(vec3 camera, vec3 viewRay, float distance) {
+    AtmosphereParameters atmosphere = atmosphereParameters();
+    ViewRay ray = ViewRayInAtmosphere(atmosphere, camera, viewRay, viewRay);
+    if (!ray.inside) return vec3(1.0);
+    float d = max(distance - ray.skipped, 0.0);
+    return GetTransmittance(atmosphere, transmittance_texture, ray.r, ray.mu, d,
+                            RayIntersectsGround(atmosphere, ray.r, ray.mu));
+}
+
+vec3 SunIrradianceAtPoint(vec3 point, vec3 sun) {
+    AtmosphereParameters atmosphere = atmosphereParameters();
+    float r = length(point);
+    return atmosphere.solar_irradiance * GetTransmittanceToSun(atmosphere, transmittance_texture, r, dot(point, sun) / r) *
+           SunVisibility(point);
+}
+
+vec3 SunAndSkyIrradiance(vec3 point, vec3 normal, vec3 sun, out vec3 skyIrradiance) {
+    return GetSunAndSkyIrradiance(atmosphereParameters(), transmittance_texture, irradiance_texture, point, normal, sun,
+                                  skyIrradiance) *
+           SunVisibility(point);
+}
+
+// Sun disc radiance towards `dir`, before the atmosphere. Normalised so the disc delivers
+// the solar irradiance: the mean of the linear law over the disc is 1 - u / 3. Angles from
+// |dir x sun| stay precise for a 0.27 deg disc.
+vec3 SunDiscRadiance(vec3 dir, vec3 sun) {
+    float angularRadius = atmosphereUniforms.sunAngularRadius;
+    if (dot(dir, sun) <= 0.0) return vec3(0.0);
+    float angle = asin(min(length(cross(dir, sun)), 1.0));
+    if (angle >= angularRadius) return vec3(0.0);
+    float x = angle / angularRadius;
+    float mu = sqrt(1.0 - x * x);
+    float discSolidAngle = PI * angularRadius * angularRadius;
+    vec3 radiance = atmosphereUniforms.solarIrradiance / discSolidAngle * (1.0 - LIMB_DARKENING_U * (1.0 - mu)) /
+                    (1.0 - LIMB_DARKENING_U / 3.0);
+    return min(radiance, vec3(MAX_HDR_RADIANCE));  // a tiny disc must not overflow the RGBA16F target
+}

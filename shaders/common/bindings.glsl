@@ -1,0 +1,36 @@
+// Every texture unit and buffer binding of the frame, written once (STYLE habit 3).
+//
+// Compiled as GLSL (layout(binding = X) takes a constant expression since GLSL 4.40) and
+// as C++ (src/render/bindings.h includes this file), so the C++ side binds exactly where
+// the shaders read: no literal unit number appears anywhere else. A texture keeps its unit
+// in every pass, so passes never rebind what an earlier pass bound for the same reader.
+
+// Uniform blocks (std140; C++ mirrors static_assert their layout).
+const int BLOCK_FRAME = 0;       // FrameBlock: camera, sun, viewport, history (common/frame_uniforms.glsl)
+const int BLOCK_ATMOSPHERE = 1;  // AtmosphereBlock: the model's parameters (atmosphere/uniforms.glsl)
+const int BLOCK_TERRAIN = 2;     // TerrainBlock: the height field's shape and the terrain's look (terrain/terrain_block.glsl)
+const int BLOCK_GRID = 3;        // GridBlock: the projected grid of the pass that draws (terrain/grid.glsl)
+const int BLOCK_OCEAN = 4;       // OceanBlock: the sea's parameters (ocean/ocean_block.glsl)
+
+// Shader storage buffers (std430).
+const int BUFFER_PROBE_INPUT = 0;   // the compute probes' inputs and outputs (tests and sky-probe)
+const int BUFFER_PROBE_OUTPUT = 1;
+const int BUFFER_OCEAN_WAVES = 3;   // one record per wave (ocean/ocean_waves.glsl)
+
+// Texture units.
+const int UNIT_GBUFFER_NORMAL = 0;          // RGBA16F world normal
+const int UNIT_GBUFFER_ALBEDO = 1;          // RGBA8 linear albedo
+const int UNIT_GBUFFER_MATERIAL = 2;        // RGBA8 material id / 255, roughness
+const int UNIT_GBUFFER_DEPTH = 3;           // DEPTH32F reversed-Z
+const int UNIT_TRANSMITTANCE = 4;           // atmosphere tables (atmosphere/interface.glsl)
+const int UNIT_SCATTERING = 5;
+const int UNIT_SINGLE_MIE = 6;
+const int UNIT_IRRADIANCE = 7;
+const int UNIT_ELEK_SCATTERING = 8;
+const int UNIT_ELEK_SINGLE_MIE = 9;
+const int UNIT_CONTINENTS = 10;             // RGBA32F cube map (noise/continents.h)
+const int UNIT_SURFACE_RADIANCE = 11;       // RGBA16F radiance leaving the surface point, no air in it
+const int UNIT_SURFACE_DISTANCE = 12;       // R32F distance along the view ray to the surface point, m (0: none)
+const int UNIT_SEABED_RADIANCE = 13;        // copy of the surface radiance before the sea is drawn over it
+const int UNIT_SEABED_DEPTH = 14;           // copy of the G-buffer depth before the sea
+const int UNIT_HDR_RADIANCE = 15;           // RGBA16F radiance arriving at the camera (tone mapping reads it)

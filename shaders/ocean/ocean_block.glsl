@@ -1,0 +1,13 @@
+// The sea's parameters for every ocean stage; mirror of src/ocean/ocean_block.h (std140).
+#include "common/bindings.glsl"
+
+layout(std140, binding = BLOCK_OCEAN) uniform OceanBlock {
+    float seaLevel;              // m above the planet radius (the mean sea surface)
+    float maxWaveHeight;         // m: the sum of the amplitudes (culling, land test)
+    float targetEdgePixels;      // triangle edge on screen the tessellation aims for
+    float coarsestEdgePixels;    // the larger of the terrain's and the ocean's target edge (mesh sag)
+    float fadeStart;             // e0 of Michelic Eq. 11
+    float fadeEnd;               // e1 of Michelic Eq. 11
+    float subgridSlopeVariance;  // ripples shorter than any wave (src/ocean/ocean_gpu.h)
+    int waveCount;               // records in OceanWaves
+} ocean;

@@ -1,0 +1,36 @@
+// Surface light: G-buffer -> the radiance leaving each surface point towards the camera,
+// with no air in it (the sky pass adds what lies between the camera and the point).
+//
+//   R_G = albedo / pi * (sun through the atmosphere * visibility + sky irradiance)
+//                                                          (Elek Eq. 17, 20; Sperlhofer Eq. 2-13)
+// Also writes the distance along the view ray to the point, which the sky pass and the
+// ocean read. Pixels where nothing was drawn keep the cleared 0 (no surface).
+#include "common/frame_uniforms.glsl"
+#include "common/gbuffer.glsl"
+#include "atmosphere/interface.glsl"
+
+in vec2 vNdc;
+layout(binding = UNIT_GBUFFER_NORMAL) uniform sampler2D gNormal;
+layout(binding = UNIT_GBUFFER_ALBEDO) uniform sampler2D gAlbedo;
+layout(binding = UNIT_GBUFFER_DEPTH) uniform sampler2D gDepth;
+
+layout(location = 0) out vec4 outSurfaceRadiance;
+layout(location = 1) out float outSurfaceDistance;
+
+void main() {
+    ivec2 pixel = ivec2(gl_FragCoord.xy);
+    float depth = texelFetch(gDepth, pixel, 0).r;
+    if (depth <= 0.0) discard;  // reversed-Z 0: nothing drawn, the sky pass shows the sky here
+
+    vec3 dir = worldRayFromNdc(vNdc);
+    vec3 forward = -vec3(frame.worldFromView[2]);
+    float rayDistance = viewDistanceFromDepth(depth) / max(dot(dir, forward), 1e-6);  // m
+    vec3 point = cameraFromPlanetCentreKm() + dir * (rayDistance / M_PER_KM);
+
+    vec3 normal = normalize(texelFetch(gNormal, pixel, 0).xyz);
+    vec3 albedo = texelFetch(gAlbedo, pixel, 0).rgb;
+    vec3 skyIrradiance;
+    vec3 sunIrradiance = SunAndSkyIrradiance(point, normal, frame.sunDirection, skyIrradiance);
+    outSurfaceRadiance = vec4(albedo / PI * (sunIrradiance + skyIrradiance), 1.0);
+    outSurfaceDistance = rayDistance;
+}

@@ -1,0 +1,15 @@
+// The terrain's parameters for every terrain stage and for the passes that read the sea
+// floor (the ocean); mirror of src/terrain/terrain_block.h (std140). Include after
+// terrain/height.glsl, which defines TerrainShape.
+#include "common/bindings.glsl"
+
+layout(std140, binding = BLOCK_TERRAIN) uniform TerrainBlock {
+    TerrainShape terrainShape;      // the height field (terrain/height.glsl): heights, mountains
+    vec3 terrainLowlandAlbedo;      // preset planet.albedo: the grass material's albedo
+    float terrainTargetEdgePixels;  // triangle edge on screen the tessellation aims for
+    int terrainHasOcean;            // 1: water below sea level; 0: dry basins (Mars)
+    float terrainPadding0;
+    float terrainPadding1;
+    float terrainPadding2;
+};
+layout(binding = UNIT_CONTINENTS) uniform samplerCube uContinents;  // noise/continents.h, RGBA32F

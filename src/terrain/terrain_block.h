@@ -1,0 +1,37 @@
+// TerrainBlock: the terrain's parameters as the shaders read them (BLOCK_TERRAIN), C++
+// mirror of shaders/terrain/terrain_block.glsl (std140, offsets static_asserted). Read by
+// every terrain stage and by the ocean (the sea floor's height).
+#pragma once
+
+#include <cstddef>
+
+#include <glm/glm.hpp>
+
+#include "scene/scene.h"
+#include "terrain/height.h"
+
+namespace planet::terrain {
+
+struct TerrainBlock {
+    TerrainShape shape;               // the height field (terrain/height.glsl)
+    glm::vec3 lowlandAlbedo;          // preset planet.albedo
+    float targetEdgePixels;           // px
+    int hasOcean;                     // 1: water below sea level
+    float padding0 = 0.0f;
+    float padding1 = 0.0f;
+    float padding2 = 0.0f;
+};
+static_assert(offsetof(TerrainBlock, lowlandAlbedo) == 48 && offsetof(TerrainBlock, targetEdgePixels) == 60 &&
+                  offsetof(TerrainBlock, hasOcean) == 64 && sizeof(TerrainBlock) == 80,
+              "TerrainBlock must match std140 (shaders/terrain/terrain_block.glsl)");
+
+inline TerrainBlock makeTerrainBlock(const Scene& scene) {
+    TerrainBlock b{};
+    b.shape = makeTerrainShape(scene.terrain);
+    b.lowlandAlbedo = glm::vec3(scene.planet.albedo);
+    b.targetEdgePixels = static_cast<float>(scene.terrain.target_edge_px);
+    b.hasOcean = scene.terrain.ocean ? 1 : 0;
+    return b;
+}
+
+}  // namespace planet::terrain
