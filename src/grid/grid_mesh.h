@@ -21,10 +21,10 @@ struct GridBlock {
     glm::dvec4 cameraPositionAndRadius;  // camera (world, m); w: the grid sphere's radius, m
     double zShift;                       // z_s of Eq. 3
     int exponent;                        // n of Eq. 2
-    int padding[5] = {0, 0, 0, 0, 0};
+    int padding = 0;                     // to the 16 bytes a std140 block rounds to
 };
 static_assert(offsetof(GridBlock, cameraPositionAndRadius) == 96 && offsetof(GridBlock, zShift) == 128 &&
-                  offsetof(GridBlock, exponent) == 136 && sizeof(GridBlock) == 160,
+                  offsetof(GridBlock, exponent) == 136 && sizeof(GridBlock) == 144,
               "GridBlock must match std140 (shaders/terrain/grid.glsl)");
 
 // Eq. 1-4's frame and shift, Eq. 2's n, the camera (world, m) and the sphere's radius (m).

@@ -1,0 +1,251 @@
+// The frame's structure: declared passes in an order that holds, baked resources made in
+// the prepare step only, the frame history and its reprojection terms, the jitter
+// sequence, uniform blocks whose C++ mirrors match what the driver laid out, and aerial
+// perspective computed in one place.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <regex>
+#include <set>
+#include <sstream>
+
+#include "atmosphere/uniforms.h"
+#include "gl_test_support.h"
+#include "grid/grid_mesh.h"
+#include "ocean/ocean_block.h"
+#include "render/bindings.h"
+#include "render/frame_uniforms.h"
+#include "render/renderer.h"
+#include "terrain/terrain_block.h"
+
+using namespace planet;
+namespace fs = std::filesystem;
+
+namespace {
+
+constexpr glm::ivec2 kSize{32, 18};
+
+class FrameTest : public test::GLTest {
+protected:
+    static void SetUpTestSuite() {
+        GLTest::SetUpTestSuite();
+        renderer = std::make_unique<Renderer>(test::repoPaths().shaders(), atmosphere::TableSizes::reduced());
+    }
+    static void TearDownTestSuite() {
+        renderer.reset();
+        GLTest::TearDownTestSuite();
+    }
+    static Session session(const std::string& view) { return loadSession(test::repoPaths(), "earth", view); }
+    static inline std::unique_ptr<Renderer> renderer;
+};
+
+}  // namespace
+
+TEST(PassOrder, AReadBeforeAnyWriteIsReported) {
+    using R = FrameResource;
+    const std::vector<PassDeclaration> good{{"a", {}, {R::GBuffer}}, {"b", {R::GBuffer}, {R::HdrRadiance}}};
+    EXPECT_TRUE(checkPassOrder(good).empty());
+    const std::vector<PassDeclaration> bad{{"b", {R::GBuffer}, {R::HdrRadiance}}, {"a", {}, {R::GBuffer}}};
+    const std::vector<std::string> problems = checkPassOrder(bad);
+    ASSERT_EQ(problems.size(), 1u);
+    EXPECT_EQ(problems[0], "pass 'b' reads G-buffer before any pass writes it");
+}
+
+TEST_F(FrameTest, TheRenderersPassesAreDeclaredInAnOrderThatHolds) {
+    const std::vector<PassDeclaration> passes = renderer->passDeclarations();
+    EXPECT_TRUE(checkPassOrder(passes).empty());
+    std::vector<std::string> names;
+    for (const PassDeclaration& p : passes) names.push_back(p.name);
+    EXPECT_EQ(names, (std::vector<std::string>{"terrain", "surface light", "ocean", "sky", "tonemap", "ui"}));
+}
+
+TEST_F(FrameTest, BakedResourcesAreMadeInThePrepareStepOncePerChange) {
+    Session s = session("orbit");
+    s.scene.terrain.continent_map_size = 32;  // a quick bake
+    renderer->render(s.scene, s.camera, kSize);
+    const int loads = renderer->continents().loads();
+    renderer->render(s.scene, s.camera, kSize);
+    EXPECT_FALSE(renderer->lastPrepare().continentsUpdated);
+    EXPECT_EQ(renderer->continents().loads(), loads);
+
+    s.scene.terrain.seed += 17;  // a parameter of the bake
+    renderer->render(s.scene, s.camera, kSize);
+    EXPECT_TRUE(renderer->lastPrepare().continentsUpdated);
+    EXPECT_EQ(renderer->continents().loads(), loads + 1);
+    renderer->render(s.scene, s.camera, kSize);
+    renderer->render(s.scene, s.camera, kSize);
+    EXPECT_FALSE(renderer->lastPrepare().continentsUpdated);
+    EXPECT_EQ(renderer->continents().loads(), loads + 1);  // once, not once per pass or per frame
+    // The CPU copy and the GPU texture come from the same bake.
+    ASSERT_TRUE(renderer->continents().map());
+    EXPECT_EQ(renderer->continents().map()->size, 32);
+
+    // The profiler shows the work under "prepare", before the passes; the passes themselves bake nothing.
+    renderer->profiler().waitForResults();
+    bool sawPrepare = false;
+    for (const PassTimings& p : renderer->profiler().passes()) sawPrepare = sawPrepare || p.name == "prepare";
+    EXPECT_TRUE(sawPrepare);
+}
+
+TEST_F(FrameTest, HistoryIsKeptForSmallMovesAndDroppedOnResizeJumpOrSceneChange) {
+    Session s = session("beach");
+    renderer->render(s.scene, s.camera, kSize);
+    renderer->render(s.scene, s.camera, kSize);
+    EXPECT_TRUE(renderer->lastPrepare().historyValid);
+    const int index = renderer->frameIndex();
+
+    s.camera.position += s.camera.forward() * 0.5;  // half a metre: the same place
+    renderer->render(s.scene, s.camera, kSize);
+    EXPECT_TRUE(renderer->lastPrepare().historyValid);
+    EXPECT_EQ(renderer->frameIndex(), index + 1);
+
+    renderer->render(s.scene, s.camera, {kSize.x + 2, kSize.y});
+    EXPECT_FALSE(renderer->lastPrepare().historyValid) << "resize";
+    renderer->render(s.scene, s.camera, {kSize.x + 2, kSize.y});
+    EXPECT_TRUE(renderer->lastPrepare().historyValid);
+
+    Session far = session("orbit");
+    far.scene = s.scene;
+    renderer->render(far.scene, far.camera, {kSize.x + 2, kSize.y});
+    EXPECT_FALSE(renderer->lastPrepare().historyValid) << "jump";
+
+    Session changed = far;
+    changed.scene.atmosphere.mie_g = 0.5;
+    renderer->render(far.scene, far.camera, {kSize.x + 2, kSize.y});
+    EXPECT_TRUE(renderer->lastPrepare().historyValid);
+    renderer->render(changed.scene, changed.camera, {kSize.x + 2, kSize.y});
+    EXPECT_FALSE(renderer->lastPrepare().historyValid) << "scene change";
+}
+
+TEST(FrameUniformsTest, ReprojectionFindsAPointWhereThePreviousCameraSawIt) {
+    // A point seen by two cameras 3 m apart on a beach, 6371 km from the planet centre: its
+    // position relative to the new camera, through previousClipFromWorld and
+    // cameraFromPrevious (float), lands where the previous camera projected it (double).
+    Scene scene;
+    Camera before;
+    before.position = glm::dvec3(6371.0e3 + 2.0, 0.0, 0.0);
+    before.orientation = orientationFromAxes({0, 1, 0}, {1, 0, 0}, glm::normalize(glm::dvec3(-0.05, 0.0, -1.0)));
+    Camera now = before;
+    now.position += glm::dvec3(0.0, 3.0, 0.0);
+    const glm::ivec2 size{640, 360};
+    const FrameUniforms u = makeFrameUniforms(scene, now, size, 5, PreviousFrame{before, size});
+    EXPECT_EQ(u.historyValid, 1.0f);
+    const glm::dvec3 world = before.position + glm::dvec3(-2.0, 1.0, -40.0);
+    const glm::dvec4 clipBefore =
+        before.clipFromView(double(size.x) / size.y) * glm::dvec4(glm::transpose(before.worldFromView()) * (world - before.position), 1.0);
+    const glm::dvec3 expected = glm::dvec3(clipBefore) / clipBefore.w;
+    const glm::vec3 relative(world - now.position);  // what a shader holds
+    const glm::vec4 clip = u.previousClipFromWorld * glm::vec4(relative + u.cameraFromPrevious, 1.0f);
+    const glm::vec3 got = glm::vec3(clip) / clip.w;
+    EXPECT_NEAR(got.x, expected.x, 1e-5);
+    EXPECT_NEAR(got.y, expected.y, 1e-5);
+    EXPECT_NEAR(got.z, expected.z, 1e-6);
+    // No history: the terms are the frame's own, and say so.
+    const FrameUniforms first = makeFrameUniforms(scene, now, size, 0, std::nullopt);
+    EXPECT_EQ(first.historyValid, 0.0f);
+    EXPECT_EQ(first.cameraFromPrevious, glm::vec3(0.0f));
+}
+
+TEST(FrameUniformsTest, JitterIsAHaltonSequenceInsideThePixel) {
+    EXPECT_DOUBLE_EQ(halton(1, 2), 0.5);
+    EXPECT_DOUBLE_EQ(halton(2, 2), 0.25);
+    EXPECT_DOUBLE_EQ(halton(3, 2), 0.75);
+    EXPECT_DOUBLE_EQ(halton(1, 3), 1.0 / 3.0);
+    EXPECT_DOUBLE_EQ(halton(4, 3), 1.0 / 3.0 + 1.0 / 9.0);
+    std::set<std::pair<float, float>> seen;
+    glm::vec2 mean(0.0f);
+    for (int i = 0; i < 16; ++i) {
+        const glm::vec2 j = subPixelJitter(i);
+        EXPECT_GE(j.x, -0.5f);
+        EXPECT_LT(j.x, 0.5f);
+        EXPECT_GE(j.y, -0.5f);
+        EXPECT_LT(j.y, 0.5f);
+        seen.insert({j.x, j.y});
+        mean += j / 16.0f;
+    }
+    EXPECT_EQ(seen.size(), 16u);
+    EXPECT_LT(std::abs(mean.x), 0.05f);  // well spread: centred on the pixel
+    EXPECT_LT(std::abs(mean.y), 0.1f);
+    EXPECT_EQ(subPixelJitter(3), subPixelJitter(19));  // a cycle of 16
+}
+
+namespace {
+
+// A block's binding, size and the offsets of some members, as the driver laid them out.
+struct BlockLayout {
+    GLint binding = -1, size = -1;
+};
+BlockLayout blockLayout(GLuint program, const char* name) {
+    const GLuint index = glGetUniformBlockIndex(program, name);
+    BlockLayout l;
+    if (index == GL_INVALID_INDEX) return l;
+    glGetActiveUniformBlockiv(program, index, GL_UNIFORM_BLOCK_BINDING, &l.binding);
+    glGetActiveUniformBlockiv(program, index, GL_UNIFORM_BLOCK_DATA_SIZE, &l.size);
+    return l;
+}
+GLint memberOffset(GLuint program, const char* name) {
+    GLuint index = GL_INVALID_INDEX;
+    glGetUniformIndices(program, 1, &name, &index);
+    if (index == GL_INVALID_INDEX) return -1;
+    GLint offset = -1;
+    glGetActiveUniformsiv(program, 1, &index, GL_UNIFORM_OFFSET, &offset);
+    return offset;
+}
+
+}  // namespace
+
+TEST_F(FrameTest, BlockMirrorsMatchTheDriversLayoutAndBindings) {
+    // Programs that declare every block (the ocean reads all five); std140 is what the C++
+    // static_asserts assume, and this asks the driver itself.
+    const gl::ShaderSources sources{test::repoPaths().shaders(),
+                                    gl::shaderPreamble() +
+                                        atmosphere::atmosphereShaderDefines(atmosphere::TableSizes::reduced())};
+    const gl::Program ocean = gl::buildProgram(
+        sources, {"ocean", {"ocean/ocean.vert", "ocean/ocean.tesc", "ocean/ocean.tese", "ocean/ocean.frag"}});
+    const GLuint p = ocean.id();
+    const BlockLayout frame = blockLayout(p, "FrameBlock");
+    EXPECT_EQ(frame.binding, binding::BLOCK_FRAME);
+    EXPECT_EQ(frame.size, static_cast<GLint>(sizeof(FrameUniforms)));
+    EXPECT_EQ(memberOffset(p, "FrameBlock.cameraDepthBelowSea"), static_cast<GLint>(offsetof(FrameUniforms, cameraDepthBelowSea)));
+    EXPECT_EQ(memberOffset(p, "FrameBlock.nearPlane"), static_cast<GLint>(offsetof(FrameUniforms, nearPlane)));
+    const BlockLayout atmosphereBlock = blockLayout(p, "AtmosphereBlock");
+    EXPECT_EQ(atmosphereBlock.binding, binding::BLOCK_ATMOSPHERE);
+    EXPECT_EQ(atmosphereBlock.size, static_cast<GLint>(sizeof(atmosphere::AtmosphereUniforms)));
+    EXPECT_EQ(memberOffset(p, "AtmosphereBlock.muSMin"), static_cast<GLint>(offsetof(atmosphere::AtmosphereUniforms, muSMin)));
+    const BlockLayout terrainBlock = blockLayout(p, "TerrainBlock");
+    EXPECT_EQ(terrainBlock.binding, binding::BLOCK_TERRAIN);
+    EXPECT_EQ(terrainBlock.size, static_cast<GLint>(sizeof(terrain::TerrainBlock)));
+    const BlockLayout oceanBlock = blockLayout(p, "OceanBlock");
+    EXPECT_EQ(oceanBlock.binding, binding::BLOCK_OCEAN);
+    EXPECT_EQ(oceanBlock.size, static_cast<GLint>(sizeof(ocean::OceanBlock)));
+    EXPECT_EQ(memberOffset(p, "OceanBlock.waveCount"), static_cast<GLint>(offsetof(ocean::OceanBlock, waveCount)));
+    const BlockLayout grid = blockLayout(p, "GridBlock");
+    EXPECT_EQ(grid.binding, binding::BLOCK_GRID);
+    EXPECT_EQ(grid.size, static_cast<GLint>(sizeof(GridBlock)));
+    EXPECT_EQ(memberOffset(p, "GridBlock.exponent"), static_cast<GLint>(offsetof(GridBlock, exponent)));
+}
+
+TEST(FrameSources, AerialPerspectiveIsComputedInOneShaderFunctionCalledFromOnePass) {
+    // Every shader under shaders/ (the sky-probe tool and the model's own files aside):
+    // only render/sky.frag calls the interface's SkyRadianceToPoint, and nothing outside
+    // the atmosphere's interface calls the model's in-scattering lookups directly.
+    const fs::path root = test::repoPaths().shaders();
+    const std::regex toPoint(R"(\bSkyRadianceToPoint\s*\()");
+    const std::regex model(R"(\bGetSkyRadianceToPoint\w*\s*\()");
+    std::vector<std::string> callers;
+    for (const auto& entry : fs::recursive_directory_iterator(root)) {
+        if (!entry.is_regular_file()) continue;
+        const std::string rel = fs::relative(entry.path(), root).generic_string();
+        std::ifstream in(entry.path());
+        std::stringstream text;
+        text << in.rdbuf();
+        const std::string source = text.str();
+        if (rel == "atmosphere/interface.glsl" || rel == "atmosphere/rendering.glsl" || rel == "atmosphere/elek_table.glsl")
+            continue;
+        if (std::regex_search(source, toPoint)) callers.push_back(rel);
+        EXPECT_FALSE(std::regex_search(source, model)) << rel << " calls the model's aerial perspective directly";
+    }
+    EXPECT_EQ(callers, (std::vector<std::string>{"render/sky.frag"}));
+}
