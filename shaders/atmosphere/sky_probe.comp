@@ -1,43 +1,34 @@
-// Sky probe: GetSkyRadiance (rendering.glsl) for a list of view rays, the GPU
-// side of `planet sky-probe` (src/app/sky_probe_command.cpp). One invocation
-// per row; rows [firstRow, firstRow + rowCount) per dispatch.
+// Sky probe: the atmosphere interface's SkyRadiance (the very function the sky pass
+// calls) for a list of view rays, the GPU side of `planet sky-probe`
+// (src/app/sky_probe_command.cpp). One invocation per row; rows
+// [firstRow, firstRow + rowCount) per dispatch.
 //
 // Inputs per row (std430, 3 vec4): camera position (km, from the planet
 // centre), unit view ray, unit sun direction; w unused.
 // Outputs per row (2 vec4): sky radiance (rgb, W m^-2 sr^-1 nm^-1: scattered
 // light only, no ground, no sun disc), and the whole ray's transmittance (rgb).
-#include "atmosphere/definitions.glsl"
-#include "atmosphere/uniforms.glsl"
-#include "atmosphere/functions.glsl"
-#include "atmosphere/elek_table.glsl"
-#include "atmosphere/rendering.glsl"
+#include "atmosphere/interface.glsl"
 
 layout(local_size_x = 64, local_size_y = 1, local_size_z = 1) in;
 
 layout(location = 0) uniform int firstRow;
 layout(location = 1) uniform int rowCount;
-layout(binding = 0) uniform sampler2D transmittanceTable;
-layout(binding = 1) uniform sampler3D scatteringTable;
-layout(binding = 2) uniform sampler3D singleMieTable;
-
-layout(std430, binding = 0) readonly buffer ProbeRays {
+layout(std430, binding = BUFFER_PROBE_INPUT) readonly buffer ProbeRays {
     vec4 rays[];
 };
-layout(std430, binding = 1) writeonly buffer ProbeResults {
+layout(std430, binding = BUFFER_PROBE_OUTPUT) writeonly buffer ProbeResults {
     vec4 results[];
 };
 
 void main() {
     int row = firstRow + int(gl_GlobalInvocationID.x);
     if (row >= firstRow + rowCount) return;
-    AtmosphereParameters atmosphere = atmosphereParameters();
     vec3 camera = rays[3 * row].xyz;
     vec3 view_ray = rays[3 * row + 1].xyz;
     vec3 sun_direction = rays[3 * row + 2].xyz;
     vec3 transmittance;
-    vec3 radiance = GetSkyRadiance(atmosphere, transmittanceTable, scatteringTable, singleMieTable, camera, view_ray,
-                                   sun_direction, transmittance);
-    transmittance = GetViewRayTransmittance(atmosphere, transmittanceTable, camera, view_ray);  // to the ground too
+    vec3 radiance = SkyRadiance(camera, view_ray, sun_direction, transmittance);
+    transmittance = GetViewRayTransmittance(atmosphereParameters(), transmittance_texture, camera, view_ray);  // to the ground too
     results[2 * row] = vec4(radiance, 0.0);
     results[2 * row + 1] = vec4(transmittance, 0.0);
 }

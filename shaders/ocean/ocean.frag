@@ -122,6 +122,8 @@ void main() {
     vec3 deep = deepWaterRadiance(sunIrradiance + skyIrradiance);
     vec3 surface = (1.0 - fresnel) * waterTransmittance * behind + fresnel * sky + glitter +
                    (1.0 - fresnel) * (1.0 - waterTransmittance) * deep;
-    float coverage = smoothstep(0.0, SHORE_FADE_M, waterPath);
+    // Where the terrain's mesh drew nothing behind the sea (its chords sag off the limb
+    // from far away) there is no floor to fade into: the sea is the only surface there.
+    float coverage = seabed > 0.0 ? smoothstep(0.0, SHORE_FADE_M, waterPath) : 1.0;
     outSurfaceRadiance = vec4(min(mix(behind, surface, coverage), vec3(MAX_HDR_RADIANCE)), 1.0);
 }

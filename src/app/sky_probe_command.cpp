@@ -30,6 +30,7 @@
 #include "atmosphere/precompute_gpu.h"
 #include "atmosphere/reference_tables.h"
 #include "atmosphere/uniforms.h"
+#include "render/bindings.h"
 #include "gl/context.h"
 #include "gl/debug.h"
 #include "gl/program.h"
@@ -191,12 +192,12 @@ std::vector<ProbeResult> probeOnGpu(const std::vector<ProbeRow>& rows, const Ses
     {
         gl::DebugGroup group("sky probe");
         glUseProgram(program.id());
-        glBindBufferBase(GL_UNIFORM_BUFFER, kAtmosphereUniformBinding, uniformBuffer.id());
-        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, rayBuffer.id());
-        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, resultBuffer.id());
-        glBindTextureUnit(0, tables.transmittance.id());
-        glBindTextureUnit(1, tables.scattering.id());
-        glBindTextureUnit(2, tables.singleMie.id());
+        glBindBufferBase(GL_UNIFORM_BUFFER, binding::BLOCK_ATMOSPHERE, uniformBuffer.id());
+        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding::BUFFER_PROBE_INPUT, rayBuffer.id());
+        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding::BUFFER_PROBE_OUTPUT, resultBuffer.id());
+        glBindTextureUnit(binding::UNIT_TRANSMITTANCE, tables.transmittance.id());
+        glBindTextureUnit(binding::UNIT_SCATTERING, tables.scattering.id());
+        glBindTextureUnit(binding::UNIT_SINGLE_MIE, tables.singleMie.id());
         for (std::size_t first = 0; first < rows.size(); first += kRowsPerDispatch) {
             const int count = static_cast<int>(std::min<std::size_t>(kRowsPerDispatch, rows.size() - first));
             glProgramUniform1i(program.id(), 0, static_cast<GLint>(first));
