@@ -51,10 +51,10 @@ std::vector<std::string> checkPassOrder(const std::vector<PassDeclaration>& pass
 }
 
 Renderer::Renderer(const std::filesystem::path& shaderRoot, const atmosphere::TableSizes& atmosphereTables,
-                   std::filesystem::path continentsCache)
+                   std::shared_ptr<terrain::Continents> continents)
     : sources_{shaderRoot, gl::shaderPreamble()},
       atmosphere_(shaderRoot, atmosphereTables),
-      continents_(continentsCache.empty() ? noise::defaultContinentsCacheRoot() : std::move(continentsCache)),
+      continents_(continents ? std::move(continents) : std::make_shared<terrain::Continents>()),
       terrain_(sources_),
       surfaceLight_(withAtmosphere(sources_, atmosphereTables), "surface light", "render/surface_light.frag"),
       ocean_(sources_, atmosphereTables),
@@ -164,8 +164,9 @@ void Renderer::prepare(const Scene& scene, const Camera& camera, glm::ivec2 size
     }
     gl::DebugGroup group("prepare");
     auto timing = profiler_.pass("prepare");
-    report.continentsUpdated = continents_.update(scene.terrain);
-    glBindTextureUnit(binding::UNIT_CONTINENTS, continents_.texture().id());
+    continents_->update(scene.terrain);  // nothing when the session's ground already brought it up to date
+    report.continentsUpdated = continents_->textureStale();
+    glBindTextureUnit(binding::UNIT_CONTINENTS, continents_->texture().id());
     // Filter across cube faces as the CPU's sampleContinents does.
     glEnable(GL_TEXTURE_CUBE_MAP_SEAMLESS);
 

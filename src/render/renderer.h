@@ -80,10 +80,11 @@ struct PrepareReport {
 class Renderer {
 public:
     // Throws gl::ShaderError. The first render() makes the atmosphere tables and the
-    // continents (from the cache when they are there). The continents cache folder is
-    // noise::defaultContinentsCacheRoot() unless given.
+    // continents (from the cache when they are there). `continents` is the map's owner the
+    // caller shares with its CPU height queries (Session::continents), so the map is loaded
+    // once per process for both; without one the renderer makes its own (default cache).
     Renderer(const std::filesystem::path& shaderRoot, const atmosphere::TableSizes& atmosphereTables,
-             std::filesystem::path continentsCache = {});
+             std::shared_ptr<terrain::Continents> continents = nullptr);
 
     // Renders one frame into targets(). `present`, when given, runs last as the
     // "ui" pass (the explorer blits LDR to its window and draws panels there),
@@ -95,7 +96,7 @@ public:
     const RenderTargets& targets() const { return targets_; }
     const atmosphere::Atmosphere& atmosphere() const { return atmosphere_; }
     // The continents map the terrain draws, also on the CPU (share it with the camera's ground).
-    const terrain::Continents& continents() const { return continents_; }
+    const terrain::Continents& continents() const { return *continents_; }
     Profiler& profiler() { return profiler_; }
     const PrepareReport& lastPrepare() const { return lastPrepare_; }
     int frameIndex() const { return frameIndex_; }
@@ -120,7 +121,7 @@ private:
 
     gl::ShaderSources sources_;
     atmosphere::Atmosphere atmosphere_;
-    terrain::Continents continents_;
+    std::shared_ptr<terrain::Continents> continents_;
     TerrainPass terrain_;
     FullscreenPass surfaceLight_;
     OceanPass ocean_;

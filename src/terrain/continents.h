@@ -38,6 +38,8 @@ public:
     // The GL cube map of map(), uploaded on first use after each update(). Needs a GL
     // context; throws std::logic_error before the first update().
     const gl::Texture& texture();
+    // Whether the next texture() uploads a new map.
+    bool textureStale() const { return textureStale_; }
     // How many times the map was loaded or baked (tests: once per change).
     int loads() const { return loads_; }
 
