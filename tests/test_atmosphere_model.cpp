@@ -196,3 +196,34 @@ TEST(AtmosphereModel, SpaceViewMissingTheAtmosphereIsBlackAndClear) {
     EXPECT_EQ(L, glm::dvec3(0.0));
     EXPECT_EQ(t, glm::dvec3(1.0));
 }
+
+TEST(AtmosphereModel, ShadowLengthRemovesTheFarInScatteringButNotTheTransmittance) {
+    // Bruneton's shadow_length (the interface's SunShadowLength hook): none gives the plain
+    // aerial perspective; the whole segment in shadow gives no in-scattering and the same
+    // transmittance; more shadow, less light (a 20 km horizontal segment from 1 km up).
+    const AtmosphereParameters a = earth();
+    const ReferenceResult& r = tablesFor("earth");
+    Model model(r.tables.sizes);
+    const glm::dvec3 camera(0.0, 0.0, a.bottom_radius + 1.0);
+    const glm::dvec3 sun = glm::normalize(glm::dvec3(0.3, 0.0, 1.0));
+    const glm::dvec3 view = glm::normalize(glm::dvec3(1.0, 0.2, -0.02));
+    const double d = 20.0;
+    glm::dvec3 t0, t1, tAll, tHalf;
+    const glm::dvec3 plain = model.GetSkyRadianceToPointAlongRay(a, r.tables.transmittance, r.tables.scattering,
+                                                                 r.tables.singleMie, camera, view, d, sun, t0);
+    auto shadowed = [&](double length, glm::dvec3& t) {
+        return model.GetSkyRadianceToPointAlongRayFrom(a, false, r.tables.transmittance, r.tables.scattering,
+                                                       r.tables.singleMie, camera, view, d, sun, length, t);
+    };
+    EXPECT_EQ(shadowed(0.0, t1), plain);
+    EXPECT_EQ(t1, t0);
+    const glm::dvec3 half = shadowed(d / 2, tHalf);
+    const glm::dvec3 all = shadowed(d, tAll);
+    for (int c = 0; c < 3; ++c) {
+        EXPECT_NEAR(tHalf[c], t0[c], 1e-12);
+        EXPECT_NEAR(tAll[c], t0[c], 1e-12);
+        EXPECT_NEAR(all[c], 0.0, 1e-12 + 1e-9 * plain[c]);
+        EXPECT_GT(half[c], 0.2 * plain[c]);
+        EXPECT_LT(half[c], 0.8 * plain[c]);
+    }
+}

@@ -13,9 +13,12 @@
 //   SunAndSkyIrradiance         what lights a surface with a normal: the direct sun
 //                               (visibility included) and the sky (Elek Eq. 17, 20)
 //   SunDiscRadiance             the limb-darkened disc, before the atmosphere
-//   SunVisibility               the hook through which shadows enter: the fraction of the
-//                               sun seen from a point; 1 today, the clouds' and the
-//                               terrain's shadows go here, and every caller above uses it.
+//   SunVisibility               the hook through which shadows enter surfaces: the fraction
+//                               of the sun seen from a point; 1 today, the clouds' and the
+//                               terrain's shadows go here; every sun irradiance above uses it.
+//   SunShadowLength             the hook through which they enter the in-scattering: how much
+//                               of the far end of a view segment lies in shadow (Bruneton's
+//                               shadow_length, light shafts); 0 today; SkyRadianceToPoint uses it.
 //
 // Bruneton's 4D table or Elek's 3D table (preset atmosphere.elek_3d_table) is chosen here,
 // at compile time: a program including this file is built once with ELEK_TABLE 0 and once
@@ -50,6 +53,9 @@ const float MAX_HDR_RADIANCE = 6.0e4;   // below the largest half float (65504)
 // The fraction of the sun's disc seen from `point` (km from the planet centre): 1 until
 // something casts shadows (cloud and terrain shadows come through here).
 float SunVisibility(vec3 point) { return 1.0; }
+// km of the segment's far end, from the camera along `viewRay` for `distance` km, that the
+// sun does not light: 0 until something casts shadows into the air.
+float SunShadowLength(vec3 camera, vec3 viewRay, float distance) { return 0.0; }
 
 vec3 SkyRadiance(vec3 camera, vec3 viewRay, vec3 sun, out vec3 transmittance) {
     return GetSkyRadianceFrom(atmosphereParameters(), USE_ELEK_TABLE, transmittance_texture, scattering_texture,
@@ -61,7 +67,8 @@ vec3 SkyRadiance(vec3 camera, vec3 viewRay, vec3 sun, out vec3 transmittance) {
 vec3 SkyRadianceToPoint(vec3 camera, vec3 viewRay, float distance, vec3 sun, out vec3 transmittance) {
     return GetSkyRadianceToPointAlongRayFrom(atmosphereParameters(), USE_ELEK_TABLE, transmittance_texture,
                                              scattering_texture, single_mie_scattering_texture, camera, viewRay,
-                                             distance, sun, transmittance);
+                                             distance, sun, SunShadowLength(camera, viewRay, distance),
+                                             transmittance);
 }
 
 vec3 TransmittanceToPoint(vec3 camera, vec3 viewRay, float distance) {

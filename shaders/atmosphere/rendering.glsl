@@ -162,7 +162,8 @@ Spectrum GetSkyRadianceToPointAlongRayFrom(IN(AtmosphereParameters) atmosphere, 
                                            IN(ScatteringTexture) scattering_texture,
                                            IN(ScatteringTexture) single_mie_scattering_texture,
                                            IN(vec3) camera_position, IN(vec3) view_ray, Length distance,
-                                           IN(vec3) sun_direction, OUT(Spectrum) transmittance) {
+                                           IN(vec3) sun_direction, Length shadow_length,
+                                           OUT(Spectrum) transmittance) {
     ViewRay ray = ViewRayInAtmosphere(atmosphere, camera_position, view_ray, sun_direction);
     if (!ray.inside) {
         transmittance = Spectrum(1.0);
@@ -172,7 +173,11 @@ Spectrum GetSkyRadianceToPointAlongRayFrom(IN(AtmosphereParameters) atmosphere, 
     Number mu = ray.mu;
     Number mu_s = ray.mu_s;
     Number nu = ray.nu;
-    Length d = max(distance - ray.skipped, Length(0.0));
+    Length d_full = max(distance - ray.skipped, Length(0.0));
+    // Bruneton's shadow_length (his Eq. 17 for light shafts): the last shadow_length of the
+    // segment sees no sun, so the in-scattering stops that much short of the point; the
+    // transmittance stays that of the whole segment.
+    Length d = max(d_full - shadow_length, Length(0.0));
 
     // Sperlhofer 5.1.2: the table's two halves meet at the horizon, where the
     // difference of two large, nearly equal lookups is unreliable. Within EPS
@@ -195,6 +200,16 @@ Spectrum GetSkyRadianceToPointAlongRayFrom(IN(AtmosphereParameters) atmosphere, 
         scattering = mix(scattering, above, a);
         single_mie_scattering = mix(single_mie_scattering, mie_above, a);
         transmittance = mix(transmittance, transmittance_above, a);
+    }
+    if (shadow_length > Length(0.0)) {  // the whole segment's transmittance, blended as above
+        Number mu_t = near_horizon ? mu_horizon - EPS : mu;
+        transmittance = GetTransmittance(atmosphere, transmittance_texture, r, mu_t, d_full,
+                                         RayIntersectsGround(atmosphere, r, mu_t));
+        if (near_horizon)
+            transmittance = mix(transmittance,
+                                GetTransmittance(atmosphere, transmittance_texture, r, mu_horizon + EPS, d_full,
+                                                 RayIntersectsGround(atmosphere, r, mu_horizon + EPS)),
+                                (mu - mu_horizon + EPS) / (2.0 * EPS));
     }
     // Sperlhofer 5.1.3: single Mie scattering is unreliable once the sun has set.
     single_mie_scattering = single_mie_scattering * smoothstep(Number(0.0), Number(0.01), mu_s);
@@ -225,7 +240,7 @@ Spectrum GetSkyRadianceToPointAlongRay(IN(AtmosphereParameters) atmosphere,
                                        OUT(Spectrum) transmittance) {
     return GetSkyRadianceToPointAlongRayFrom(atmosphere, false, transmittance_texture, scattering_texture,
                                              single_mie_scattering_texture, camera_position, view_ray, distance,
-                                             sun_direction, transmittance);
+                                             sun_direction, Length(0.0), transmittance);
 }
 Spectrum GetSkyRadianceToPointAlongRayElek(IN(AtmosphereParameters) atmosphere,
                                            IN(TransmittanceTexture) transmittance_texture,
@@ -235,7 +250,7 @@ Spectrum GetSkyRadianceToPointAlongRayElek(IN(AtmosphereParameters) atmosphere,
                                            IN(vec3) sun_direction, OUT(Spectrum) transmittance) {
     return GetSkyRadianceToPointAlongRayFrom(atmosphere, true, transmittance_texture, elek_scattering_texture,
                                              elek_single_mie_scattering_texture, camera_position, view_ray, distance,
-                                             sun_direction, transmittance);
+                                             sun_direction, Length(0.0), transmittance);
 }
 
 // The same for two points (positions relative to the planet centre, km).
