@@ -4,6 +4,7 @@
 // perspective computed in one place.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -228,13 +229,16 @@ TEST_F(FrameTest, BlockMirrorsMatchTheDriversLayoutAndBindings) {
 }
 
 TEST(FrameSources, AerialPerspectiveIsComputedInOneShaderFunctionCalledFromOnePass) {
-    // Every shader under shaders/ (the sky-probe tool and the model's own files aside):
-    // only render/sky.frag calls the interface's SkyRadianceToPoint, and nothing outside
-    // the atmosphere's interface calls the model's in-scattering lookups directly.
+    // Every shader under shaders/ (the atmosphere's own model files aside): only the unified
+    // march of clouds and atmosphere (clouds/cloud_march.glsl, MarchView) calls the
+    // interface's SkyRadianceToPoint, nothing outside the interface calls the model's
+    // in-scattering lookups, and the only pass that marches to a surface point is the sky
+    // pass (the ocean marches its reflected rays to space: no surface, no aerial perspective).
     const fs::path root = test::repoPaths().shaders();
     const std::regex toPoint(R"(\bSkyRadianceToPoint\s*\()");
     const std::regex model(R"(\bGetSkyRadianceToPoint\w*\s*\()");
-    std::vector<std::string> callers;
+    const std::regex march(R"(\bMarchView\s*\()");
+    std::vector<std::string> toPointCallers, marchCallers;
     for (const auto& entry : fs::recursive_directory_iterator(root)) {
         if (!entry.is_regular_file()) continue;
         const std::string rel = fs::relative(entry.path(), root).generic_string();
@@ -244,8 +248,13 @@ TEST(FrameSources, AerialPerspectiveIsComputedInOneShaderFunctionCalledFromOnePa
         const std::string source = text.str();
         if (rel == "atmosphere/interface.glsl" || rel == "atmosphere/rendering.glsl" || rel == "atmosphere/elek_table.glsl")
             continue;
-        if (std::regex_search(source, toPoint)) callers.push_back(rel);
+        if (std::regex_search(source, toPoint)) toPointCallers.push_back(rel);
+        if (std::regex_search(source, march) && rel != "clouds/cloud_march.glsl") marchCallers.push_back(rel);
         EXPECT_FALSE(std::regex_search(source, model)) << rel << " calls the model's aerial perspective directly";
     }
-    EXPECT_EQ(callers, (std::vector<std::string>{"render/sky.frag"}));
+    EXPECT_EQ(toPointCallers, (std::vector<std::string>{"clouds/cloud_march.glsl"}));
+    std::sort(marchCallers.begin(), marchCallers.end());
+    for (const std::string& caller : marchCallers)
+        EXPECT_TRUE(caller == "render/sky.frag" || caller == "ocean/ocean.frag") << caller;
+    EXPECT_NE(std::find(marchCallers.begin(), marchCallers.end(), "render/sky.frag"), marchCallers.end());
 }

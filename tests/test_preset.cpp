@@ -175,7 +175,7 @@ TEST(Preset, TableOrderAndAtmosphereRows) {
         EXPECT_FALSE(spec.help.empty()) << spec.path();
         EXPECT_EQ(spec.help.find('\n'), std::string::npos) << spec.path();  // one comment line in presets
     }
-    EXPECT_EQ(sections, (std::vector<std::string>{"planet", "atmosphere", "terrain", "ocean", "sun", "render"}));
+    EXPECT_EQ(sections, (std::vector<std::string>{"planet", "atmosphere", "terrain", "ocean", "clouds", "sun", "render"}));
     EXPECT_EQ(atmosphereRows, 15);  // one per field of AtmosphereParams
     // Each row reaches its own field, with the type the panel needs.
     Scene s;

@@ -14,8 +14,9 @@
 //                               (visibility included) and the sky (Elek Eq. 17, 20)
 //   SunDiscRadiance             the limb-darkened disc, before the atmosphere
 //   SunVisibility               the hook through which shadows enter surfaces: the fraction
-//                               of the sun seen from a point; 1 today, the clouds' and the
-//                               terrain's shadows go here; every sun irradiance above uses it.
+//                               of the sun seen from a point: the clouds' transmittance
+//                               towards the sun (clouds/cloud_density.glsl; the terrain's
+//                               shadows will join it); every sun irradiance above uses it.
 //   SunShadowLength             the hook through which they enter the in-scattering: how much
 //                               of the far end of a view segment lies in shadow (Bruneton's
 //                               shadow_length, light shafts); 0 today; SkyRadianceToPoint uses it.
@@ -31,6 +32,9 @@
 #include "atmosphere/functions.glsl"
 #include "atmosphere/elek_table.glsl"
 #include "atmosphere/rendering.glsl"
+#include "clouds/cloud_model.glsl"
+#include "clouds/cloud_block.glsl"
+#include "clouds/cloud_density.glsl"
 
 #ifndef ELEK_TABLE
 #define ELEK_TABLE 0
@@ -50,9 +54,15 @@ const bool USE_ELEK_TABLE = ELEK_TABLE != 0;
 const float LIMB_DARKENING_U = 0.6;     // linear law I(mu) = 1 - u (1 - mu), visible light
 const float MAX_HDR_RADIANCE = 6.0e4;   // below the largest half float (65504)
 
-// The fraction of the sun's disc seen from `point` (km from the planet centre): 1 until
-// something casts shadows (cloud and terrain shadows come through here).
-float SunVisibility(vec3 point) { return 1.0; }
+// The longest way through the cloud layer a shadow ray samples, km: a sun near the horizon
+// crosses hundreds of km of layer; beyond this the clouds' shadow is taken as the samples say.
+const float CLOUD_SHADOW_MAX_KM = 100.0;
+
+// The fraction of the sun's disc seen from `point` (km from the planet centre): the clouds'
+// transmittance towards the sun (Michelic §6 takes one density sample mid-layer; here
+// clouds.sunSamples samples over the sun ray's way through the layer, so thin and thick
+// clouds and a low sun shade differently). The terrain's shadows will join here.
+float SunVisibility(vec3 point, vec3 sun) { return CloudSunTransmittance(point, sun, CLOUD_SHADOW_MAX_KM); }
 // km of the segment's far end, from the camera along `viewRay` for `distance` km, that the
 // sun does not light: 0 until something casts shadows into the air.
 float SunShadowLength(vec3 camera, vec3 viewRay, float distance) { return 0.0; }
@@ -84,13 +94,13 @@ vec3 SunIrradianceAtPoint(vec3 point, vec3 sun) {
     AtmosphereParameters atmosphere = atmosphereParameters();
     float r = length(point);
     return atmosphere.solar_irradiance * GetTransmittanceToSun(atmosphere, transmittance_texture, r, dot(point, sun) / r) *
-           SunVisibility(point);
+           SunVisibility(point, sun);
 }
 
 vec3 SunAndSkyIrradiance(vec3 point, vec3 normal, vec3 sun, out vec3 skyIrradiance) {
     return GetSunAndSkyIrradiance(atmosphereParameters(), transmittance_texture, irradiance_texture, point, normal, sun,
                                   skyIrradiance) *
-           SunVisibility(point);
+           SunVisibility(point, sun);
 }
 
 // Sun disc radiance towards `dir`, before the atmosphere. Normalised so the disc delivers

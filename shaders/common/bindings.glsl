@@ -11,6 +11,7 @@ const int BLOCK_ATMOSPHERE = 1;  // AtmosphereBlock: the model's parameters (atm
 const int BLOCK_TERRAIN = 2;     // TerrainBlock: the height field's shape and the terrain's look (terrain/terrain_block.glsl)
 const int BLOCK_GRID = 3;        // GridBlock: the projected grid of the pass that draws (terrain/grid.glsl)
 const int BLOCK_OCEAN = 4;       // OceanBlock: the sea's parameters (ocean/ocean_block.glsl)
+const int BLOCK_CLOUDS = 5;      // CloudBlock: the cloud layer (clouds/cloud_block.glsl)
 
 // Shader storage buffers (std430).
 const int BUFFER_PROBE_INPUT = 0;   // the compute probes' inputs and outputs (tests and sky-probe)
@@ -34,3 +35,5 @@ const int UNIT_SURFACE_DISTANCE = 12;       // R32F distance along the view ray 
 const int UNIT_SEABED_RADIANCE = 13;        // copy of the surface radiance before the sea is drawn over it
 const int UNIT_SEABED_DEPTH = 14;           // copy of the G-buffer depth before the sea
 const int UNIT_HDR_RADIANCE = 15;           // RGBA16F radiance arriving at the camera (tone mapping reads it)
+const int UNIT_CLOUD_VOLUME = 16;           // R16F tiling 3D density (noise/cloud_volume.h), GL_REPEAT
+const int UNIT_WEATHER_MAP = 17;            // cube map: coverage, cloud type (noise/weather_map.h)

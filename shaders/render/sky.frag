@@ -6,10 +6,12 @@
 //   no surface   L = S(camera, space) + T * sun disc                (Sperlhofer Eq. 2-16; Elek §4.2.2)
 //   under water  L = T_w(d) R_G + (1 - T_w(d)) L_deep               (ocean/water.glsl)
 //
-// This is the one place where aerial perspective is computed, and the place where the
-// clouds' march (Michelic Eq. 17-20) will walk the same ray.
+// In air the ray is walked by the unified march of clouds and atmosphere (clouds/
+// cloud_march.glsl, Michelic Eq. 15-20): without clouds it is one atmosphere lookup, T R_G + S.
+// This is the one place where aerial perspective is computed.
 #include "common/frame_uniforms.glsl"
 #include "atmosphere/interface.glsl"
+#include "clouds/cloud_march.glsl"
 #include "ocean/water.glsl"
 
 in vec2 vNdc;
@@ -31,17 +33,12 @@ vec3 throughWater(vec3 surface, float distance) {
     return transmittance * surface + (1.0 - transmittance) * deepWaterRadiance(light);
 }
 
-// In air: aerial perspective to the surface point, or the sky and the sun's disc.
+// In air: clouds and aerial perspective to the surface point, or to space and the sun's disc.
 vec3 throughAir(vec3 dir, vec3 surface, float distance) {
-    vec3 camera = cameraFromPlanetCentreKm();
     vec3 sun = frame.sunDirection;
-    vec3 transmittance;
-    if (distance <= 0.0) {
-        vec3 sky = SkyRadiance(camera, dir, sun, transmittance);
-        return sky + transmittance * SunDiscRadiance(dir, sun);
-    }
-    vec3 inscatter = SkyRadianceToPoint(camera, dir, distance / M_PER_KM, sun, transmittance);
-    return transmittance * surface + inscatter;
+    ViewMarch m = MarchView(cameraFromPlanetCentreKm(), dir, distance / M_PER_KM, sun, clouds.maxSteps);
+    if (distance <= 0.0) return m.inscatter + m.transmittance * SunDiscRadiance(dir, sun);
+    return m.transmittance * surface + m.inscatter;
 }
 
 void main() {

@@ -30,6 +30,7 @@
 #include "atmosphere/precompute_gpu.h"
 #include "atmosphere/reference_tables.h"
 #include "atmosphere/uniforms.h"
+#include "clouds/cloud_block.h"
 #include "render/bindings.h"
 #include "gl/context.h"
 #include "gl/debug.h"
@@ -185,6 +186,9 @@ std::vector<ProbeResult> probeOnGpu(const std::vector<ProbeRow>& rows, const Ses
     glNamedBufferStorage(resultBuffer.id(), static_cast<GLsizeiptr>(resultCount * sizeof(glm::vec4)), nullptr, 0);
     const AtmosphereUniforms u = makeAtmosphereUniforms(params);
     glNamedBufferStorage(uniformBuffer.id(), sizeof u, &u, 0);
+    const clouds::CloudBlock clearSky{};  // enabled 0
+    gl::Buffer noClouds;
+    glNamedBufferStorage(noClouds.id(), sizeof clearSky, &clearSky, 0);
     rayBuffer.label("sky probe rays");
     resultBuffer.label("sky probe results");
     uniformBuffer.label("sky probe atmosphere parameters");
@@ -193,6 +197,7 @@ std::vector<ProbeResult> probeOnGpu(const std::vector<ProbeRow>& rows, const Ses
         gl::DebugGroup group("sky probe");
         glUseProgram(program.id());
         glBindBufferBase(GL_UNIFORM_BUFFER, binding::BLOCK_ATMOSPHERE, uniformBuffer.id());
+        glBindBufferBase(GL_UNIFORM_BUFFER, binding::BLOCK_CLOUDS, noClouds.id());  // the clear sky
         glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding::BUFFER_PROBE_INPUT, rayBuffer.id());
         glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding::BUFFER_PROBE_OUTPUT, resultBuffer.id());
         glBindTextureUnit(binding::UNIT_TRANSMITTANCE, tables.transmittance.id());

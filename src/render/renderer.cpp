@@ -177,6 +177,8 @@ void Renderer::prepare(const Scene& scene, const Camera& camera, glm::ivec2 size
     glNamedBufferSubData(frameUniforms_.id(), 0, sizeof uniforms, &uniforms);
     glBindBufferBase(GL_UNIFORM_BUFFER, binding::BLOCK_FRAME, frameUniforms_.id());
     atmosphere_.bind();
+    report.cloudsUpdated = clouds_.update(scene, camera);
+    clouds_.bind();
     terrain_.prepare(scene, camera);
     if (scene.terrain.ocean) ocean_.prepare(scene, camera);
     lastPrepare_ = report;

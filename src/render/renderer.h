@@ -40,6 +40,7 @@
 #include <vector>
 
 #include "atmosphere/atmosphere.h"
+#include "clouds/cloud_resources.h"
 #include "gl/handle.h"
 #include "gl/program.h"
 #include "ocean/ocean_pass.h"
@@ -74,6 +75,7 @@ struct PrepareReport {
     bool atmosphereTablesMade = false;   // loaded or computed at once (first use)
     bool atmosphereRebuildStep = false;  // one chunk of a rebuild ran
     bool continentsUpdated = false;      // the continents map was loaded or baked, and uploaded
+    bool cloudsUpdated = false;          // the cloud volume or weather map was made and uploaded
     bool historyValid = false;           // the previous frame may be reprojected
 };
 
@@ -122,6 +124,7 @@ private:
     gl::ShaderSources sources_;
     atmosphere::Atmosphere atmosphere_;
     std::shared_ptr<terrain::Continents> continents_;
+    clouds::CloudResources clouds_;
     TerrainPass terrain_;
     FullscreenPass surfaceLight_;
     OceanPass ocean_;

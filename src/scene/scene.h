@@ -16,6 +16,7 @@
 #include <glm/glm.hpp>
 
 #include "atmosphere/atmosphere_params.h"
+#include "clouds/cloud_params.h"
 #include "ocean/ocean_params.h"
 #include "ocean/wave_spectrum.h"
 #include "ocean/waves.h"
@@ -47,6 +48,7 @@ struct Scene {
     PlanetParams planet;
     AtmosphereParams atmosphere;  // bottom radius is planet.radius_km
     TerrainParams terrain;
+    CloudParams clouds;           // the cloud layer
     OceanParams ocean;            // drawn when terrain.ocean is on
     // The waves the ocean draws: generated from `ocean` (ocean/wave_spectrum.h), or read
     // from the preset's [[ocean.wave]] list, or edited one by one in the explorer.

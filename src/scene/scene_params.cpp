@@ -7,6 +7,7 @@
 #include <variant>
 
 #include "atmosphere/atmosphere_params_table.h"
+#include "clouds/cloud_params_table.h"
 #include "ocean/ocean_params_table.h"
 #include "terrain/terrain_params_table.h"
 #include "scene/toml_error.h"
@@ -36,6 +37,7 @@ std::vector<ParamSpec> buildTable() {
     addAtmosphereParams(t);
     addTerrainParams(t);
     addOceanParams(t);
+    addCloudParams(t);
     add("sun", "latitude_deg", "deg", -90.0, 90.0, "Latitude of the subsolar point.",
         [](Scene& s) { return ParamRef{&s.sun.latitude_deg}; });
     add("sun", "longitude_deg", "deg", -180.0, 180.0, "Longitude of the subsolar point.",
@@ -109,6 +111,17 @@ std::vector<SceneProblem> validateScene(const Scene& scene) {
         problems.push_back({"ocean.fade_end", ocean});
     if (const std::string waves = ocean::validateWaves(scene.waves); !waves.empty())
         problems.push_back({"ocean.wave", waves});
+    const CloudParams& c = scene.clouds;
+    if (!(c.top_altitude_km > c.bottom_altitude_km))
+        problems.push_back({"clouds.top_altitude_km", "top of the cloud layer " + formatNumber(c.top_altitude_km) +
+                                                          " km must be above clouds.bottom_altitude_km " +
+                                                          formatNumber(c.bottom_altitude_km) + " km"});
+    else if (c.enabled && !(scene.planet.radius_km + c.top_altitude_km < a.top_radius_km))
+        problems.push_back({"clouds.top_altitude_km", "top of the cloud layer " + formatNumber(c.top_altitude_km) +
+                                                          " km must lie inside the atmosphere (atmosphere.top_radius_km - "
+                                                          "planet.radius_km = " +
+                                                          formatNumber(a.top_radius_km - scene.planet.radius_km) +
+                                                          " km)"});
     return problems;
 }
 

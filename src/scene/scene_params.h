@@ -33,7 +33,7 @@ struct ParamSpec {
 };
 
 // Every parameter of a Scene, grouped by section in a stable order
-// (planet, atmosphere, terrain, ocean, sun, render).
+// (planet, atmosphere, terrain, ocean, clouds, sun, render).
 const std::vector<ParamSpec>& sceneParams();
 
 // One reason a scene is not valid, blamed on one parameter.
@@ -50,7 +50,9 @@ struct SceneProblem {
 //     component, since extinction = scattering + absorption;
 //   - terrain.grid_exponent is 2 or 4;
 //   - ocean.fade_end > ocean.fade_start (Michelic Eq. 11);
-//   - every wave of Scene::waves passes ocean::validateWaves (blamed on "ocean.wave").
+//   - every wave of Scene::waves passes ocean::validateWaves (blamed on "ocean.wave");
+//   - clouds.top_altitude_km > clouds.bottom_altitude_km, and, with clouds on, the layer inside
+//     the atmosphere.
 // Empty when the scene is valid: then presetToToml(scene) loads back.
 std::vector<SceneProblem> validateScene(const Scene& scene);
 

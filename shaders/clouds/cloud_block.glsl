@@ -1,0 +1,33 @@
+// The cloud layer's parameters and baked textures as every pass sees them; mirror of
+// src/clouds/cloud_block.h (std140). Lengths in km, coefficients per km at density 1.
+#include "common/bindings.glsl"
+
+layout(std140, binding = BLOCK_CLOUDS) uniform CloudBlock {
+    vec3 cameraTileOffset;      // (camera + wind drift) modulo the tile, km, formed in double (Eq. 12)
+    float tileWidth;            // w of Michelic Eq. 12, km
+    vec3 cameraFromCentre;      // the camera from the planet centre, km (the same as the frame's)
+    float bottomRadius;         // l_b, km from the planet centre
+    float topRadius;            // l_t
+    float coverage;             // [0, 1], times the weather map's
+    float densityScale;
+    float extinction;           // E
+    float scattering;           // S
+    float phaseGForward;
+    float phaseGBack;
+    float phaseBackWeight;
+    float sunStep;              // km between the samples towards the sun
+    float stepKm;               // march step inside clouds
+    float largeStepKm;          // step through empty space: at most the volume's zero-density border
+    float powder;               // 0: off
+    int sunSamples;
+    int maxSteps;
+    int atmosphereSlices;       // per crossing of the layer (Eq. 17-18)
+    int multipleScatteringOctaves;  // 1: single scattering
+    int energyConservingStep;   // 1: Hillaire's step, 0: Eq. 16 as written
+    int constantDensity;        // 1: uniform density densityScale in the layer
+    int enabled;                // 0: no clouds (the march is the clear sky's)
+    int padding0;
+} clouds;
+
+layout(binding = UNIT_CLOUD_VOLUME) uniform sampler3D cloudVolume;   // tiling density, < 0: empty (border)
+layout(binding = UNIT_WEATHER_MAP) uniform samplerCube weatherMap;   // r: coverage, g: cloud type

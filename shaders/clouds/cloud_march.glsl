@@ -1,0 +1,140 @@
+// The unified march of clouds and atmosphere along a view ray (Michelic §5, Eq. 15-20):
+// the one function that decides what lies between a viewpoint and a surface point, or
+// space. Include after atmosphere/interface.glsl.
+//
+// Outside the cloud layer a slice of the ray is one atmosphere lookup (T_A, I_A); each
+// crossing of the layer (a ray crosses it at most twice: fig. 12) is cut into
+// clouds.atmosphereSlices slices, and in each the clouds are marched in small steps (large
+// ones where the volume says there is no cloud near, fig. 9) for T_C and I_C (Eq. 15-16);
+// slices are combined front to back by Eq. 19-20, so air in front of a cloud reddens and
+// veils it and a cloud hides the air behind it. Without clouds (clouds.enabled 0) it is the
+// clear-sky lookup, exactly.
+//
+// Light at a cloud sample: the sun's irradiance through the atmosphere to that point (red
+// at sunset, none at night) times the clouds' transmittance towards the sun
+// (clouds.sunSamples samples, Michelic's T_sun) times the phase function, plus the sky's
+// irradiance at the sample's altitude from the upper hemisphere (radiance E / (2 pi) per
+// unit scattering: an isotropic phase over the half sphere the sky fills). Options:
+// Wrenninge's multiple-scattering octaves (octave i: a^i of the light, phase g c^i,
+// optical depth to the sun b^i, a = b = c = 1/2) and the "powder" darkening of sunlit edges;
+// with both off the march is Eq. 15-16 (with energyConservingStep 0, Eq. 16 as written).
+
+struct CloudSegmentResult {
+    vec3 transmittance;
+    vec3 inscatter;
+    int steps;      // small steps taken (in or near clouds)
+    int skipped;    // large steps taken through empty space
+};
+
+// Radiance scattered towards the viewer per unit scattering coefficient at a cloud sample.
+vec3 CloudSource(vec3 point, vec3 sun, float cosTheta, float density) {
+    AtmosphereParameters atmosphere = atmosphereParameters();
+    float r = length(point);
+    float muS = dot(point, sun) / r;
+    vec3 sunlight = atmosphere.solar_irradiance * GetTransmittanceToSun(atmosphere, transmittance_texture, r, muS);
+    float opticalDepth = CloudDensityPathToSun(point, sun, float(clouds.sunSamples) * clouds.sunStep);  // density x km
+    vec3 light = vec3(0.0);
+    float a = 1.0;
+    float b = 1.0;
+    float c = 1.0;
+    for (int octave = 0; octave < clouds.multipleScatteringOctaves; ++octave) {
+        float phase = CloudPhase(clouds.phaseGForward * c, clouds.phaseGBack * c, clouds.phaseBackWeight, cosTheta);
+        light += a * phase * exp(-clouds.extinction * b * opticalDepth) * sunlight;
+        a *= 0.5;
+        b *= 0.5;
+        c *= 0.5;
+    }
+    // Schneider's powder: sunlit edges, where little cloud lies towards the sun, look darker.
+    light *= mix(1.0, 1.0 - exp(-2.0 * clouds.extinction * (opticalDepth + density * clouds.stepKm)), clouds.powder);
+    vec3 sky = GetIrradiance(atmosphere, irradiance_texture, r, muS) * NightFade(atmosphere, muS);
+    return light + sky / (2.0 * PI);
+}
+
+// Eq. 15-16 from `start` to `end` km along `dir` from `origin` (km from the planet centre),
+// at most `budget` small steps.
+CloudSegmentResult MarchCloudSegment(vec3 origin, vec3 dir, float start, float end, vec3 sun, int budget) {
+    CloudSegmentResult result;
+    result.transmittance = vec3(1.0);
+    result.inscatter = vec3(0.0);
+    result.steps = 0;
+    result.skipped = 0;
+    float cosTheta = dot(dir, sun);
+    // The step grows where the budget could not cross the segment at clouds.stepKm.
+    float step = max(clouds.stepKm, (end - start) / float(max(budget, 1)));
+    float t = start;
+    for (int i = 0; i < 4 * clouds.maxSteps && t < end; ++i) {
+        vec3 point = origin + dir * t;
+        float density = CloudDensity(point);
+        if (density < 0.0) {  // no cloud within the zero-density border: one large step
+            t += max(clouds.largeStepKm, step);
+            result.skipped += 1;
+            continue;
+        }
+        float dt = min(step, end - t);
+        if (density > 0.0) {
+            vec3 source = CloudSource(point + dir * (0.5 * dt), sun, cosTheta, density);
+            CloudMarchStep(density, dt, clouds.extinction, clouds.scattering, source, clouds.energyConservingStep != 0,
+                           result.transmittance, result.inscatter);
+        }
+        t += dt;
+        result.steps += 1;
+        if (result.steps >= budget || max(result.transmittance.x, max(result.transmittance.y, result.transmittance.z)) < 1e-4)
+            break;
+    }
+    return result;
+}
+
+struct ViewMarch {
+    vec3 transmittance;  // from the viewpoint to the end of the ray
+    vec3 inscatter;      // light added on the way (air and clouds)
+    int steps;
+    int skipped;
+};
+
+// Everything between `origin` (km from the planet centre) and the point `distance` km along
+// `dir`, or space when `distance` <= 0 (then the sky behind is in `inscatter`, and
+// `transmittance` is that of the whole ray, for the sun disc). `stepBudget` bounds the
+// cloud steps (the sea's reflection takes fewer).
+ViewMarch MarchView(vec3 origin, vec3 dir, float distance, vec3 sun, int stepBudget) {
+    ViewMarch m;
+    m.transmittance = vec3(1.0);
+    m.inscatter = vec3(0.0);
+    m.steps = 0;
+    m.skipped = 0;
+    bool toSpace = distance <= 0.0;
+    vec2 crossings[2];
+    int count = 0;
+    if (clouds.enabled != 0) {
+        float r = length(origin);
+        count = CloudLayerIntervals(r, dot(origin, dir) / r, toSpace ? 1.0e9 : distance, clouds.bottomRadius,
+                                    clouds.topRadius, crossings[0], crossings[1]);
+    }
+    float t = 0.0;
+    for (int k = 0; k < count; ++k) {
+        vec2 crossing = crossings[k];
+        if (crossing.x > t) {  // air up to the layer: one slice, T_C = 1, I_C = 0 (Eq. 17-18)
+            vec3 sliceTransmittance;
+            vec3 slice = SkyRadianceToPoint(origin + dir * t, dir, crossing.x - t, sun, sliceTransmittance);
+            CombineSlice(sliceTransmittance, slice, vec3(1.0), vec3(0.0), m.transmittance, m.inscatter);
+        }
+        int slices = max(clouds.atmosphereSlices, 1);
+        float width = (crossing.y - crossing.x) / float(slices);
+        int budget = max(stepBudget / (slices * count), 1);
+        for (int s = 0; s < slices; ++s) {  // inside the layer: slices of air with clouds in them (Eq. 19-20)
+            float a = crossing.x + float(s) * width;
+            vec3 sliceTransmittance;
+            vec3 slice = SkyRadianceToPoint(origin + dir * a, dir, width, sun, sliceTransmittance);
+            CloudSegmentResult c = MarchCloudSegment(origin, dir, a, a + width, sun, budget);
+            CombineSlice(sliceTransmittance, slice, c.transmittance, c.inscatter, m.transmittance, m.inscatter);
+            m.steps += c.steps;
+            m.skipped += c.skipped;
+        }
+        t = crossing.y;
+    }
+    // The rest: air to the surface point, or the sky beyond.
+    vec3 restTransmittance;
+    vec3 rest = toSpace ? SkyRadiance(origin + dir * t, dir, sun, restTransmittance)
+                        : SkyRadianceToPoint(origin + dir * t, dir, max(distance - t, 0.0), sun, restTransmittance);
+    CombineSlice(restTransmittance, rest, vec3(1.0), vec3(0.0), m.transmittance, m.inscatter);
+    return m;
+}

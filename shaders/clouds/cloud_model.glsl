@@ -1,0 +1,153 @@
+// The cloud layer's model, shared by GLSL and C++ (src/clouds/cloud_model.h compiles this
+// text in double, as the atmosphere's model is): geometry of the layer, Michelic's height
+// signal and density (Eq. 12-14), the phase function, and one march step of Beer-Lambert
+// transmittance and in-scattering (Eq. 15-16). Lengths in km, positions from the planet
+// centre; extinction and scattering per km at density 1. Written in the subset of GLSL
+// that is also C++: Number/Length/vec3 names, single-component access, IN/OUT macros.
+//
+// Michelic §5: "We define a cloud layer with a top and bottom radius and tile the cloud
+// texture in world space across the planet"; values of the texture < 0 mean "no cloud
+// within the zero-density border", so a march may take a large step there (fig. 9).
+
+#ifndef IN
+#define IN(x) const in x
+#endif
+#ifndef OUT
+#define OUT(x) out x
+#endif
+#ifndef INOUT
+#define INOUT(x) inout x
+#endif
+
+const Number CLOUD_PI = 3.14159265358979323846;
+
+// Michelic Eq. 13: 1 in the middle of the layer, 0 at its bottom (l_b) and top (l_t).
+Number CloudHeightSignal(Length r, Length bottom_radius, Length top_radius) {
+    Number x = 2.0 * clamp(r - bottom_radius, Length(0.0), top_radius - bottom_radius) / (top_radius - bottom_radius) -
+               1.0;
+    return 1.0 - x * x;
+}
+
+// Michelic Eq. 14: the density of a texture value at height signal h; -1 (no cloud, a
+// large step is safe) where the texture says so.
+Number CloudDensityFromTexture(Number texture_value, Number height_signal) {
+    return texture_value < 0.0 ? Number(-1.0) : height_signal * texture_value;
+}
+
+// Coverage applied to a texture value in [0, 1]: the value's top `coverage` fraction is
+// kept and stretched back to [0, 1] (Schneider's remap), so coverage 0 leaves no cloud and
+// coverage 1 the texture as baked. Negative values (empty space) pass through.
+Number CloudCoverageRemap(Number texture_value, Number coverage) {
+    if (texture_value < 0.0) return texture_value;
+    if (coverage <= 0.0) return Number(0.0);
+    return clamp((texture_value - (1.0 - coverage)) / coverage, Number(0.0), Number(1.0));
+}
+
+// Henyey-Greenstein phase function, per steradian, for the cosine between the light's
+// direction of travel and the direction towards the viewer (1 = straight through).
+Number HenyeyGreenstein(Number g, Number cos_theta) {
+    Number denominator = 1.0 + g * g - 2.0 * g * cos_theta;
+    return (1.0 - g * g) / (4.0 * CLOUD_PI * denominator * sqrt(denominator));
+}
+
+// A forward lobe and a back lobe, mixed (back_weight 0: one lobe, Michelic's HG).
+Number CloudPhase(Number g_forward, Number g_back, Number back_weight, Number cos_theta) {
+    return (1.0 - back_weight) * HenyeyGreenstein(g_forward, cos_theta) +
+           back_weight * HenyeyGreenstein(g_back, cos_theta);
+}
+
+// Where a ray from `origin` (|origin| = r, mu = cosine of its zenith angle) crosses the
+// sphere of radius `radius`: the nearer (sign -1) or farther (sign +1) root, or -1 when it
+// does not. Discriminant written as (r mu)^2 - (r - R)(r + R) (Sperlhofer 5.1) for grazing rays.
+Length CloudRaySphere(Length r, Number mu, Length radius, Number root_sign) {
+    Length rmu = r * mu;
+    Length discriminant = rmu * rmu - (r - radius) * (r + radius);
+    if (discriminant < 0.0) return Length(-1.0);
+    return -rmu + root_sign * sqrt(discriminant);
+}
+
+// The parts of the ray [0, max_distance] inside the shell bottom_radius <= |p| <= top_radius:
+// up to two intervals, returned in order; the count is the return value. A ray from
+// inside the shell starts at 0; one that dips below the bottom sphere leaves the shell there
+// and may come back; one that grazes the top may cross only the top part.
+int CloudLayerIntervals(Length r, Number mu, Length max_distance, Length bottom_radius, Length top_radius,
+                        OUT(vec2) first, OUT(vec2) second) {
+    first = vec2(0.0, 0.0);
+    second = vec2(0.0, 0.0);
+    // The ray's parameters where it is inside the top sphere: [top_in, top_out].
+    Length top_in = 0.0;
+    Length top_out = 0.0;
+    if (r > top_radius) {
+        top_in = CloudRaySphere(r, mu, top_radius, -1.0);
+        if (top_in < 0.0 || mu >= 0.0) return 0;  // misses the layer, or goes away from it
+        top_out = CloudRaySphere(r, mu, top_radius, 1.0);
+    } else {
+        top_out = CloudRaySphere(r, mu, top_radius, 1.0);
+    }
+    // Where it is inside the bottom sphere (the hole of the shell): [bottom_in, bottom_out].
+    Length bottom_in = -1.0;
+    Length bottom_out = -1.0;
+    if (r < bottom_radius) {
+        bottom_in = 0.0;
+        bottom_out = CloudRaySphere(r, mu, bottom_radius, 1.0);
+    } else {
+        Length t = CloudRaySphere(r, mu, bottom_radius, -1.0);
+        if (t >= 0.0 && mu < 0.0) {
+            bottom_in = t;
+            bottom_out = CloudRaySphere(r, mu, bottom_radius, 1.0);
+        }
+    }
+    int count = 0;
+    Length a = top_in;
+    Length b = top_out;
+    if (bottom_in >= 0.0 && bottom_out > a) {
+        // [a, bottom_in] and [bottom_out, b]
+        if (bottom_in > a) {
+            first = vec2(a, min(bottom_in, max_distance));
+            count = 1;
+        }
+        a = max(a, bottom_out);
+    }
+    if (b > a && a < max_distance) {
+        vec2 part = vec2(a, min(b, max_distance));
+        if (count == 0) {
+            first = part;
+        } else {
+            second = part;
+        }
+        count = count + 1;
+    }
+    if (count >= 1 && first.x >= max_distance) count = 0;
+    return count;
+}
+
+// One march step of length `step` (km) through density `density` (>= 0), lit by `source`
+// (the radiance scattered towards the viewer per unit scattering coefficient: phase times
+// the light arriving, plus the ambient term), updating the transmittance since the segment
+// began (Eq. 15) and the in-scattered light (Eq. 16).
+//   energy_conserving: the step's in-scattering integrated over its own extinction,
+//     S src (1 - exp(-E d step)) / (E d) (Hillaire 2016), so the result does not depend on
+//     the step size for a constant source;
+//   otherwise Michelic's sum as written: S src step d T_n, with T_n after the step.
+void CloudMarchStep(Number density, Length step, Number extinction, Number scattering, IN(vec3) source,
+                    bool energy_conserving, INOUT(vec3) transmittance, INOUT(vec3) inscatter) {
+    Number optical = extinction * density * step;
+    Number step_transmittance = exp(-optical);
+    if (energy_conserving) {
+        Number integral = optical > 1e-7 ? (1.0 - step_transmittance) / (extinction * density)
+                                         : step * (1.0 - 0.5 * optical);  // the same, for a thin step
+        inscatter = inscatter + transmittance * (scattering * density * integral) * source;
+        transmittance = transmittance * step_transmittance;
+    } else {
+        transmittance = transmittance * step_transmittance;                     // Eq. 15
+        inscatter = inscatter + transmittance * (scattering * step * density) * source;  // Eq. 16
+    }
+}
+
+// Michelic Eq. 19-20: a slice of the view ray with atmosphere transmittance T_A and
+// in-scattering I_A, and clouds T_C, I_C, added to the totals so far (T, I).
+void CombineSlice(IN(vec3) atmosphere_transmittance, IN(vec3) atmosphere_inscatter, IN(vec3) cloud_transmittance,
+                  IN(vec3) cloud_inscatter, INOUT(vec3) transmittance, INOUT(vec3) inscatter) {
+    inscatter = inscatter + (atmosphere_inscatter * cloud_transmittance + cloud_inscatter) * transmittance;  // Eq. 20
+    transmittance = transmittance * atmosphere_transmittance * cloud_transmittance;                     // Eq. 19
+}

@@ -1,0 +1,54 @@
+// CloudBlock: the cloud layer as the shaders read it (BLOCK_CLOUDS), C++ mirror of
+// shaders/clouds/cloud_block.glsl (std140, offsets static_asserted), formed in double.
+#pragma once
+
+#include <cstddef>
+
+#include <glm/glm.hpp>
+
+#include "scene/camera.h"
+#include "scene/scene.h"
+
+namespace planet::clouds {
+
+struct CloudBlock {
+    glm::vec3 cameraTileOffset;
+    float tileWidth;
+    glm::vec3 cameraFromCentre;
+    float bottomRadius;
+    float topRadius;
+    float coverage;
+    float densityScale;
+    float extinction;
+    float scattering;
+    float phaseGForward;
+    float phaseGBack;
+    float phaseBackWeight;
+    float sunStep;
+    float stepKm;
+    float largeStepKm;
+    float powder;
+    int sunSamples;
+    int maxSteps;
+    int atmosphereSlices;
+    int multipleScatteringOctaves;
+    int energyConservingStep;
+    int constantDensity;
+    int enabled;
+    int padding0 = 0;
+};
+static_assert(offsetof(CloudBlock, cameraFromCentre) == 16 && offsetof(CloudBlock, bottomRadius) == 28 &&
+                  offsetof(CloudBlock, sunSamples) == 80 && offsetof(CloudBlock, enabled) == 104 &&
+                  sizeof(CloudBlock) == 112,
+              "CloudBlock must match std140 (shaders/clouds/cloud_block.glsl)");
+
+// The drift of the clouds after `time_s` seconds of wind: a world-space translation, km,
+// along the wind's bearing at the ocean's wind point (a fixed place, so that the drift does
+// not change as the camera moves).
+glm::dvec3 windDriftKm(const Scene& scene);
+
+// The block for a scene seen from a camera. `largeStepKm` is the step the volume's
+// zero-density border allows (cloud_resources.h); `enabled` false gives the clear sky.
+CloudBlock makeCloudBlock(const Scene& scene, const Camera& camera, double largeStepKm);
+
+}  // namespace planet::clouds

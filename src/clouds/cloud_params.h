@@ -1,0 +1,38 @@
+// Cloud parameters as a user sets them (preset [clouds] section).
+//
+// One layer of clouds between two altitudes (Michelic §5, fig. 10): a baked, tiling
+// density volume repeated every tile_width_km across the planet (Eq. 12), faded to zero
+// at the layer's bottom and top by Eq. 13's height signal, thinned by the coverage
+// (Eq. 14 and a coverage remap), lit by the sun through the atmosphere and by the sky,
+// and marched together with the atmosphere along every view ray (Eq. 15-20).
+// constant_density replaces the noise by a layer of uniform density for analytic checks.
+#pragma once
+
+namespace planet {
+
+struct CloudParams {
+    bool enabled = false;                  // draw the cloud layer
+    double bottom_altitude_km = 1.5;       // bottom of the layer above the planet radius, km, [0, 100]
+    double top_altitude_km = 4.0;          // top of the layer, km, [0.01, 200], > bottom
+    double tile_width_km = 16.0;           // w of Michelic Eq. 12: the density volume repeats every w, km, [0.1, 1000]
+    double coverage = 0.5;                 // share of the sky covered, [0, 1] (0: clear)
+    double density_scale = 1.0;            // multiplies the volume's density, [0, 100]
+    double extinction_per_km = 40.0;       // E of Eq. 15 at density 1, 1/km, [0, 10000]
+    double single_scattering_albedo = 0.99;  // S / E of Eq. 16, [0, 1]
+    double phase_g_forward = 0.6;          // Henyey-Greenstein asymmetry of the forward lobe, [-0.99, 0.99]
+    double phase_g_back = -0.3;            // of the back lobe, [-0.99, 0.99]
+    double phase_back_weight = 0.0;        // weight of the back lobe, [0, 1]; 0: Michelic's single HG
+    int sun_samples = 6;                   // density samples towards the sun for T_sun (Michelic: 6), [0, 64]
+    double sun_step_km = 0.2;              // spacing of those samples, km, [0.001, 100]
+    double step_km = 0.1;                  // march step inside clouds, km, [0.001, 100]
+    int max_steps = 256;                   // cloud steps per pixel at most, [1, 8192]
+    int atmosphere_slices = 4;             // atmosphere slices per crossing of the layer (Eq. 17-18), [1, 64]
+    int multiple_scattering_octaves = 1;   // Wrenninge's octaves; 1: single scattering only, [1, 8]
+    double powder = 0.0;                   // strength of the dark-edge "powder" term, [0, 1]; 0: off
+    bool energy_conserving_step = true;    // integrate each step's in-scattering over its extinction (Hillaire 2016)
+    bool constant_density = false;         // a layer of uniform density density_scale instead of the noise
+    double wind_speed_mps = 10.0;          // the clouds drift with the scene's clock, m/s, [0, 200]
+    double wind_bearing_deg = 90.0;        // towards which they drift, clockwise from north, [-360, 360]
+};
+
+}  // namespace planet
