@@ -93,9 +93,10 @@ struct ViewMarch {
 
 // Everything between `origin` (km from the planet centre) and the point `distance` km along
 // `dir`, or space when `distance` <= 0 (then the sky behind is in `inscatter`, and
-// `transmittance` is that of the whole ray, for the sun disc). `stepBudget` bounds the
-// cloud steps (the sea's reflection takes fewer).
-ViewMarch MarchView(vec3 origin, vec3 dir, float distance, vec3 sun, int stepBudget) {
+// `transmittance` is that of the whole ray, for the sun disc). `slicesPerCrossing` atmosphere
+// slices per crossing of the layer and `stepBudget` cloud steps at most: the sky pass gives
+// the preset's, the sea's reflection fewer.
+ViewMarch MarchView(vec3 origin, vec3 dir, float distance, vec3 sun, int slicesPerCrossing, int stepBudget) {
     ViewMarch m;
     m.transmittance = vec3(1.0);
     m.inscatter = vec3(0.0);
@@ -117,7 +118,7 @@ ViewMarch MarchView(vec3 origin, vec3 dir, float distance, vec3 sun, int stepBud
             vec3 slice = SkyRadianceToPoint(origin + dir * t, dir, crossing.x - t, sun, sliceTransmittance);
             CombineSlice(sliceTransmittance, slice, vec3(1.0), vec3(0.0), m.transmittance, m.inscatter);
         }
-        int slices = max(clouds.atmosphereSlices, 1);
+        int slices = max(slicesPerCrossing, 1);
         float width = (crossing.y - crossing.x) / float(slices);
         int budget = max(stepBudget / (slices * count), 1);
         for (int s = 0; s < slices; ++s) {  // inside the layer: slices of air with clouds in them (Eq. 19-20)

@@ -3,7 +3,9 @@
 // distance targets, drawn over the sea floor's own surface radiance (Michelic §6: "shading
 // accounts for the underwater terrain and atmosphere reflections"):
 //   - Fresnel reflection (Schlick, F0 = 0.02 for water; Elek Eq. 18 is a cruder fit of
-//     the same curve) of the sky along the reflected ray (atmosphere/interface.glsl);
+//     the same curve) of the sky and the clouds along the reflected ray: the sky pass's own
+//     march (clouds/cloud_march.glsl) with one atmosphere slice per crossing of the layer
+//     and an eighth of its cloud steps, so the clouds show in the sea, a little coarser;
 //   - sun glitter: the sun's irradiance at the surface (Elek Eq. 17, with the sun's
 //     visibility) times a Gaussian slope distribution whose variance is the slopes of the
 //     waves too small for the pixel plus the ripples finer than any wave (Cox & Munk 1954;
@@ -26,6 +28,7 @@
 // below the surface. Near the camera the sag is far below a millimetre and nothing changes.
 #include "common/frame_uniforms.glsl"
 #include "atmosphere/interface.glsl"
+#include "clouds/cloud_march.glsl"
 #include "terrain/grid.glsl"
 #include "ocean/ocean_block.glsl"
 #include "ocean/gerstner.glsl"
@@ -108,8 +111,8 @@ void main() {
 
     vec3 reflected = reflect(view, normal);
     reflected = normalize(reflected + up * max(0.0, 0.01 - dot(reflected, up)));  // keep it above the horizon
-    vec3 skyTransmittance;
-    vec3 sky = SkyRadiance(point, reflected, sun, skyTransmittance);
+    ViewMarch reflection = MarchView(point, reflected, 0.0, sun, 1, max(clouds.maxSteps / 8, 1));
+    vec3 sky = reflection.inscatter;
     vec3 skyIrradiance;
     vec3 sunIrradiance = SunAndSkyIrradiance(point, up, sun, skyIrradiance);
     // The sun's irradiance on a surface facing it: through the atmosphere, not yet weighted by a normal.

@@ -36,7 +36,8 @@ vec3 throughWater(vec3 surface, float distance) {
 // In air: clouds and aerial perspective to the surface point, or to space and the sun's disc.
 vec3 throughAir(vec3 dir, vec3 surface, float distance) {
     vec3 sun = frame.sunDirection;
-    ViewMarch m = MarchView(cameraFromPlanetCentreKm(), dir, distance / M_PER_KM, sun, clouds.maxSteps);
+    ViewMarch m = MarchView(cameraFromPlanetCentreKm(), dir, distance / M_PER_KM, sun, clouds.atmosphereSlices,
+                            clouds.maxSteps);
     if (distance <= 0.0) return m.inscatter + m.transmittance * SunDiscRadiance(dir, sun);
     return m.transmittance * surface + m.inscatter;
 }

@@ -1,0 +1,28 @@
+// The cloud layer's shared model (shaders/clouds/cloud_model.glsl) compiled as C++ in
+// double, as the atmosphere's model is (src/atmosphere/model.h): the tests check the very
+// functions the GPU runs against worked values, and a CPU march can be built on them.
+#pragma once
+
+#include <cmath>
+
+#include <glm/glm.hpp>
+
+namespace planet::clouds::glsl {
+using Number = double;
+using Length = double;
+using vec2 = glm::dvec2;
+using vec3 = glm::dvec3;
+using glm::clamp;
+using glm::exp;
+using glm::max;
+using glm::min;
+using std::exp;
+using std::sqrt;
+#define IN(x) const x&
+#define OUT(x) x&
+#define INOUT(x) x&
+#include "shaders/clouds/cloud_model.glsl"
+#undef IN
+#undef OUT
+#undef INOUT
+}  // namespace planet::clouds::glsl
