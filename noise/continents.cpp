@@ -8,27 +8,15 @@
 // sort would give.
 #include "noise/continents.h"
 
-#include <ImfChannelList.h>
-#include <ImfFrameBuffer.h>
-#include <ImfHeader.h>
-#include <ImfInputFile.h>
-#include <ImfOutputFile.h>
-#include <ImfStdIO.h>
-#include <ImfStringAttribute.h>
-
 #include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <cmath>
 #include <cstdint>
 #include <cstdlib>
-#include <cstring>
 #include <limits>
-#include <map>
-#include <sstream>
 #include <stdexcept>
 #include <thread>
-#include <unistd.h>
 #include <utility>
 
 #include <glm/glm.hpp>
@@ -57,78 +45,25 @@ void validate(const ContinentParams& p, int faceSize) {
                                     " is outside [0, 1]");
 }
 
-// ------------------------------------------------------------------ EXR
+// ------------------------------------------------------------------ cache entry
 
-constexpr const char* kKeyAttribute = "planetContinentsKey";
-// Texel components x, y, z, w in this order (continents.h).
-constexpr const char* kChannels[4] = {"Y", "dYdx", "dYdy", "dYdz"};
+const CacheFormat kFormat{"continents", "planet continents cube map; see noise/continents.h", "planetContinentsKey",
+                          CachePixel::Float,
+                          // Uncompressed: float noise and its gradient do not compress (ZIP saved 2 % at
+                          // 512) and decompressing tripled the load time the renderer waits for at start-up.
+                          /*compress=*/false};
 constexpr const char* kImageFile = "continents.exr";
 
-// OpenEXR slices over the texels' four floats, for the image's data window origin.
-Imf::FrameBuffer texelSlices(CubeMap& map, Imath::V2i origin) {
-    const std::size_t xs = sizeof(glm::vec4), ys = xs * static_cast<std::size_t>(map.size);
-    Imf::FrameBuffer fb;
-    for (int c = 0; c < 4; ++c) {
-        char* base = reinterpret_cast<char*>(map.texels.data()) + c * sizeof(float) -
-                     (static_cast<std::ptrdiff_t>(origin.x) * static_cast<std::ptrdiff_t>(xs) +
-                      static_cast<std::ptrdiff_t>(origin.y) * static_cast<std::ptrdiff_t>(ys));
-        fb.insert(kChannels[c], Imf::Slice(Imf::FLOAT, base, xs, ys));
-    }
-    return fb;
+// continents.exr over the map's texels: x, y, z, w are the channels Y, dYdx, dYdy, dYdz.
+std::vector<CacheImage> images(CubeMap& map) {
+    static_assert(sizeof(glm::vec4) == 4 * sizeof(float));
+    return {{kImageFile, map.size, 6 * map.size,
+             interleavedChannels(&map.texels.data()->x, {"Y", "dYdx", "dYdy", "dYdz"})}};
 }
 
-std::string encodeExr(const CubeMap& map, const std::string& key) {
-    const int width = map.size, height = 6 * map.size;
-    Imf::Header header(width, height);
-    for (const char* channel : kChannels) header.channels().insert(channel, Imf::Channel(Imf::FLOAT));
-    // Uncompressed: float noise and its gradient do not compress (ZIP saved 2 % at 512) and
-    // decompressing tripled the load time the renderer waits for at start-up.
-    header.compression() = Imf::NO_COMPRESSION;
-    header.insert(kKeyAttribute, Imf::StringAttribute(key));
-    Imf::StdOSStream stream;
-    {
-        Imf::OutputFile file(stream, header);
-        // OpenEXR's Slice takes a non-const base; it only reads through it when writing.
-        file.setFrameBuffer(texelSlices(const_cast<CubeMap&>(map), {0, 0}));
-        file.writePixels(height);
-    }
-    return stream.str();
-}
-
-// Decodes continents.exr into map (size already set); empty string on success, else the reason.
-std::string decodeExr(const std::string& bytes, const std::string& key, CubeMap& map) {
-    try {
-        Imf::StdISStream stream;
-        stream.str(bytes);
-        Imf::InputFile file(stream);
-        const Imf::Header& header = file.header();
-        const auto* k = header.findTypedAttribute<Imf::StringAttribute>(kKeyAttribute);
-        if (!k) return "no " + std::string(kKeyAttribute) + " attribute";
-        if (k->value() != key) return "its header key " + k->value() + " is not " + key;
-        const Imath::Box2i dw = header.dataWindow();
-        const int w = dw.max.x - dw.min.x + 1, h = dw.max.y - dw.min.y + 1;
-        if (w != map.size || h != 6 * map.size)
-            return "size " + std::to_string(w) + "x" + std::to_string(h) + ", expected " + std::to_string(map.size) +
-                   "x" + std::to_string(6 * map.size);
-        for (const char* name : kChannels) {
-            const Imf::Channel* channel = header.channels().findChannel(name);
-            if (!channel) return "no channel " + std::string(name);
-            if (channel->type != Imf::FLOAT) return "channel " + std::string(name) + " is not FLOAT";
-        }
-        map.texels.assign(static_cast<std::size_t>(w) * static_cast<std::size_t>(h), glm::vec4(0.0f));
-        file.setFrameBuffer(texelSlices(map, dw.min));
-        file.readPixels(dw.min.y, dw.max.y);
-        for (std::size_t i = 0; i < map.texels.size(); ++i) {
-            const glm::vec4 t = map.texels[i];
-            if (!(t.x >= -1.0f && t.x <= 1.0f))
-                return "texel " + std::to_string(i) + " has elevation " + std::to_string(t.x) + ", not in [-1, 1]";
-            if (!(std::isfinite(t.y) && std::isfinite(t.z) && std::isfinite(t.w)))
-                return "texel " + std::to_string(i) + " has a gradient that is not finite";
-        }
-        return {};
-    } catch (const std::exception& e) {
-        return std::string("OpenEXR cannot read it: ") + e.what();
-    }
+// key.txt's fields a valid entry must hold.
+CacheFields checkedFields(int faceSize) {
+    return {{"version", std::to_string(kContinentsVersion)}, {"size", std::to_string(faceSize)}};
 }
 
 }  // namespace
@@ -401,74 +336,32 @@ fs::path defaultContinentsCacheRoot() {
 void saveContinents(const CubeMap& map, const ContinentParams& p, const fs::path& dir, const std::string& key) {
     if (map.size < 1 || map.texels.size() != 6 * static_cast<std::size_t>(map.size) * static_cast<std::size_t>(map.size))
         throw FileError("saveContinents: the map's texels do not match its size");
-    const fs::path target = dir.lexically_normal();
-    const std::string pid = std::to_string(::getpid());
-    const fs::path tmp = target.string() + ".tmp" + pid;
-    std::error_code ec;
-    fs::remove_all(tmp, ec);
-    try {
-        std::string bytes;
-        try {
-            bytes = encodeExr(map, key);
-        } catch (const std::exception& e) {
-            throw FileError("could not encode OpenEXR " + quote(target / kImageFile) + ": " + e.what());
-        }
-        writeFileAtomic(tmp / kImageFile, bytes);
-        std::ostringstream keyFile;
-        keyFile.precision(17);
-        keyFile << "# planet continents cube map; see noise/continents.h\n"
-                << "key " << key << "\nversion " << kContinentsVersion << "\nsize " << map.size << "\nseed " << p.seed
-                << "\nfrequency " << p.frequency << "\noctaves " << p.octaves << "\nsea_fraction " << p.seaFraction
-                << "\n" << kImageFile << " " << checksum(bytes) << "\n";
-        writeFileAtomic(tmp / "key.txt", keyFile.str());
-    } catch (...) {
-        fs::remove_all(tmp, ec);
-        throw;
-    }
-    replaceFolder(tmp, target, "continents");
+    CacheFields fields = checkedFields(map.size);
+    fields.insert(fields.end(), {{"seed", std::to_string(p.seed)},
+                                 {"frequency", exactText(p.frequency)},
+                                 {"octaves", std::to_string(p.octaves)},
+                                 {"sea_fraction", exactText(p.seaFraction)}});
+    // writeCacheEntry only reads the texels.
+    writeCacheEntry(dir, kFormat, key, fields, images(const_cast<CubeMap&>(map)));
 }
 
 std::optional<CubeMap> loadContinents(const fs::path& dir, const std::string& expectedKey, int faceSize,
                                       std::string* reason) {
-    auto reject = [&](const std::string& why) -> std::optional<CubeMap> {
-        if (reason) *reason = why;
+    if (faceSize < 1 || faceSize > 8192) {  // bakeContinents' range; also bounds what is allocated here
+        if (reason) *reason = "face size " + std::to_string(faceSize) + " is outside [1, 8192]";
         return std::nullopt;
-    };
-    if (!fs::is_directory(dir)) return reject("no cache folder " + quote(dir));
-    const fs::path keyPath = dir / "key.txt";
-    std::string keyText;
-    try {
-        keyText = readFile(keyPath);
-    } catch (const FileError& e) {
-        return reject(e.what());
     }
-    const std::map<std::string, std::string> fields = parseKeyFile(keyText);
-    auto field = [&](const std::string& name) {
-        const auto it = fields.find(name);
-        return it == fields.end() ? std::string() : it->second;
-    };
-    if (field("key") != expectedKey)
-        return reject(quote(keyPath) + " holds key " + field("key") + ", expected " + expectedKey);
-    if (field("version") != std::to_string(kContinentsVersion))
-        return reject(quote(keyPath) + " is for version '" + field("version") + "', not " +
-                      std::to_string(kContinentsVersion));
-    if (field("size") != std::to_string(faceSize))
-        return reject(quote(keyPath) + " holds size '" + field("size") + "', expected " + std::to_string(faceSize));
-    const fs::path imagePath = dir / kImageFile;
-    std::string bytes;
-    try {
-        bytes = readFile(imagePath);
-    } catch (const FileError& e) {
-        return reject(e.what());
-    }
-    const std::string expected = field(kImageFile);
-    if (expected.empty()) return reject(quote(keyPath) + " has no checksum for " + kImageFile);
-    if (checksum(bytes) != expected)
-        return reject(quote(imagePath) + " is damaged (checksum " + checksum(bytes) + ", expected " + expected + ")");
     CubeMap map;
     map.size = faceSize;
-    const std::string why = decodeExr(bytes, expectedKey, map);
-    if (!why.empty()) return reject(quote(imagePath) + ": " + why);
+    map.texels.assign(6 * static_cast<std::size_t>(map.size) * static_cast<std::size_t>(map.size), glm::vec4(0.0f));
+    if (!readCacheEntry(dir, kFormat, expectedKey, checkedFields(faceSize), images(map), reason)) return std::nullopt;
+    for (std::size_t i = 0; i < map.texels.size(); ++i)
+        if (!(map.texels[i].x >= -1.0f && map.texels[i].x <= 1.0f)) {  // the gradient: finite, readCacheEntry checked
+            if (reason)
+                *reason = quote(dir / kImageFile) + ": texel " + std::to_string(i) + " has elevation " +
+                          std::to_string(map.texels[i].x) + ", not in [-1, 1]";
+            return std::nullopt;
+        }
     return map;
 }
 
@@ -486,20 +379,20 @@ CubeMap loadOrBakeContinents(const ContinentParams& params, int faceSize, const 
     validate(params, faceSize);
     const std::string key = continentsCacheKey(params, faceSize);
     const fs::path dir = root / key;
-    std::string reason;
-    if (std::optional<CubeMap> map = loadContinents(dir, key, faceSize, &reason)) return std::move(*map);
-    if (fs::exists(dir)) logWarning("continents cache " + quote(dir) + " is not usable, rebaking: " + reason);
-    logInfo("baking the continents (" + std::to_string(faceSize) + "^2 x 6 texels, seed " + std::to_string(params.seed) +
-            ") into " + quote(dir));
-    const auto start = std::chrono::steady_clock::now();
-    CubeMap map = bakeContinents(params, faceSize, logBakeProgress());
-    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    if (seconds > 1.0) logInfo("baked the continents in " + std::to_string(seconds) + " s");
-    try {
-        saveContinents(map, params, dir, key);
-    } catch (const std::exception& e) {
-        logWarning(std::string("continents not cached: ") + e.what());
-    }
+    CacheOutcome outcome;
+    CubeMap map = loadOrMake(
+        dir, /*force=*/false, [&](std::string* reason) { return loadContinents(dir, key, faceSize, reason); },
+        [&] { return bakeContinents(params, faceSize, logBakeProgress()); },
+        [&](const CubeMap& baked) { saveContinents(baked, params, dir, key); },
+        [&](const CacheOutcome& o) {
+            if (!o.rejected.empty())
+                logWarning("continents cache " + quote(dir) + " is not usable, rebaking: " + o.rejected);
+            logInfo("baking the continents (" + std::to_string(faceSize) + "^2 x 6 texels, seed " +
+                    std::to_string(params.seed) + ") into " + quote(dir));
+        },
+        &outcome);
+    if (outcome.seconds > 1.0) logInfo("baked the continents in " + std::to_string(outcome.seconds) + " s");
+    if (!outcome.notSaved.empty()) logWarning("continents not cached: " + outcome.notSaved);
     return map;
 }
 

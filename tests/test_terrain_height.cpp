@@ -13,6 +13,7 @@
 #include <cstdio>
 #include <deque>
 #include <filesystem>
+#include <memory>
 #include <random>
 #include <stdexcept>
 #include <variant>
@@ -538,6 +539,78 @@ TEST(TerrainHeightField, FollowsItsParametersAndBakesOnlyWhenTheMapChanges) {
         const glm::dvec3 position = glm::dvec3(d) * 7.0e6;
         EXPECT_EQ(terrain::surfaceHeightM(again, position), double(again.height(glm::vec3(position / glm::length(position)))));
     }
+}
+
+// ---------------------------------------------------------------- one continents map
+
+// terrain::Continents owns the map; height fields and the session share it (no GL needed:
+// these run without a context, which also shows that the owner's CPU side needs none).
+TEST(TerrainContinents, TheHeightFieldSharesTheOwnersMapAndUpdatesReloadOnlyOnABakeChange) {
+    const std::filesystem::path root = std::filesystem::path(PLANET_TEST_OUT) / "continents_owner_cache";
+    std::filesystem::remove_all(root);
+    const auto owner = std::make_shared<terrain::Continents>(root);
+    terrain::HeightField field(owner), other(owner);
+    EXPECT_EQ(field.source(), owner);
+
+    TerrainParams p = testParams();
+    EXPECT_TRUE(field.update(p));  // the owner loads (bakes) once
+    EXPECT_EQ(owner->loads(), 1);
+    ASSERT_TRUE(owner->map());
+    EXPECT_EQ(field.sharedContinents().get(), owner->map().get());  // the very same object, not a copy
+    EXPECT_EQ(&field.continents(), owner->map().get());
+    EXPECT_TRUE(other.update(p));  // new to this field, but no second load
+    EXPECT_EQ(other.sharedContinents().get(), owner->map().get());
+    EXPECT_EQ(owner->loads(), 1);
+
+    EXPECT_FALSE(owner->update(p));  // unchanged: nothing reloaded
+    EXPECT_FALSE(field.update(p));
+    p.max_height_m = 4000.0;  // the shape only
+    EXPECT_FALSE(field.update(p));
+    EXPECT_FALSE(owner->update(p));
+    EXPECT_EQ(owner->loads(), 1);
+
+    const auto before = owner->map();
+    p.sea_fraction = 0.5;  // a parameter of the bake: true once, then false
+    EXPECT_TRUE(owner->update(p));
+    EXPECT_FALSE(owner->update(p));
+    EXPECT_EQ(owner->loads(), 2);
+    EXPECT_NE(owner->map().get(), before.get());
+    EXPECT_EQ(field.sharedContinents().get(), before.get());  // until the field follows
+    EXPECT_TRUE(field.update(p));                               // its map changed, the owner's load did it
+    EXPECT_FALSE(field.update(p));
+    EXPECT_EQ(field.sharedContinents().get(), owner->map().get());
+    EXPECT_EQ(owner->loads(), 2);
+    const Terrain reference(p);
+    for (const glm::vec3& d : randomDirections(50, 17)) ASSERT_EQ(field.height(d), reference.height(d));
+
+    p.continent_map_size = kMapSize / 2;  // the map's size is a parameter of the bake too
+    EXPECT_TRUE(owner->update(p));
+    EXPECT_EQ(owner->map()->size, kMapSize / 2);
+    EXPECT_EQ(owner->loads(), 3);
+
+    // use(): another owner; not ready until the next update, which takes that owner's map.
+    const auto second = std::make_shared<terrain::Continents>(root);
+    field.use(second);
+    EXPECT_FALSE(field.ready());
+    EXPECT_TRUE(field.update(p));
+    EXPECT_EQ(field.sharedContinents().get(), second->map().get());
+    EXPECT_THROW(field.use(nullptr), std::invalid_argument);
+}
+
+TEST(TerrainContinents, TheSessionsGroundSharesTheSessionsOwner) {
+    Session session;
+    EXPECT_EQ(session.ground.source(), session.continents);
+    Session copy = session;  // copies share the owner, and the ground follows it
+    EXPECT_EQ(copy.ground.source(), session.continents);
+
+    const std::filesystem::path root = std::filesystem::path(PLANET_TEST_OUT) / "continents_owner_cache";
+    session.continents = std::make_shared<terrain::Continents>(root);  // e.g. a test's cache
+    session.ground.use(session.continents);
+    session.scene.terrain = testParams();
+    keepAboveGround(session);
+    EXPECT_EQ(session.ground.sharedContinents().get(), session.continents->map().get());
+    EXPECT_EQ(session.continents->loads(), 1);
+    EXPECT_FALSE(session.continents->update(session.scene.terrain));  // a renderer sharing it loads nothing
 }
 
 // ---------------------------------------------------------------- materials

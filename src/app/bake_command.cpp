@@ -5,13 +5,11 @@
 // cache entry is reused unless --force; a damaged one is reported and rebaked. Progress
 // goes to stderr once the bake has run a second.
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
-#include <optional>
 #include <string>
 #include <vector>
 
@@ -24,6 +22,8 @@
 #include "scene/preset.h"
 #include "scene/scene.h"
 #include "terrain/height.h"
+#include "util/cache_entry.h"
+#include "util/file_util.h"
 #include "util/log.h"
 
 namespace planet {
@@ -97,39 +97,37 @@ int runBake(const BakeOptions& options) {
               << size << ", seed " << params.seed << ", frequency " << params.frequency << ", " << params.octaves
               << " octaves, sea fraction " << params.seaFraction << "\n";
 
-    std::optional<noise::CubeMap> map;
-    if (!options.force) {
-        std::string reason;
-        map = noise::loadContinents(dir, key, size, &reason);
-        if (map)
-            std::cout << "cache hit: valid map in " << where << " (key " << key << ")\n";
-        else if (fs::exists(dir))
-            std::cout << "cache at " << where << " is not usable, rebaking: " << reason << "\n";
+    auto report = [&](const CacheOutcome& o) {
+        if (o.forced)
+            std::cout << "--force: rebaking the map for key " << key << "\n";
+        else if (!o.rejected.empty())
+            std::cout << "cache at " << where << " is not usable, rebaking: " << o.rejected << "\n";
         else
             std::cout << "no cached map for key " << key << ", baking\n";
+        std::cout.flush();
+    };
+    CacheOutcome outcome;
+    const noise::CubeMap map = loadOrMake(
+        dir, options.force, [&](std::string* reason) { return noise::loadContinents(dir, key, size, reason); },
+        [&] { return noise::bakeContinents(params, size, noise::logBakeProgress()); },
+        [&](const noise::CubeMap& baked) { noise::saveContinents(baked, params, dir, key); }, report, &outcome);
+    if (outcome.hit) {
+        std::cout << "cache hit: valid map in " << where << " (key " << key << ")\n";
     } else {
-        std::cout << "--force: rebaking the map for key " << key << "\n";
-    }
-    std::cout.flush();
-
-    if (!map) {
-        const auto start = std::chrono::steady_clock::now();
-        map = noise::bakeContinents(params, size, noise::logBakeProgress());
-        const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-        std::cout << "baked in " << seconds(elapsed) << " ("
-                  << static_cast<double>(map->texels.size() * sizeof(glm::vec4)) / (1024.0 * 1024.0)
+        std::cout << "baked in " << seconds(outcome.seconds) << " ("
+                  << static_cast<double>(map.texels.size() * sizeof(glm::vec4)) / (1024.0 * 1024.0)
                   << " MiB as RGBA32F: elevation and its gradient)\n";
-        noise::saveContinents(*map, params, dir, key);
+        if (!outcome.notSaved.empty()) throw FileError(outcome.notSaved);
         std::cout << "wrote " << where << "\n";
     }
 
     char fraction[96];
     std::snprintf(fraction, sizeof fraction, "sea fraction: %.5f achieved (by solid angle), %.5f requested\n",
-                  noise::seaFractionOf(*map), params.seaFraction);
+                  noise::seaFractionOf(map), params.seaFraction);
     std::cout << fraction;
 
     if (!options.preview.empty()) {
-        writePng(previewImage(*map), options.preview);
+        writePng(previewImage(map), options.preview);
         std::cout << "wrote preview " << fs::absolute(options.preview).lexically_normal().string() << " ("
                   << kPreviewWidth << "x" << kPreviewHeight << ", equirectangular)\n";
     }

@@ -4,10 +4,8 @@
 // and the tables' memory. A valid cache entry is reused unless --force; a
 // damaged one is reported and rebuilt.
 //
-// loadOrPrecomputeTables() is the shared core: `sky-probe` gets its GPU tables
-// the same way.
-#include <chrono>
-#include <cmath>
+// loadOrPrecomputeTables() prints what atmosphere/table_store.h's
+// loadOrComputeTables() decides and does; `sky-probe` gets its tables the same way.
 #include <cstdio>
 #include <iostream>
 #include <optional>
@@ -18,7 +16,7 @@
 #include "atmosphere/parameters.h"
 #include "atmosphere/precompute_gpu.h"
 #include "atmosphere/reference_tables.h"
-#include "atmosphere/table_cache.h"
+#include "atmosphere/table_store.h"
 #include "gl/context.h"
 #include "gl/debug.h"
 #include "scene/toml_error.h"
@@ -46,15 +44,6 @@ std::string describeSizes(const TableSizes& s) {
            std::to_string(s.irradiance_height);
 }
 
-bool allFinite(const AtmosphereTables& t) {
-    for (const std::vector<glm::dvec4>* texels :
-         {&t.transmittance.texels, &t.scattering.texels, &t.singleMie.texels, &t.irradiance.texels})
-        for (const glm::dvec4& v : *texels)
-            for (int c = 0; c < 4; ++c)
-                if (!std::isfinite(v[c])) return false;
-    return true;
-}
-
 }  // namespace
 
 TableSizes commandTableSizes(const std::string& choice, bool haveContext) {
@@ -71,48 +60,44 @@ AtmosphereTables loadOrPrecomputeTables(const Scene& scene, const TableSizes& si
                                         const fs::path& shaderRoot, bool reference, bool force, std::ostream& out) {
     const AtmosphereParameters params = makeAtmosphereParameters(scene);
     const int orders = scene.atmosphere.scattering_orders;
-    const std::string key = tableCacheKey(params, sizes, orders, atmosphereModelSource(shaderRoot));
-    const fs::path dir = (cacheRoot.empty() ? defaultTableCacheRoot() : fs::path(cacheRoot)) / key;
-    const std::string where = fs::absolute(dir).lexically_normal().string();
+    auto where = [](const TableStoreReport& r) { return fs::absolute(r.dir).lexically_normal().string(); };
 
-    if (!force) {
-        std::string reason;
-        if (std::optional<AtmosphereTables> cached = loadTables(dir, key, sizes, &reason)) {
-            out << "cache hit: valid tables in " << where << " (key " << key << ")\n";
-            return std::move(*cached);
-        }
-        if (fs::exists(dir))
-            out << "cache at " << where << " is not usable, rebuilding: " << reason << "\n";
+    TableStoreOptions options;
+    options.force = force;
+    options.onCompute = [&](const TableStoreReport& r) {
+        if (r.forced)
+            out << "--force: rebuilding the tables for key " << r.key << "\n";
+        else if (!r.rejected.empty())
+            out << "cache at " << where(r) << " is not usable, rebuilding: " << r.rejected << "\n";
         else
-            out << "no cached tables for key " << key << ", computing\n";
-    } else {
-        out << "--force: rebuilding the tables for key " << key << "\n";
-    }
-
-    out << "precomputing " << orders << " scattering order(s) on "
-        << (reference ? std::string("the CPU (double-precision reference)") : gl::rendererDescription()) << "\n";
-    out.flush();
-    const ProgressFn progress = [&out](const PrecomputeStep& step) {
+            out << "no cached tables for key " << r.key << ", computing\n";
+        out << "precomputing " << orders << " scattering order(s) on "
+            << (reference ? std::string("the CPU (double-precision reference)") : gl::rendererDescription()) << "\n";
+        out.flush();
+    };
+    options.onStep = [&out](const PrecomputeStep& step) {
         out << "  " << step.name << std::string(step.name.size() < 20 ? 20 - step.name.size() : 1, ' ')
             << format("%9.3f s", step.seconds) << "\n";
         out.flush();
     };
-    const auto start = std::chrono::steady_clock::now();
-    AtmosphereTables tables;
-    if (reference) {
-        tables = computeReferenceTables(params, sizes, orders, progress).tables;
-    } else {
+    const ComputeTablesFn compute = [&](const ProgressFn& onStep) {
+        if (reference) return computeReferenceTables(params, sizes, orders, onStep).tables;
         GpuPrecompute precompute(shaderRoot, sizes);
-        tables = readBack(precompute.compute(params, orders, progress));
+        return readBack(precompute.compute(params, orders, onStep));
+    };
+
+    TableStoreReport report;
+    AtmosphereTables tables =
+        loadOrComputeTables(compute, params, sizes, orders, cacheRoot, shaderRoot, options, &report);
+    if (report.hit) {
+        out << "cache hit: valid tables in " << where(report) << " (key " << report.key << ")\n";
+        return tables;
     }
-    const double total = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    out << "  total" << std::string(15, ' ') << format("%9.3f s", total) << "\n";
+    out << "  total" << std::string(15, ' ') << format("%9.3f s", report.seconds) << "\n";
     out << "table memory: " << format("%.2f MiB", static_cast<double>(sizes.bytes()) / (1024.0 * 1024.0))
         << " as RGBA32F (" << describeSizes(sizes) << ")\n";
-    if (!allFinite(tables)) throw std::runtime_error("the precomputed tables contain NaN or Inf; not cached");
-
-    saveTables(tables, dir, key);
-    out << "wrote " << where << "\n";
+    if (!report.notSaved.empty()) throw std::runtime_error(report.notSaved);
+    out << "wrote " << where(report) << "\n";
     return tables;
 }
 

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <filesystem>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -13,6 +14,7 @@
 #include "scene/camera.h"
 #include "app/views.h"
 #include "scene/scene.h"
+#include "terrain/continents.h"
 #include "terrain/height.h"
 
 namespace planet {
@@ -35,9 +37,13 @@ struct Session {
     std::vector<View> views;
     View view;
     Camera camera;
-    // The terrain's heights on the CPU (the continents map the terrain pass draws), for the
-    // camera's ground; follows scene.terrain in applyView and keepAboveGround.
-    terrain::HeightField ground;
+    // The continents map's owner for the whole process: hand it to the Renderer
+    // (Renderer(shaders, tables, session.continents)) so that the GPU's texture and the CPU's
+    // ground are one map, loaded once. Copies of the session share it.
+    std::shared_ptr<terrain::Continents> continents = std::make_shared<terrain::Continents>();
+    // The terrain's heights on the CPU (the map of `continents`, which the terrain draws), for
+    // the camera's ground; follows scene.terrain in applyView and keepAboveGround.
+    terrain::HeightField ground{continents};
 };
 
 // Loads the preset (warnings go to the log) and the view bookmarks, picks the

@@ -1,27 +1,16 @@
+// The atmosphere table cache (see table_cache.h): the key, and the tables as the entry's
+// images (util/cache_entry.h writes, checks and reads the entry).
 #include "atmosphere/table_cache.h"
 
-#include "util/cache_entry.h"
-
-#include <ImfChannelList.h>
-#include <ImfFrameBuffer.h>
-#include <ImfHeader.h>
-#include <ImfInputFile.h>
-#include <ImfOutputFile.h>
-#include <ImfStdIO.h>
-#include <ImfStringAttribute.h>
-
-#include <cmath>
-#include <cstdint>
-#include <cstdlib>
-#include <cstring>
-#include <iterator>
-#include <fstream>
 #include <algorithm>
-#include <map>
+#include <array>
+#include <cstdlib>
+#include <fstream>
+#include <iterator>
 #include <sstream>
-#include <unistd.h>
 #include <vector>
 
+#include "util/cache_entry.h"
 #include "util/file_util.h"
 
 namespace planet::atmosphere {
@@ -55,14 +44,14 @@ std::string sizesText(const TableSizes& s) {
 
 // ------------------------------------------------------------------ images
 
-constexpr const char* kKeyAttribute = "planetTableKey";
-constexpr const char* kSizesAttribute = "planetTableSizes";
-constexpr const char* kChannels[4] = {"R", "G", "B", "A"};
+const CacheFormat kFormat{"tables", "planet atmosphere tables; see src/atmosphere/table_cache.h", "planetTableKey",
+                          CachePixel::Float, /*compress=*/true};
+const std::vector<std::string> kChannels{"R", "G", "B", "A"};
 
-// One table as the 2D image it is stored as.
+// The four tables, each as the 2D image it is stored as (3D tables are width x (height * depth)).
 struct TableImage {
     const char* file;
-    int width, height;  // image size: 3D tables are width x (height * depth)
+    int width, height;
 };
 
 std::vector<TableImage> tableImages(const TableSizes& s) {
@@ -73,71 +62,29 @@ std::vector<TableImage> tableImages(const TableSizes& s) {
             {"irradiance.exr", s.irradiance_width, s.irradiance_height}};
 }
 
-std::string encodeExr(const std::vector<glm::dvec4>& texels, int width, int height, const std::string& key,
-                      const TableSizes& sizes) {
-    std::vector<float> pixels(texels.size() * 4);
-    for (std::size_t i = 0; i < texels.size(); ++i)
-        for (int c = 0; c < 4; ++c) pixels[4 * i + static_cast<std::size_t>(c)] = static_cast<float>(texels[i][c]);
-    Imf::Header header(width, height);
-    for (const char* name : kChannels) header.channels().insert(name, Imf::Channel(Imf::FLOAT));
-    header.compression() = Imf::ZIP_COMPRESSION;
-    header.insert(kKeyAttribute, Imf::StringAttribute(key));
-    header.insert(kSizesAttribute, Imf::StringAttribute(sizesText(sizes)));
-    Imf::StdOSStream stream;
-    {
-        Imf::OutputFile file(stream, header);
-        Imf::FrameBuffer fb;
-        const std::size_t xs = 4 * sizeof(float), ys = xs * static_cast<std::size_t>(width);
-        char* base = reinterpret_cast<char*>(pixels.data());
-        for (int c = 0; c < 4; ++c) fb.insert(kChannels[c], Imf::Slice(Imf::FLOAT, base + c * sizeof(float), xs, ys));
-        file.setFrameBuffer(fb);
-        file.writePixels(height);
-    }
-    return stream.str();
-}
+// The tables' texels in float (the GPU's RGBA32F), one buffer per table, and the cache's
+// images over them.
+struct FloatTables {
+    std::vector<std::vector<float>> pixels;
+    std::vector<CacheImage> images;  // point into pixels: no copies
 
-// Decodes one table image; returns an empty string on success, else the reason.
-std::string decodeExr(const std::string& bytes, const TableImage& image, const std::string& key,
-                      std::vector<glm::dvec4>& texels) {
-    try {
-        Imf::StdISStream stream;
-        stream.str(bytes);
-        Imf::InputFile file(stream);
-        const Imf::Header& header = file.header();
-        const auto* k = header.findTypedAttribute<Imf::StringAttribute>(kKeyAttribute);
-        if (!k) return "no " + std::string(kKeyAttribute) + " attribute";
-        if (k->value() != key) return "its header key " + k->value() + " is not " + key;
-        const Imath::Box2i dw = header.dataWindow();
-        const int w = dw.max.x - dw.min.x + 1, h = dw.max.y - dw.min.y + 1;
-        if (w != image.width || h != image.height)
-            return "size " + std::to_string(w) + "x" + std::to_string(h) + ", expected " +
-                   std::to_string(image.width) + "x" + std::to_string(image.height);
-        for (const char* name : kChannels) {
-            const Imf::Channel* channel = header.channels().findChannel(name);
-            if (!channel) return "no channel " + std::string(name);
-            if (channel->type != Imf::FLOAT) return "channel " + std::string(name) + " is not FLOAT";
+    FloatTables(const FloatTables&) = delete;
+    FloatTables& operator=(const FloatTables&) = delete;
+    explicit FloatTables(const TableSizes& sizes) {
+        const std::vector<TableImage> tables = tableImages(sizes);
+        pixels.resize(tables.size());
+        for (std::size_t i = 0; i < tables.size(); ++i) {
+            pixels[i].resize(static_cast<std::size_t>(tables[i].width) * static_cast<std::size_t>(tables[i].height) * 4);
+            images.push_back({tables[i].file, tables[i].width, tables[i].height,
+                              interleavedChannels(pixels[i].data(), kChannels)});
         }
-        std::vector<float> pixels(static_cast<std::size_t>(w) * h * 4);
-        Imf::FrameBuffer fb;
-        const std::size_t xs = 4 * sizeof(float), ys = xs * static_cast<std::size_t>(w);
-        char* base = reinterpret_cast<char*>(pixels.data()) -
-                     (static_cast<std::ptrdiff_t>(dw.min.x) * static_cast<std::ptrdiff_t>(xs) +
-                      static_cast<std::ptrdiff_t>(dw.min.y) * static_cast<std::ptrdiff_t>(ys));
-        for (int c = 0; c < 4; ++c) fb.insert(kChannels[c], Imf::Slice(Imf::FLOAT, base + c * sizeof(float), xs, ys));
-        file.setFrameBuffer(fb);
-        file.readPixels(dw.min.y, dw.max.y);
-        texels.resize(static_cast<std::size_t>(w) * h);
-        for (std::size_t i = 0; i < texels.size(); ++i) {
-            const float* p = &pixels[4 * i];
-            for (int c = 0; c < 4; ++c)
-                if (!std::isfinite(p[c]))
-                    return "texel " + std::to_string(i) + " channel " + kChannels[c] + " is " + std::to_string(p[c]);
-            texels[i] = glm::dvec4(p[0], p[1], p[2], p[3]);
-        }
-        return {};
-    } catch (const std::exception& e) {
-        return std::string("OpenEXR cannot read it: ") + e.what();
     }
+};
+
+// The tables' texels in the order of tableImages().
+template <class Tables>
+auto texelsOf(Tables& t) {
+    return std::array{&t.transmittance.texels, &t.scattering.texels, &t.singleMie.texels, &t.irradiance.texels};
 }
 
 }  // namespace
@@ -191,88 +138,33 @@ fs::path defaultTableCacheRoot() {
 
 void saveTables(const AtmosphereTables& tables, const fs::path& dir, const std::string& key) {
     const TableSizes& sizes = tables.sizes;
-    const std::vector<TableImage> images = tableImages(sizes);
-    const std::vector<glm::dvec4>* texels[4] = {&tables.transmittance.texels, &tables.scattering.texels,
-                                                &tables.singleMie.texels, &tables.irradiance.texels};
-    const fs::path target = dir.lexically_normal();
-    const std::string pid = std::to_string(::getpid());
-    const fs::path tmp = target.string() + ".tmp" + pid;
-    std::error_code ec;
-    fs::remove_all(tmp, ec);
-
-    std::ostringstream keyFile;
-    keyFile << "# planet atmosphere tables; see src/atmosphere/table_cache.h\n"
-            << "key " << key << "\nmodel_version " << kModelVersion << "\nsizes " << sizesText(sizes) << "\n";
-    try {
-        for (std::size_t i = 0; i < images.size(); ++i) {
-            const TableImage& image = images[i];
-            if (texels[i]->size() != static_cast<std::size_t>(image.width) * image.height)
-                throw FileError("saveTables: table " + std::string(image.file) + " does not match its sizes");
-            std::string bytes;
-            try {
-                bytes = encodeExr(*texels[i], image.width, image.height, key, sizes);
-            } catch (const std::exception& e) {
-                throw FileError("could not encode OpenEXR " + quote(target / image.file) + ": " + e.what());
-            }
-            writeFileAtomic(tmp / image.file, bytes);
-            keyFile << image.file << " " << checksum(bytes) << "\n";
-        }
-        writeFileAtomic(tmp / "key.txt", keyFile.str());
-    } catch (...) {
-        fs::remove_all(tmp, ec);
-        throw;
+    FloatTables floats(sizes);
+    for (std::size_t i = 0; i < floats.images.size(); ++i) {
+        const std::vector<glm::dvec4>& texels = *texelsOf(tables)[i];
+        std::vector<float>& pixels = floats.pixels[i];
+        if (texels.size() * 4 != pixels.size())
+            throw FileError("saveTables: table " + floats.images[i].file + " does not match its sizes");
+        for (std::size_t t = 0; t < texels.size(); ++t)
+            for (int c = 0; c < 4; ++c) pixels[4 * t + static_cast<std::size_t>(c)] = static_cast<float>(texels[t][c]);
     }
-
-    replaceFolder(tmp, target, "tables");
+    writeCacheEntry(dir, kFormat, key, {{"model_version", std::to_string(kModelVersion)}, {"sizes", sizesText(sizes)}},
+                    floats.images, {{"planetTableSizes", sizesText(sizes)}});
 }
 
 std::optional<AtmosphereTables> loadTables(const fs::path& dir, const std::string& expectedKey,
                                            const TableSizes& sizes, std::string* reason) {
-    auto reject = [&](const std::string& why) -> std::optional<AtmosphereTables> {
-        if (reason) *reason = why;
+    FloatTables floats(sizes);
+    if (!readCacheEntry(dir, kFormat, expectedKey,
+                        {{"model_version", std::to_string(kModelVersion)}, {"sizes", sizesText(sizes)}}, floats.images,
+                        reason))
         return std::nullopt;
-    };
-    if (!fs::is_directory(dir)) return reject("no cache folder " + quote(dir));
-    std::string keyText;
-    try {
-        keyText = readFile(dir / "key.txt");
-    } catch (const FileError& e) {
-        return reject(e.what());
-    }
-    const std::map<std::string, std::string> fields = parseKeyFile(keyText);
-    auto field = [&](const std::string& name) {
-        const auto it = fields.find(name);
-        return it == fields.end() ? std::string() : it->second;
-    };
-    const fs::path keyPath = dir / "key.txt";
-    if (field("key") != expectedKey)
-        return reject(quote(keyPath) + " holds key " + field("key") + ", expected " + expectedKey);
-    if (field("model_version") != std::to_string(kModelVersion))
-        return reject(quote(keyPath) + " is for model version '" + field("model_version") + "', not " +
-                      std::to_string(kModelVersion));
-    if (field("sizes") != sizesText(sizes))
-        return reject(quote(keyPath) + " holds sizes '" + field("sizes") + "', expected '" +
-                      sizesText(sizes) + "'");
-
     AtmosphereTables tables(sizes);
-    std::vector<glm::dvec4>* texels[4] = {&tables.transmittance.texels, &tables.scattering.texels,
-                                          &tables.singleMie.texels, &tables.irradiance.texels};
-    const std::vector<TableImage> images = tableImages(sizes);
-    for (std::size_t i = 0; i < images.size(); ++i) {
-        const fs::path path = dir / images[i].file;
-        std::string bytes;
-        try {
-            bytes = readFile(path);
-        } catch (const FileError& e) {
-            return reject(e.what());
-        }
-        const std::string expected = field(images[i].file);
-        if (expected.empty()) return reject(quote(keyPath) + " has no checksum for " + images[i].file);
-        if (checksum(bytes) != expected)
-            return reject(quote(path) + " is damaged (checksum " + checksum(bytes) + ", expected " +
-                          expected + ")");
-        const std::string why = decodeExr(bytes, images[i], expectedKey, *texels[i]);
-        if (!why.empty()) return reject(quote(path) + ": " + why);
+    for (std::size_t i = 0; i < floats.images.size(); ++i) {
+        std::vector<glm::dvec4>& texels = *texelsOf(tables)[i];
+        const std::vector<float>& pixels = floats.pixels[i];
+        texels.resize(pixels.size() / 4);
+        for (std::size_t t = 0; t < texels.size(); ++t)
+            texels[t] = glm::dvec4(pixels[4 * t], pixels[4 * t + 1], pixels[4 * t + 2], pixels[4 * t + 3]);
     }
     return tables;
 }

@@ -38,11 +38,16 @@ bool Continents::update(const TerrainParams& params) {
 
 const gl::Texture& Continents::texture() {
     if (!map_) throw std::logic_error("terrain::Continents::texture() before update()");
-    if (textureStale_) {
+    if (textureStale_ || !texture_) {
         texture_ = makeContinentsTexture(*map_);
         textureStale_ = false;
     }
-    return texture_;
+    return *texture_;
+}
+
+void Continents::releaseTexture() {
+    texture_.reset();
+    textureStale_ = true;
 }
 
 }  // namespace planet::terrain

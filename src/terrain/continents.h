@@ -3,8 +3,10 @@
 // the ocean sample, both made from the same bake, loaded from the cache or baked once per
 // change of its parameters, for the whole process.
 //
-// The renderer owns one and brings it up to date in its prepare step, before any pass
-// draws; the session's height field shares its CPU map (HeightField::use).
+// The caller (Session::continents) owns one and shares it with the renderer, which brings it
+// up to date in its prepare step, before any pass draws, and with the session's height field
+// (terrain::HeightField), whichever asks first doing the one load. The CPU part needs no GL
+// context (tests, sky-probe, the bake); only texture() does.
 #pragma once
 
 #include <filesystem>
@@ -24,6 +26,7 @@ gl::Texture makeContinentsTexture(const noise::CubeMap& map);
 
 class Continents {
 public:
+    // Needs no GL context: the texture is made on the first texture().
     explicit Continents(std::filesystem::path cacheRoot = noise::defaultContinentsCacheRoot());
 
     // Follows the bake's parameters (continentParams, continent_map_size): loads or bakes
@@ -38,6 +41,10 @@ public:
     // The GL cube map of map(), uploaded on first use after each update(). Needs a GL
     // context; throws std::logic_error before the first update().
     const gl::Texture& texture();
+    // Deletes the GL texture (the next texture() makes it again). Needs the GL context it
+    // was made in: an owner that outlives the renderer's context (the session's) must have
+    // its texture released while the context is there (the Renderer's destructor).
+    void releaseTexture();
     // Whether the next texture() uploads a new map.
     bool textureStale() const { return textureStale_; }
     // How many times the map was loaded or baked (tests: once per change).
@@ -48,7 +55,7 @@ private:
     std::shared_ptr<const noise::CubeMap> map_;
     std::optional<noise::ContinentParams> params_;  // what map_ was made from
     int size_ = 0;
-    gl::Texture texture_{GL_TEXTURE_CUBE_MAP};
+    std::optional<gl::Texture> texture_;  // made by texture(): creating a GL object needs a context
     bool textureStale_ = true;
     int loads_ = 0;
 };

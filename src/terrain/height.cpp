@@ -18,6 +18,7 @@
 #include <glm/glm.hpp>
 
 #include "noise/noise.h"
+#include "terrain/continents.h"
 
 namespace planet::terrain {
 namespace glsl {
@@ -129,21 +130,34 @@ MaterialThresholds materialThresholds() {
 
 // ------------------------------------------------------------------ HeightField
 
-HeightField::HeightField(std::filesystem::path cacheRoot) : cacheRoot_(std::move(cacheRoot)) {}
+HeightField::HeightField(std::filesystem::path cacheRoot)
+    : HeightField(std::make_shared<Continents>(std::move(cacheRoot))) {}
+
+HeightField::HeightField(std::shared_ptr<Continents> continents) { use(std::move(continents)); }
+
+void HeightField::use(std::shared_ptr<Continents> continents) {
+    if (!continents) throw std::invalid_argument("terrain::HeightField::use: no continents");
+    source_ = std::move(continents);
+    map_.reset();
+}
 
 bool HeightField::update(const TerrainParams& params) {
+    source_->update(params);  // first: it throws for parameters out of range
     params_ = params;
     shape_ = makeTerrainShape(params);
-    const noise::ContinentParams wanted = continentParams(params);
-    if (ready() && wanted == baked_ && continents_.size == params.continent_map_size) return false;
-    continents_ = noise::loadOrBakeContinents(wanted, params.continent_map_size, cacheRoot_);
-    baked_ = wanted;
+    if (map_ == source_->map()) return false;
+    map_ = source_->map();
     return true;
+}
+
+const noise::CubeMap& HeightField::continents() const {
+    static const noise::CubeMap kEmpty;
+    return map_ ? *map_ : kEmpty;
 }
 
 const noise::CubeMap& HeightField::map() const {
     if (!ready()) throw std::logic_error("terrain::HeightField used before update()");
-    return continents_;
+    return *map_;
 }
 
 float HeightField::height(glm::vec3 d) const { return terrainHeight(d, shape_, map()); }

@@ -8,10 +8,12 @@
 //
 // HeightField bundles what the functions take (shape + continents map) and keeps it in
 // step with TerrainParams; whoever needs terrain heights on the CPU owns one (the Session,
-// for the camera's ground). The terrain pass bakes or loads the same map for the GPU.
+// for the camera's ground). It shares the map with the GPU's texture through one
+// terrain::Continents (continents.h).
 #pragma once
 
 #include <filesystem>
+#include <memory>
 
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
@@ -20,6 +22,8 @@
 #include "terrain/terrain_params.h"
 
 namespace planet::terrain {
+
+class Continents;  // terrain/continents.h
 
 // Material ids of terrainMaterial (the GLSL TERRAIN_MATERIAL_* constants; static_asserted equal).
 enum class Material : int { SeaFloor = 0, Rock = 1, Snow = 2, Sand = 3, Grass = 4 };
@@ -63,22 +67,36 @@ float continentValue(glm::vec3 unitDirection, const noise::CubeMap& continents);
 glm::vec3 terrainNormal(glm::vec3 unitDirection, const TerrainShape& shape, const noise::CubeMap& continents,
                         float planetRadius);
 
-// The terrain's height field on the CPU: the shape and the continents map for one set of
-// TerrainParams, the map from the cache under `cacheRoot` or baked there (see update()).
+// The terrain's height field on the CPU: the shape for one set of TerrainParams and the
+// continents map, which it shares with the map's owner (terrain::Continents, continents.h):
+// its own by default (the map from the cache under `cacheRoot`, or baked there), or one
+// given, such as the session's, which the renderer shares too, so the process holds one map
+// for the CPU and the GPU and loads it once.
 class HeightField {
 public:
+    // A field with an owner of its own: for callers without a renderer (tests, sky-probe).
     explicit HeightField(std::filesystem::path cacheRoot = noise::defaultContinentsCacheRoot());
+    // A field that shares `continents` (not null).
+    explicit HeightField(std::shared_ptr<Continents> continents);
 
-    // Follows `params`: the shape at once; the map only when a parameter of the bake
-    // (continentParams, continent_map_size) changed or there is none yet: loaded from the
-    // cache, or baked, a stall of about a second at the default size. Returns true when it
-    // replaced the map. Throws std::invalid_argument for parameters out of range.
+    // Shares `continents` (not null) from now on; the field is not ready() again until the
+    // next update(), which takes the owner's map (loading it only if the owner must).
+    void use(std::shared_ptr<Continents> continents);
+    const std::shared_ptr<Continents>& source() const { return source_; }
+
+    // Follows `params`: the shape at once; the map through the owner, which loads or bakes
+    // only when a parameter of the bake (continentParams, continent_map_size) changed or it
+    // has none yet (a stall of about a second at the default size). Returns true when the
+    // field's map changed (also when another sharer of the owner brought it up to date).
+    // Throws std::invalid_argument for parameters out of range.
     bool update(const TerrainParams& params);
 
-    bool ready() const { return continents_.size > 0; }
+    bool ready() const { return map_ != nullptr; }
     const TerrainParams& params() const { return params_; }
     const TerrainShape& shape() const { return shape_; }
-    const noise::CubeMap& continents() const { return continents_; }  // empty before the first update
+    const noise::CubeMap& continents() const;  // empty before the first update
+    // The map itself, the owner's object (null before the first update).
+    const std::shared_ptr<const noise::CubeMap>& sharedContinents() const { return map_; }
 
     // terrainHeight, terrainHeightGrad, terrainNormal with this field's shape and map.
     // Throw std::logic_error before the first update().
@@ -89,11 +107,10 @@ public:
 private:
     const noise::CubeMap& map() const;
 
-    std::filesystem::path cacheRoot_;
+    std::shared_ptr<Continents> source_;
+    std::shared_ptr<const noise::CubeMap> map_;
     TerrainParams params_;
     TerrainShape shape_{};
-    noise::ContinentParams baked_;  // what continents_ was baked from
-    noise::CubeMap continents_;
 };
 
 // Height of the ground the camera stands on, m above sea level, under a world
