@@ -69,12 +69,24 @@ struct BakeOptions {
     std::string preview;       // equirectangular PNG of the map (empty: none)
 };
 
+struct CompareOptions {
+    std::string test;       // A.exr: the image judged
+    std::string reference;  // B.exr: the reference (errors are relative to its luminance)
+    std::string diff;       // difference image, .png (false colour) or .exr (linear); empty: none
+    // Limits, as fractions (0.005 = 0.5 %); unset: not checked.
+    std::optional<double> maxMean;           // mean relative error
+    std::optional<double> maxP99;            // 99th percentile of the relative error
+    std::optional<double> maxP999;           // 99.9th percentile
+    std::optional<double> maxMeanLuminance;  // |relative difference of the mean luminance|
+};
+
 int runExplore(const ExploreOptions& options);
 int runRender(const RenderOptions& options);
 int runBench(const BenchOptions& options);
 int runPrecompute(const PrecomputeOptions& options);
 int runSkyProbe(const SkyProbeOptions& options);
 int runBake(const BakeOptions& options);
+int runCompare(const CompareOptions& options);  // throws when a limit is exceeded or a pixel is NaN / Inf
 
 // Renders one still headlessly (shared by `render` and explore's no-display fallback).
 void renderStill(const CommonOptions& common, const std::vector<std::string>& outputs,

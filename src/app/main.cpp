@@ -120,6 +120,22 @@ int main(int argc, char** argv) {
                         "continents beside $PLANET_CACHE)");
     bakeCmd->add_option("--preview", bake.preview, "Write an equirectangular preview PNG (1024x512)");
 
+    planet::CompareOptions compare;
+    CLI::App* compareCmd = app.add_subcommand(
+        "compare", "Compare linear HDR stills A.exr against a reference B.exr in luminance: mean and 99th / 99.9th "
+                   "percentile relative error, mean luminance difference; fail past the given limits");
+    compareCmd->add_option("A", compare.test, "The still judged (.exr)")->required();
+    compareCmd->add_option("B", compare.reference, "The reference (.exr); errors are relative to its luminance")
+        ->required();
+    compareCmd->add_option("--diff", compare.diff,
+                           "Write the difference image: .png = false colour of the relative error (log scale), "
+                           ".exr = linear A - B in RGB, the relative error in A");
+    compareCmd->add_option("--max-mean", compare.maxMean, "Fail when the mean relative error exceeds this fraction");
+    compareCmd->add_option("--max-p99", compare.maxP99, "Fail when its 99th percentile exceeds this fraction");
+    compareCmd->add_option("--max-p999", compare.maxP999, "Fail when its 99.9th percentile exceeds this fraction");
+    compareCmd->add_option("--max-mean-luminance", compare.maxMeanLuminance,
+                           "Fail when the mean luminances differ by more than this fraction of B's");
+
     app.require_subcommand(0, 1);
     CLI11_PARSE(app, argc, argv);
 
@@ -129,6 +145,7 @@ int main(int argc, char** argv) {
         if (precomputeCmd->parsed()) return planet::runPrecompute(precompute);
         if (skyProbeCmd->parsed()) return planet::runSkyProbe(skyProbe);
         if (bakeCmd->parsed()) return planet::runBake(bake);
+        if (compareCmd->parsed()) return planet::runCompare(compare);
         return planet::runExplore(explore);
     } catch (const std::exception& e) {  // InputError, FileError, ContextError, ShaderError, ...
         std::cerr << "planet: error: " << e.what() << "\n";
