@@ -375,25 +375,22 @@ BakeProgress logBakeProgress() {
     };
 }
 
+BakeProgress alsoLogged(const BakeProgress& progress) {
+    return [log = logBakeProgress(), progress](double fraction) mutable {
+        log(fraction);
+        if (progress) progress(fraction);
+    };
+}
+
 CubeMap loadOrBakeContinents(const ContinentParams& params, int faceSize, const fs::path& root) {
     validate(params, faceSize);
     const std::string key = continentsCacheKey(params, faceSize);
     const fs::path dir = root / key;
-    CacheOutcome outcome;
-    CubeMap map = loadOrMake(
-        dir, /*force=*/false, [&](std::string* reason) { return loadContinents(dir, key, faceSize, reason); },
+    return loadOrBakeLogged(
+        "continents", std::to_string(faceSize) + "^2 x 6 texels, seed " + std::to_string(params.seed), dir,
+        [&](std::string* reason) { return loadContinents(dir, key, faceSize, reason); },
         [&] { return bakeContinents(params, faceSize, logBakeProgress()); },
-        [&](const CubeMap& baked) { saveContinents(baked, params, dir, key); },
-        [&](const CacheOutcome& o) {
-            if (!o.rejected.empty())
-                logWarning("continents cache " + quote(dir) + " is not usable, rebaking: " + o.rejected);
-            logInfo("baking the continents (" + std::to_string(faceSize) + "^2 x 6 texels, seed " +
-                    std::to_string(params.seed) + ") into " + quote(dir));
-        },
-        &outcome);
-    if (outcome.seconds > 1.0) logInfo("baked the continents in " + std::to_string(outcome.seconds) + " s");
-    if (!outcome.notSaved.empty()) logWarning("continents not cached: " + outcome.notSaved);
-    return map;
+        [&](const CubeMap& baked) { saveContinents(baked, params, dir, key); });
 }
 
 }  // namespace planet::noise

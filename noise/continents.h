@@ -48,6 +48,9 @@
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 
+#include "util/cache_entry.h"
+#include "util/log.h"
+
 namespace planet::noise {
 
 // Bump when the bake (not the noise: that is fingerprinted) changes what it produces.
@@ -115,6 +118,28 @@ CubeMap bakeContinents(const ContinentParams& params, int faceSize, const BakePr
 // Logs the bake's progress (logInfo, every 10 %) once it has run for a second; for bakes
 // a user waits for.
 BakeProgress logBakeProgress();
+// logBakeProgress, and `progress` too when there is one.
+BakeProgress alsoLogged(const BakeProgress& progress);
+
+// The run-time flow of every baked cache (continents, cloud volume, weather map):
+// util/cache_entry.h's loadOrMake with what a user is told: an unusable entry (logWarning,
+// then rebaked), what is baked into where, the time when over a second, and a cache that
+// could not be written (logWarning; the bake is used anyway).
+template <class Load, class Bake, class Save>
+auto loadOrBakeLogged(const std::string& what, const std::string& description, const std::filesystem::path& dir,
+                      const Load& load, const Bake& bake, const Save& save) {
+    CacheOutcome outcome;
+    auto result = loadOrMake(
+        dir, /*force=*/false, load, bake, save,
+        [&](const CacheOutcome& o) {
+            if (!o.rejected.empty()) logWarning(what + " cache " + quote(dir) + " is not usable, rebaking: " + o.rejected);
+            logInfo("baking the " + what + " (" + description + ") into " + quote(dir));
+        },
+        &outcome);
+    if (outcome.seconds > 1.0) logInfo("baked the " + what + " in " + std::to_string(outcome.seconds) + " s");
+    if (!outcome.notSaved.empty()) logWarning(what + " not cached: " + outcome.notSaved);
+    return result;
+}
 
 // 16 hex digits: FNV-1a of kContinentsVersion, a noise fingerprint, params and faceSize.
 std::string continentsCacheKey(const ContinentParams& params, int faceSize);

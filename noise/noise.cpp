@@ -24,6 +24,7 @@ using glm::floor;
 using glm::inversesqrt;
 using glm::max;
 using glm::min;
+using glm::mix;
 using glm::sign;
 using glm::sqrt;
 using glm::step;
@@ -33,6 +34,7 @@ using std::sqrt;
 #define OUT(x) x&
 #include "shaders/noise/simplex.glsl"
 #include "shaders/noise/worley.glsl"
+#include "shaders/noise/perlin.glsl"
 #undef OUT
 }  // namespace glsl
 
@@ -71,10 +73,26 @@ float ridgedFbm(glm::vec3 p, int octaves, float lacunarity, float gain) {
     return glsl::ridgedFbm(p, octaves, lacunarity, gain);
 }
 
-float worley(glm::vec3 p, float period) { return glsl::worleyF1(p, periodCells(period)); }
+float worley(glm::vec3 p, float period, unsigned stream) { return glsl::worleyF1(p, periodCells(period), stream); }
 
-glm::vec3 worleyFeaturePoint(glm::ivec3 cell, float period) {
-    return glsl::worleyFeaturePoint(cell, periodCells(period));
+float perlinTiled(glm::vec3 p, float period, unsigned stream) {
+    return glsl::perlinNoiseTiledStream(p, periodCells(period), stream);
+}
+
+float perlinFbmTiled(glm::vec3 p, float period, int octaves, float gain, unsigned stream) {
+    return glsl::perlinFbmTiled(p, period, octaves, gain, stream);
+}
+
+unsigned seedStream(int seed, unsigned purpose) {
+    return hash32(hash32(static_cast<std::uint32_t>(seed)) ^ hash32(purpose + 0x9e3779b9U));
+}
+
+glm::vec3 worleyFeaturePoint(glm::ivec3 cell, float period, unsigned stream) {
+    return glsl::worleyFeaturePoint(cell, periodCells(period), stream);
+}
+
+glm::vec3 worleyFeatureOffset(glm::ivec3 cell, float period, unsigned stream) {
+    return glsl::worleyFeatureOffset(cell, periodCells(period), stream);
 }
 
 }  // namespace planet::noise

@@ -1,6 +1,6 @@
 // Noise on the CPU: the very GLSL the shaders run, compiled as C++ in float.
 //
-// shaders/noise/simplex.glsl and shaders/noise/worley.glsl are written in the subset of
+// shaders/noise/simplex.glsl, worley.glsl and perlin.glsl are written in the subset of
 // GLSL that is also C++ (STYLE habit 1). noise.cpp includes them into
 // namespace planet::noise::glsl, with GLM's float vectors standing in for GLSL's, and the
 // functions below forward to them. Both sides compute in single precision, so the CPU
@@ -32,17 +32,41 @@ float ridgedFbm(glm::vec3 p, int octaves, float lacunarity = 2.0f, float gain = 
 
 // Worley F1: distance from p to the nearest feature point (one per unit cell), in cells.
 // period > 0 (an integer number of cells) makes it tile: worley(p + period e) = worley(p).
-// GLSL: worleyNoise(p), worleyNoiseTiled(p, period).
-float worley(glm::vec3 p, float period = 0.0f);
+// Each stream places its own, unrelated feature points (0: the GLSL wrappers' points).
+// GLSL: worleyNoise(p), worleyNoiseTiled(p, period), worleyF1(p, int period, stream).
+float worley(glm::vec3 p, float period = 0.0f, unsigned stream = 0);
 
-// Offset of the noise domain for a seed and a stream (0: continents, 1: mountains), so that
+// Tiling 3D gradient (Perlin 2002) noise, quintic fade, in [-1, 1], 0 at integer points;
+// period > 0 (cells, an integer) makes it tile: perlinTiled(p + period e) = perlinTiled(p);
+// period <= 0: no tiling. Streams as for worley. GLSL: perlinNoiseTiled(p, period),
+// perlinNoiseTiledStream(p, int period, stream).
+float perlinTiled(glm::vec3 p, float period, unsigned stream = 0);
+
+// fBm of perlinTiled with lacunarity 2 (so every octave tiles with `period`), in [-1, 1]:
+// octave k has amplitude gain^k, stream `stream + k` and a fixed shift, the sum is divided by
+// the sum of amplitudes; octaves clamped to [1, 10]. GLSL: perlinFbmTiled(p, period,
+// octaves, gain, stream).
+float perlinFbmTiled(glm::vec3 p, float period, int octaves, float gain = 0.5f, unsigned stream = 0);
+
+// A lattice stream for a seed and a purpose (a 32-bit hash of both): how a *tiling* noise
+// takes its seed. An offset of the domain (seedOffset) would only translate a periodic
+// noise's tile, not make another one.
+unsigned seedStream(int seed, unsigned purpose);
+
+// Offset of the noise domain for a seed and a stream (0: continents, 1: mountains, 2: the
+// clouds' weather map, 3: the cloud volume; 0..3 only, as seed * 4 + stream is hashed), so that
 // another seed gives another, unrelated field with the same statistics: each component in
 // [-32, 32) in steps of 1/256, from a 32-bit integer hash. Exact in float, and small, so
 // noise coordinates keep their float precision (see simplex.glsl).
 glm::vec3 seedOffset(int seed, unsigned stream);
 
 // The feature point of a lattice cell, in [cell, cell + 1)^3 (for tests and debugging).
-// GLSL: worleyFeaturePoint(cell, period) with an int period.
-glm::vec3 worleyFeaturePoint(glm::ivec3 cell, float period = 0.0f);
+// GLSL: worleyFeaturePoint(cell, period, stream) with an int period.
+glm::vec3 worleyFeaturePoint(glm::ivec3 cell, float period = 0.0f, unsigned stream = 0);
+
+// Where that feature point lies inside its cell, in [0, 1)^3, exactly as worley() places it
+// (for bakes that hash each cell once and run worleyF1's arithmetic over a table).
+// GLSL: worleyFeatureOffset(cell, period, stream) with an int period.
+glm::vec3 worleyFeatureOffset(glm::ivec3 cell, float period = 0.0f, unsigned stream = 0);
 
 }  // namespace planet::noise

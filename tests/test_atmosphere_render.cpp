@@ -28,7 +28,12 @@ protected:
         renderer.reset();
         GLTest::TearDownTestSuite();
     }
-    static Session session(const std::string& view) { return loadSession(test::repoPaths(), "earth", view); }
+    // The atmosphere alone: no clouds (tests/test_clouds.cpp has theirs, through the same pass).
+    static Session session(const std::string& view) {
+        Session s = loadSession(test::repoPaths(), "earth", view);
+        s.scene.clouds.enabled = false;
+        return s;
+    }
     static ImageRGBAF render(const Session& s, glm::ivec2 size = kSize) {
         renderer->render(s.scene, s.camera, size);
         return readTextureRGBAF(renderer->targets().hdr(), size.x, size.y);

@@ -62,6 +62,47 @@ TEST(CloudModel, HeightSignalIsZeroAtTheBoundsAndOneInTheMiddle) {  // Michelic 
     EXPECT_DOUBLE_EQ(glsl::CloudCoverageRemap(-1.0, 0.5), -1.0);
 }
 
+TEST(CloudModel, LocalCoverageMakesTheParameterTheMeanOfTheMap) {
+    // The map's coverage is uniform-ish with mean 1/2; the local coverage must average to
+    // the parameter for a map of mean 1/2 (linear in the map in each half), be 0 at 0, 1
+    // at 1, the map itself at 1/2, and never leave [0, 1].
+    for (double coverage : {0.0, 0.1, 0.3, 0.5, 0.7, 0.95, 1.0}) {
+        double mean = 0.0;
+        const int n = 1000;
+        for (int i = 0; i < n; ++i) {
+            const double map = (i + 0.5) / n;  // uniform on [0, 1]: mean 1/2
+            const double local = glsl::CloudLocalCoverage(map, coverage);
+            ASSERT_GE(local, 0.0);
+            ASSERT_LE(local, 1.0);
+            mean += local / n;
+        }
+        EXPECT_NEAR(mean, coverage, 1e-9) << coverage;
+    }
+    EXPECT_DOUBLE_EQ(glsl::CloudLocalCoverage(0.3, 0.5), 0.3);
+    EXPECT_DOUBLE_EQ(glsl::CloudLocalCoverage(0.3, 0.0), 0.0);
+    EXPECT_DOUBLE_EQ(glsl::CloudLocalCoverage(0.3, 1.0), 1.0);
+    // Continuous at 1/2 from both sides.
+    EXPECT_NEAR(glsl::CloudLocalCoverage(0.3, 0.5 - 1e-9), glsl::CloudLocalCoverage(0.3, 0.5 + 1e-9), 1e-8);
+}
+
+TEST(CloudModel, TypeProfilesPlaceStratusLowCumulusMidAndHighCloudAtTheTop) {
+    // Stratus (0) fills [0, 0.25], cumulus (0.5) [0, 0.7], high cloud (1) [0.8, 1]; each
+    // peaks at 1 in the middle of its interval and is 0 at its ends, like Eq. 13.
+    struct Case { double type, bottom, top; };
+    for (const Case c : {Case{0.0, 0.0, 0.25}, Case{0.5, 0.0, 0.7}, Case{1.0, 0.8, 1.0}}) {
+        EXPECT_DOUBLE_EQ(glsl::CloudTypeHeightSignal(0.5 * (c.bottom + c.top), c.type), 1.0) << c.type;
+        EXPECT_DOUBLE_EQ(glsl::CloudTypeHeightSignal(c.bottom, c.type), 0.0) << c.type;
+        EXPECT_DOUBLE_EQ(glsl::CloudTypeHeightSignal(c.top, c.type), 0.0) << c.type;
+        EXPECT_DOUBLE_EQ(glsl::CloudTypeHeightSignal(c.top + 0.01, c.type), 0.0) << c.type;
+        // A quarter of the way in: 1 - (-1/2)^2.
+        EXPECT_NEAR(glsl::CloudTypeHeightSignal(c.bottom + 0.25 * (c.top - c.bottom), c.type), 0.75, 1e-12) << c.type;
+    }
+    // In between, the interval moves continuously (stratocumulus between stratus and cumulus).
+    EXPECT_NEAR(glsl::CloudTypeHeightSignal(0.2, 0.25), glsl::CloudTypeHeightSignal(0.2, 0.25 + 1e-9), 1e-6);
+    EXPECT_GT(glsl::CloudTypeHeightSignal(0.5, 0.75), 0.0);  // altocumulus in the upper middle
+    EXPECT_EQ(glsl::CloudTypeHeightSignal(0.5, 0.0), 0.0);   // no stratus half way up
+}
+
 TEST(CloudModel, PhaseFunctionIntegratesToOneWithMeanCosineG) {
     for (double g : {-0.5, 0.0, 0.3, 0.8}) {
         double integral = 0.0, meanCos = 0.0;
@@ -188,6 +229,8 @@ protected:
         s.clouds.max_steps = 4096;
         s.clouds.sun_samples = 16;
         s.clouds.sun_step_km = 0.5;  // 8 km: every sun ray's way through the layer here
+        s.clouds.multiple_scattering_octaves = 1;  // Eq. 15-16 exactly
+        s.clouds.powder = 0.0;
         return makeCloudBlock(s, Camera{}, 0.0);
     }
     static std::vector<CloudProbeResult> probe(const CloudBlock& block, const std::vector<CloudProbeRay>& rays) {

@@ -1,6 +1,7 @@
 // Noise (shaders/noise/*.glsl, compiled as C++ by noise/noise.cpp): CPU properties of
-// simplex, fBm, ridged fBm and Worley F1 (tier (a) of STYLE habit 9), and the GPU's values
-// from shaders/noise/noise_probe.comp against the same code on the CPU (tier (c)).
+// simplex, fBm, ridged fBm, Worley F1 and tiled Perlin noise and fBm (tier (a) of STYLE
+// habit 9), and the GPU's values from shaders/noise/noise_probe.comp against the same code
+// on the CPU (tier (c)).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -268,6 +269,121 @@ TEST(NoiseWorley, TiledVariantRepeatsWithItsPeriod) {
     }
 }
 
+TEST(NoiseWorley, StreamsPlaceUnrelatedFeaturePointsAndStreamZeroIsThePlainHash) {
+    int moved = 0;
+    for (int i = 0; i < 200; ++i) {
+        const glm::ivec3 cell(i % 7 - 3, i / 7 % 5, i / 35 - 2);
+        EXPECT_EQ(noise::worleyFeaturePoint(cell, 8.0f, 0u), noise::worleyFeaturePoint(cell, 8.0f));
+        const glm::vec3 a = noise::worleyFeaturePoint(cell, 8.0f, 1u), b = noise::worleyFeaturePoint(cell, 8.0f, 2u);
+        EXPECT_EQ(glm::floor(a), glm::vec3(cell));
+        if (glm::distance(a, noise::worleyFeaturePoint(cell, 8.0f)) > 0.05f && glm::distance(a, b) > 0.05f) ++moved;
+    }
+    EXPECT_GT(moved, 180);
+}
+
+// ---------------------------------------------------------------- tiled Perlin
+
+namespace {
+
+// Random points on the 1/64 grid in [-extent, extent]^3: p + period e is then exact in float.
+std::vector<glm::vec3> gridPoints(int count, float extent, unsigned seed) {
+    std::vector<glm::vec3> points = randomPoints(count, extent, seed);
+    for (glm::vec3& p : points) p = glm::floor(p * 64.0f) / 64.0f;
+    return points;
+}
+
+}  // namespace
+
+TEST(NoisePerlin, TilesExactlyWithItsPeriod) {
+    for (float period : {1.0f, 3.0f, 4.0f, 16.0f}) {
+        int differsFromUntiled = 0;
+        for (const glm::vec3& p : gridPoints(2000, 3.0f * period, 21)) {
+            const float v = noise::perlinTiled(p, period);
+            const float f = noise::perlinFbmTiled(p, period, 4, 0.5f, 3u);
+            for (int axis = 0; axis < 3; ++axis) {
+                glm::vec3 e(0.0f);
+                e[axis] = period;
+                ASSERT_EQ(noise::perlinTiled(p + e, period), v) << "period " << period << " axis " << axis;
+                ASSERT_EQ(noise::perlinTiled(p - 2.0f * e, period), v) << "period " << period << " axis " << axis;
+                ASSERT_EQ(noise::perlinFbmTiled(p + e, period, 4, 0.5f, 3u), f) << "period " << period;
+            }
+            if (std::abs(noise::perlinTiled(p, 0.0f) - v) > 1.0e-3f) ++differsFromUntiled;
+        }
+        EXPECT_GT(differsFromUntiled, 100) << "period " << period;
+    }
+}
+
+TEST(NoisePerlin, IsZeroAtLatticePointsAndOneOctaveFbmIsTheNoise) {
+    for (int i = -20; i <= 20; ++i)
+        for (float period : {0.0f, 5.0f}) {
+            const glm::vec3 p(float(i), float(i * 7 % 11), float(-3 * i));
+            EXPECT_EQ(noise::perlinTiled(p, period), 0.0f);
+            EXPECT_EQ(noise::perlinTiled(p, period, 9u), 0.0f);
+        }
+    for (const glm::vec3& p : randomPoints(1000, 10.0f, 22)) {
+        EXPECT_EQ(noise::perlinFbmTiled(p, 6.0f, 1, 0.5f, 4u), noise::perlinTiled(p, 6.0f, 4u));
+        EXPECT_EQ(noise::perlinFbmTiled(p, 6.0f, 0, 0.5f), noise::perlinFbmTiled(p, 6.0f, 1, 0.5f));
+    }
+}
+
+TEST(NoisePerlin, StaysInRangeReachesFarAndAveragesZero) {
+    float lo = 0.0f, hi = 0.0f, fbmLo = 0.0f, fbmHi = 0.0f;
+    double sum = 0.0, sum2 = 0.0;
+    int streamDiffers = 0;
+    const auto points = randomPoints(200000, 50.0f, 23);
+    for (const glm::vec3& p : points) {
+        const float v = noise::perlinTiled(p, 0.0f);
+        const float f = noise::perlinFbmTiled(p, 32.0f, 5, 0.5f);
+        ASSERT_TRUE(std::isfinite(v) && std::isfinite(f));
+        lo = std::min(lo, v);
+        hi = std::max(hi, v);
+        fbmLo = std::min(fbmLo, f);
+        fbmHi = std::max(fbmHi, f);
+        sum += v;
+        sum2 += double(v) * v;
+        if (std::abs(noise::perlinTiled(p, 0.0f, 1u) - v) > 0.05f) ++streamDiffers;
+    }
+    const double mean = sum / double(points.size());
+    const double sd = std::sqrt(sum2 / double(points.size()) - mean * mean);
+    std::printf("perlin: [%.3f, %.3f], sd %.3f; fbm 5 octaves [%.3f, %.3f]\n", lo, hi, sd, fbmLo, fbmHi);
+    EXPECT_LE(hi, 1.0f);
+    EXPECT_GE(lo, -1.0f);
+    EXPECT_GT(hi, 0.7f);
+    EXPECT_LT(lo, -0.7f);
+    EXPECT_LE(fbmHi, 1.0f);
+    EXPECT_GE(fbmLo, -1.0f);
+    EXPECT_NEAR(mean, 0.0, 0.01);
+    EXPECT_GT(sd, 0.1);
+    EXPECT_LT(sd, 0.5);
+    EXPECT_GT(streamDiffers, int(points.size()) / 2);
+}
+
+TEST(NoisePerlin, SmallStepsGiveSmallChangesAcrossCellFaces) {
+    // Lipschitz in the cell and across its faces: a corner hashed differently by the two
+    // cells that share it, or a wrap that picks another corner, jumps by O(0.1). Steps of
+    // 1e-3 from random points, and pairs straddling a cell face (and the period's) by 1e-4.
+    std::mt19937 rng(24);
+    const float step = 1.0e-3f;
+    float worst = 0.0f;
+    for (const glm::vec3& p : randomPoints(100000, 20.0f, 25))
+        worst = std::max(worst, std::abs(noise::perlinTiled(p + step * randomDirection(rng), 8.0f) -
+                                         noise::perlinTiled(p, 8.0f)));
+    EXPECT_LT(worst, 4.0f * step);  // the gradient is below 4 (measured max change / step: printed)
+    float worstFace = 0.0f;
+    for (const glm::vec3& q : randomPoints(20000, 20.0f, 26)) {
+        for (int axis = 0; axis < 3; ++axis) {
+            glm::vec3 a = q, b = q;
+            a[axis] = std::round(q[axis]) - 1.0e-4f;  // integer faces include multiples of the period 8
+            b[axis] = std::round(q[axis]) + 1.0e-4f;
+            worstFace = std::max(worstFace, std::abs(noise::perlinTiled(a, 8.0f) - noise::perlinTiled(b, 8.0f)));
+            worstFace = std::max(worstFace, std::abs(noise::perlinFbmTiled(a, 8.0f, 4, 0.5f) -
+                                                     noise::perlinFbmTiled(b, 8.0f, 4, 0.5f)));
+        }
+    }
+    std::printf("perlin: max change %.2e over steps of %.0e, %.2e across cell faces\n", worst, step, worstFace);
+    EXPECT_LT(worstFace, 4.0e-3f);
+}
+
 // ---------------------------------------------------------------- GPU vs CPU
 
 namespace {
@@ -279,13 +395,13 @@ struct ProbeSettings {
     float period = 8.0f;
 };
 
-// Runs shaders/noise/noise_probe.comp at the points; 3 vec4 per point (layout in the shader).
+// Runs shaders/noise/noise_probe.comp at the points; 4 vec4 per point (layout in the shader).
 std::vector<glm::vec4> runProbe(const std::vector<glm::vec3>& points, const ProbeSettings& s) {
     const gl::Program program = gl::buildProgram(
         {std::filesystem::path(PLANET_SOURCE_DIR) / "shaders", gl::shaderPreamble()}, {"noise_probe", {"noise/noise_probe.comp"}});
     std::vector<glm::vec4> input;
     for (const glm::vec3& p : points) input.emplace_back(p, 0.0f);
-    const GLsizeiptr outputBytes = static_cast<GLsizeiptr>(points.size() * 3 * sizeof(glm::vec4));
+    const GLsizeiptr outputBytes = static_cast<GLsizeiptr>(points.size() * 4 * sizeof(glm::vec4));
     gl::Buffer inputBuffer, outputBuffer;
     glNamedBufferStorage(inputBuffer.id(), static_cast<GLsizeiptr>(input.size() * sizeof(glm::vec4)), input.data(), 0);
     glNamedBufferStorage(outputBuffer.id(), outputBytes, nullptr, 0);
@@ -299,7 +415,7 @@ std::vector<glm::vec4> runProbe(const std::vector<glm::vec3>& points, const Prob
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, outputBuffer.id());
     glDispatchCompute(static_cast<GLuint>((points.size() + 63) / 64), 1, 1);
     glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
-    std::vector<glm::vec4> output(points.size() * 3);
+    std::vector<glm::vec4> output(points.size() * 4);
     glGetNamedBufferSubData(outputBuffer.id(), 0, outputBytes, output.data());
     glUseProgram(0);
     return output;
@@ -307,6 +423,7 @@ std::vector<glm::vec4> runProbe(const std::vector<glm::vec3>& points, const Prob
 
 struct Differences {
     float simplex = 0, gradient = 0, fbm = 0, fbmGradient = 0, ridged = 0, worley = 0, worleyTiled = 0;
+    float perlinTiled = 0, perlinFbmTiled = 0, worleyStream = 0;
 };
 
 Differences compareWithCpu(const std::vector<glm::vec3>& points, const ProbeSettings& s) {
@@ -317,7 +434,7 @@ Differences compareWithCpu(const std::vector<glm::vec3>& points, const ProbeSett
         glm::vec3 g, fg;
         const float v = noise::simplexGrad(p, g);
         const float f = noise::fbmGrad(p, s.octaves, s.lacunarity, s.gain, fg);
-        const glm::vec4 a = gpu[3 * i], b = gpu[3 * i + 1], c = gpu[3 * i + 2];
+        const glm::vec4 a = gpu[4 * i], b = gpu[4 * i + 1], c = gpu[4 * i + 2], e = gpu[4 * i + 3];
         d.simplex = std::max(d.simplex, std::abs(a.x - v));
         d.gradient = std::max(d.gradient, glm::length(glm::vec3(a.y, a.z, a.w) - g));
         d.fbm = std::max(d.fbm, std::abs(b.x - f));
@@ -325,10 +442,16 @@ Differences compareWithCpu(const std::vector<glm::vec3>& points, const ProbeSett
         d.ridged = std::max(d.ridged, std::abs(c.x - noise::ridgedFbm(p, s.octaves, s.lacunarity, s.gain)));
         d.worley = std::max(d.worley, std::abs(c.y - noise::worley(p)));
         d.worleyTiled = std::max(d.worleyTiled, std::abs(c.z - noise::worley(p, s.period)));
+        d.perlinTiled = std::max(d.perlinTiled, std::abs(c.w - noise::perlinTiled(p, s.period)));
+        d.perlinFbmTiled =
+            std::max(d.perlinFbmTiled, std::abs(e.x - noise::perlinFbmTiled(p, s.period, s.octaves, s.gain, 7u)));
+        d.worleyStream = std::max(d.worleyStream, std::abs(e.y - noise::worley(p, s.period, 7u)));
     }
     std::printf("noise GPU - CPU max |difference| at %zu points: simplex %.2e, gradient %.2e, fbm %.2e, "
-                "fbm gradient %.2e, ridged %.2e, worley %.2e, worley tiled %.2e\n",
-                points.size(), d.simplex, d.gradient, d.fbm, d.fbmGradient, d.ridged, d.worley, d.worleyTiled);
+                "fbm gradient %.2e, ridged %.2e, worley %.2e, worley tiled %.2e, perlin tiled %.2e, perlin fbm tiled "
+                "%.2e, worley stream 7 %.2e\n",
+                points.size(), d.simplex, d.gradient, d.fbm, d.fbmGradient, d.ridged, d.worley, d.worleyTiled, d.perlinTiled,
+                d.perlinFbmTiled, d.worleyStream);
     return d;
 }
 
@@ -346,4 +469,7 @@ TEST_F(NoiseGpu, ProbeMatchesTheCpuAtRandomPoints) {
     EXPECT_LT(d.ridged, 5.0e-4f);
     EXPECT_LT(d.worley, 1.0e-4f);
     EXPECT_LT(d.worleyTiled, 1.0e-4f);
+    EXPECT_LT(d.perlinTiled, 1.0e-4f);
+    EXPECT_LT(d.perlinFbmTiled, 5.0e-4f);
+    EXPECT_LT(d.worleyStream, 1.0e-4f);
 }

@@ -39,6 +39,7 @@ protected:
     // at `sunElevation` in the same azimuth.
     Session openSea(double altitude, double pitch, double sunElevation) {
         Session s = session("beach");
+        s.scene.clouds.enabled = false;  // the sun's glitter, unshadowed
         for (double lat = -50.0; lat <= 50.0; lat += 2.5) {
             for (double lon = -180.0; lon < 180.0; lon += 2.5) {
                 if (s.ground.height(glm::vec3(directionFromLatLon(lat, lon))) > -2000.0f) continue;

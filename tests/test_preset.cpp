@@ -208,8 +208,12 @@ TEST(Preset, TopRadiusBelowPlanetRadiusNamesTheLine) {
     EXPECT_EQ(big.line, 0);
     EXPECT_TRUE(contains(big.message, "6420")) << big.message;
     EXPECT_TRUE(contains(big.message, "7000")) << big.message;
-    // Just above is fine.
-    EXPECT_NO_THROW(parsePreset("[planet]\nradius_km = 7000\n[atmosphere]\ntop_radius_km = 7000.5\n", "ok.toml"));
+    // Just above is fine (without clouds: 0.5 km of air has no room for the default layer).
+    EXPECT_NO_THROW(parsePreset("[planet]\nradius_km = 7000\n[atmosphere]\ntop_radius_km = 7000.5\n[clouds]\nenabled = false\n",
+                                "ok.toml"));
+    const InputError clouds =
+        expectInputError([] { parsePreset("[planet]\nradius_km = 7000\n[atmosphere]\ntop_radius_km = 7000.5\n", "c.toml"); });
+    EXPECT_EQ(clouds.field, "clouds.top_altitude_km");
 }
 
 TEST(Preset, MieExtinctionBelowScatteringIsAnError) {
@@ -278,6 +282,7 @@ Scene modifiedAtmosphere() {
     a.ozone_width_km = 1000.0;
     a.ground_albedo = {0.3, 0.2, 0.1 + 0.02};
     a.scattering_orders = 7;
+    s.clouds.enabled = false;  // no room for them in a third of a km of air
     a.min_sun_elevation_deg = -90.0;
     a.elek_rayleigh_phase = true;
     return s;

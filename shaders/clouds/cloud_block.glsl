@@ -8,7 +8,7 @@ layout(std140, binding = BLOCK_CLOUDS) uniform CloudBlock {
     vec3 cameraFromCentre;      // the camera from the planet centre, km (the same as the frame's)
     float bottomRadius;         // l_b, km from the planet centre
     float topRadius;            // l_t
-    float coverage;             // [0, 1], times the weather map's
+    float coverage;             // [0, 1], the mean over the sphere (CloudLocalCoverage with the weather map's)
     float densityScale;
     float extinction;           // E
     float scattering;           // S
@@ -26,7 +26,11 @@ layout(std140, binding = BLOCK_CLOUDS) uniform CloudBlock {
     int energyConservingStep;   // 1: Hillaire's step, 0: Eq. 16 as written
     int constantDensity;        // 1: uniform density densityScale in the layer
     int enabled;                // 0: no clouds (the march is the clear sky's)
-    int padding0;
+    int typeProfiles;           // 1: the weather map's cloud type shapes the height signal
+    float pixelAngle;           // rad a pixel spans (vertical fov / height): footprints for the far field
+    float voxelKm;              // tileWidth / the volume's size; 0 before a volume is there
+    float padding1;
+    float padding2;
 } clouds;
 
 layout(binding = UNIT_CLOUD_VOLUME) uniform sampler3D cloudVolume;   // tiling density, < 0: empty (border)

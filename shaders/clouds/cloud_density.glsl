@@ -3,26 +3,52 @@
 // interface's SunVisibility). Needs cloud_model.glsl and cloud_block.glsl. Positions in
 // km from the planet centre.
 
-// Density at `point` (Michelic Eq. 12-14): < 0 where the volume says the zero-density
-// border is around (a large step is safe), else >= 0.
-float CloudDensity(vec3 point) {
+// How far the far field has taken over (0: the volume alone, 1: the far field alone) for a
+// pixel footprint of `footprintKm`: from 2 to 8 voxels, where trilinear sampling starts to
+// alias and where it would be only noise.
+float CloudFarBlend(float footprintKm) {
+    return smoothstep(2.0 * clouds.voxelKm, 8.0 * clouds.voxelKm, footprintKm);
+}
+
+// Density at `point` (Michelic Eq. 12-14), seen with a pixel footprint of `footprintKm`:
+// < 0 where the volume says the zero-density border is around (a large step is safe), else
+// >= 0. Where the footprint spans voxels, blended into the far field (cloud_model.glsl).
+float CloudDensityAt(vec3 point, float footprintKm) {
     float r = length(point);
     if (r < clouds.bottomRadius || r > clouds.topRadius) return -1.0;
     if (clouds.constantDensity != 0) return clouds.densityScale;
+    float far = CloudFarBlend(footprintKm);
     // Eq. 12, camera-relative: the tile offset of the camera comes formed in double and
     // GL_REPEAT takes the fract.
-    vec3 c = (clouds.cameraTileOffset + (point - clouds.cameraFromCentre)) / clouds.tileWidth;
-    float value = textureLod(cloudVolume, c, 0.0).r;
-    float coverage = clouds.coverage * textureLod(weatherMap, point / r, 0.0).r;
-    value = CloudCoverageRemap(value, coverage);
-    float density = CloudDensityFromTexture(value, CloudHeightSignal(r, clouds.bottomRadius, clouds.topRadius));  // Eq. 13-14
-    return density < 0.0 ? density : density * clouds.densityScale;
+    float value = 0.0;
+    if (far < 1.0) {
+        vec3 c = (clouds.cameraTileOffset + (point - clouds.cameraFromCentre)) / clouds.tileWidth;
+        value = textureLod(cloudVolume, c, 0.0).r;
+        if (value < 0.0 && far == 0.0) return value;  // nothing within the border: the weather cannot add cloud
+    }
+    vec2 weather = textureLod(weatherMap, point / r, 0.0).rg;  // coverage, type
+    float coverage = CloudLocalCoverage(weather.x, clouds.coverage);
+    float depth = clouds.topRadius - clouds.bottomRadius;
+    float fraction = (r - clouds.bottomRadius) / depth;
+    bool typed = clouds.typeProfiles != 0;
+    float h = typed ? CloudTypeHeightSignal(fraction, weather.y) : CloudHeightSignal(r, clouds.bottomRadius, clouds.topRadius);  // Eq. 13
+    float near = max(CloudDensityFromTexture(CloudCoverageRemap(value, coverage), h), 0.0);  // Eq. 14
+    float column = (2.0 / 3.0) * (typed ? CloudTypeProfileWidth(weather.y) : 1.0);
+    float farDensity = CloudFarFieldDensity(coverage, h, column, depth, clouds.extinction * clouds.densityScale);
+    return mix(near, farDensity, far) * clouds.densityScale;
 }
+
+float CloudDensity(vec3 point) { return CloudDensityAt(point, 0.0); }
+
+// The footprint of a pixel at `point`: its distance from the camera times the angle a
+// pixel spans.
+float CloudFootprintAt(vec3 point) { return length(point - clouds.cameraFromCentre) * clouds.pixelAngle; }
 
 // Optical depth per unit extinction (the integral of the density, km) from `point` towards
 // the sun: clouds.sunSamples density samples spread over the sun ray's way through the
-// layer, or over `maxLength` km of it where that way is longer. 0 without clouds.
-float CloudDensityPathToSun(vec3 point, vec3 sun, float maxLength) {
+// layer, or over `maxLength` km of it where that way is longer, seen with a footprint of
+// `footprintKm` (the view sample's). 0 without clouds.
+float CloudDensityPathToSun(vec3 point, vec3 sun, float maxLength, float footprintKm) {
     if (clouds.enabled == 0) return 0.0;
     float r = length(point);
     vec2 first;
@@ -33,11 +59,13 @@ float CloudDensityPathToSun(vec3 point, vec3 sun, float maxLength) {
     float step = way / float(max(clouds.sunSamples, 1));
     float path = 0.0;
     for (int i = 0; i < clouds.sunSamples; ++i)
-        path += max(CloudDensity(point + sun * (first.x + (float(i) + 0.5) * step)), 0.0) * step;
+        path += max(CloudDensityAt(point + sun * (first.x + (float(i) + 0.5) * step), footprintKm), 0.0) * step;
     return path;
 }
 
-// The clouds' transmittance towards the sun (Michelic Eq. 15 along the sun ray: T_sun).
+// The clouds' transmittance towards the sun (Michelic Eq. 15 along the sun ray: T_sun)
+// from a point the camera sees (the surfaces' shadows): with that point's footprint, so a
+// shadow seen from orbit is the far field's, not speckle.
 float CloudSunTransmittance(vec3 point, vec3 sun, float maxLength) {
-    return exp(-clouds.extinction * CloudDensityPathToSun(point, sun, maxLength));
+    return exp(-clouds.extinction * CloudDensityPathToSun(point, sun, maxLength, CloudFootprintAt(point)));
 }

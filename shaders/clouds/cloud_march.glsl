@@ -27,12 +27,12 @@ struct CloudSegmentResult {
 };
 
 // Radiance scattered towards the viewer per unit scattering coefficient at a cloud sample.
-vec3 CloudSource(vec3 point, vec3 sun, float cosTheta, float density) {
+vec3 CloudSource(vec3 point, vec3 sun, float cosTheta, float density, float footprintKm) {
     AtmosphereParameters atmosphere = atmosphereParameters();
     float r = length(point);
     float muS = dot(point, sun) / r;
     vec3 sunlight = atmosphere.solar_irradiance * GetTransmittanceToSun(atmosphere, transmittance_texture, r, muS);
-    float opticalDepth = CloudDensityPathToSun(point, sun, float(clouds.sunSamples) * clouds.sunStep);  // density x km
+    float opticalDepth = CloudDensityPathToSun(point, sun, float(clouds.sunSamples) * clouds.sunStep, footprintKm);  // density x km
     vec3 light = vec3(0.0);
     float a = 1.0;
     float b = 1.0;
@@ -52,27 +52,34 @@ vec3 CloudSource(vec3 point, vec3 sun, float cosTheta, float density) {
 
 // Eq. 15-16 from `start` to `end` km along `dir` from `origin` (km from the planet centre),
 // at most `budget` small steps.
-CloudSegmentResult MarchCloudSegment(vec3 origin, vec3 dir, float start, float end, vec3 sun, int budget) {
+CloudSegmentResult MarchCloudSegment(vec3 origin, vec3 dir, float start, float end, vec3 sun, int budget, float jitter,
+                                     float minFootprintKm) {
     CloudSegmentResult result;
     result.transmittance = vec3(1.0);
     result.inscatter = vec3(0.0);
     result.steps = 0;
     result.skipped = 0;
     float cosTheta = dot(dir, sun);
-    // The step grows where the budget could not cross the segment at clouds.stepKm.
+    // The step grows where the budget could not cross the segment at clouds.stepKm, and
+    // with the pixel's footprint (half of it) where the far field smooths the clouds.
     float step = max(clouds.stepKm, (end - start) / float(max(budget, 1)));
+    float fromCamera = length(origin - clouds.cameraFromCentre);  // the sea's reflected rays start away from it
+    // Each step [t, t + dt] is sampled a fraction `jitter` of the way in (1/2: the midpoint
+    // rule): neighbouring pixels sample at different depths, which turns the steps' banding
+    // into fine noise, and the steps still cover the segment.
     float t = start;
     for (int i = 0; i < 4 * clouds.maxSteps && t < end; ++i) {
-        vec3 point = origin + dir * t;
-        float density = CloudDensity(point);
+        float footprint = max((fromCamera + t) * clouds.pixelAngle, minFootprintKm);
+        float dt = min(max(step, 0.5 * footprint), end - t);
+        vec3 point = origin + dir * (t + jitter * dt);
+        float density = CloudDensityAt(point, footprint);
         if (density < 0.0) {  // no cloud within the zero-density border: one large step
-            t += max(clouds.largeStepKm, step);
+            t += jitter * dt + max(clouds.largeStepKm, step);
             result.skipped += 1;
             continue;
         }
-        float dt = min(step, end - t);
         if (density > 0.0) {
-            vec3 source = CloudSource(point + dir * (0.5 * dt), sun, cosTheta, density);
+            vec3 source = CloudSource(point, sun, cosTheta, density, footprint);
             CloudMarchStep(density, dt, clouds.extinction, clouds.scattering, source, clouds.energyConservingStep != 0,
                            result.transmittance, result.inscatter);
         }
@@ -95,8 +102,12 @@ struct ViewMarch {
 // `dir`, or space when `distance` <= 0 (then the sky behind is in `inscatter`, and
 // `transmittance` is that of the whole ray, for the sun disc). `slicesPerCrossing` atmosphere
 // slices per crossing of the layer and `stepBudget` cloud steps at most: the sky pass gives
-// the preset's, the sea's reflection fewer.
-ViewMarch MarchView(vec3 origin, vec3 dir, float distance, vec3 sun, int slicesPerCrossing, int stepBudget) {
+// the preset's, the sea's reflection fewer. `jitter` in [0, 1): where in its first step the
+// cloud march starts (a per-pixel noise in the sky pass, 1/2 elsewhere). `minFootprintKm`:
+// the smallest footprint the density is seen with; the sea's reflection asks for the far
+// field (its few steps would alias the volume, and waves blur the reflection anyway).
+ViewMarch MarchView(vec3 origin, vec3 dir, float distance, vec3 sun, int slicesPerCrossing, int stepBudget, float jitter,
+                    float minFootprintKm) {
     ViewMarch m;
     m.transmittance = vec3(1.0);
     m.inscatter = vec3(0.0);
@@ -125,7 +136,7 @@ ViewMarch MarchView(vec3 origin, vec3 dir, float distance, vec3 sun, int slicesP
             float a = crossing.x + float(s) * width;
             vec3 sliceTransmittance;
             vec3 slice = SkyRadianceToPoint(origin + dir * a, dir, width, sun, sliceTransmittance);
-            CloudSegmentResult c = MarchCloudSegment(origin, dir, a, a + width, sun, budget);
+            CloudSegmentResult c = MarchCloudSegment(origin, dir, a, a + width, sun, budget, jitter, minFootprintKm);
             CombineSlice(sliceTransmittance, slice, c.transmittance, c.inscatter, m.transmittance, m.inscatter);
             m.steps += c.steps;
             m.skipped += c.skipped;

@@ -43,6 +43,55 @@ Number CloudCoverageRemap(Number texture_value, Number coverage) {
     return clamp((texture_value - (1.0 - coverage)) / coverage, Number(0.0), Number(1.0));
 }
 
+// The coverage at a place: the weather map's coverage there (mean 1/2 over the sphere)
+// scaled by the layer's coverage parameter so that the parameter is the mean over the
+// sphere: below 1/2 the map is scaled down to 0, above it the map is raised towards
+// overcast (1 everywhere at 1). Piecewise linear, continuous at 1/2 where it is the map.
+Number CloudLocalCoverage(Number map_coverage, Number coverage) {
+    return coverage <= 0.5 ? 2.0 * coverage * map_coverage
+                           : map_coverage + (2.0 * coverage - 1.0) * (1.0 - map_coverage);
+}
+
+// The per-type vertical profile (noise/weather_map.h): at a height `fraction` of the layer
+// (0 bottom, 1 top) a cloud of type t (0 stratus, 0.5 cumulus, 1 high thin cloud) fills
+// [b(t), c(t)], piecewise linear through (t, b, c) = (0, 0, 0.25), (0.5, 0, 0.7),
+// (1, 0.8, 1), faded inside that interval the way Eq. 13 fades the whole layer.
+void CloudTypeBounds(Number type, OUT(Number) bottom, OUT(Number) top) {
+    Number t = clamp(type, Number(0.0), Number(1.0));
+    bottom = t <= 0.5 ? Number(0.0) : 1.6 * (t - 0.5);
+    top = t <= 0.5 ? 0.25 + 0.9 * t : 0.7 + 0.6 * (t - 0.5);
+}
+
+Number CloudTypeHeightSignal(Number fraction, Number type) {
+    Number b;
+    Number c;
+    CloudTypeBounds(type, b, c);
+    if (fraction <= b || fraction >= c) return Number(0.0);
+    Number x = 2.0 * (fraction - b) / (c - b) - 1.0;
+    return 1.0 - x * x;
+}
+
+// The share of the layer's depth a cloud of type t spans (c(t) - b(t) above).
+Number CloudTypeProfileWidth(Number type) {
+    Number b;
+    Number c;
+    CloudTypeBounds(type, b, c);
+    return c - b;
+}
+
+// The far field: where a pixel's footprint spans many voxels, the volume would only alias
+// (speckle from orbit), so the density becomes a smooth one whose vertical column has the
+// transmittance 1 - coverage: looking down, the share of the ground a cloud field hides is
+// its coverage, as in a satellite image. With height signal h, the column of h is
+// column_fraction x depth (2/3 of the profile's span for Eq. 13's parabola), so
+//   density = h (-ln(1 - coverage')) / (extinction x column_fraction x depth),
+// coverage' = 0.98 coverage keeping the overcast column finite (T = 2 %).
+Number CloudFarFieldDensity(Number coverage, Number height_signal, Number column_fraction, Length depth,
+                            Number extinction) {
+    Number tau = -log(1.0 - 0.98 * clamp(coverage, Number(0.0), Number(1.0)));
+    return height_signal * tau / max(extinction * column_fraction * depth, Number(1e-9));
+}
+
 // Henyey-Greenstein phase function, per steradian, for the cosine between the light's
 // direction of travel and the direction towards the viewer (1 = straight through).
 Number HenyeyGreenstein(Number g, Number cos_theta) {

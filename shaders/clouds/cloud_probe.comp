@@ -22,7 +22,7 @@ void main() {
     int i = int(gl_GlobalInvocationID.x);
     if (i >= rayCount) return;
     ViewMarch m = MarchView(rays[3 * i].xyz, rays[3 * i + 1].xyz, rays[3 * i].w, rays[3 * i + 2].xyz, clouds.atmosphereSlices,
-                            clouds.maxSteps);
+                            clouds.maxSteps, 0.5, 0.0);
     results[2 * i] = vec4(m.transmittance, float(m.steps));
     results[2 * i + 1] = vec4(m.inscatter, float(m.skipped));
 }

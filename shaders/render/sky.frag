@@ -36,8 +36,10 @@ vec3 throughWater(vec3 surface, float distance) {
 // In air: clouds and aerial perspective to the surface point, or to space and the sun's disc.
 vec3 throughAir(vec3 dir, vec3 surface, float distance) {
     vec3 sun = frame.sunDirection;
+    // Interleaved gradient noise (Jimenez 2014): a different start in each pixel of a 3x3 block.
+    float jitter = fract(52.9829189 * fract(dot(gl_FragCoord.xy, vec2(0.06711056, 0.00583715))));
     ViewMarch m = MarchView(cameraFromPlanetCentreKm(), dir, distance / M_PER_KM, sun, clouds.atmosphereSlices,
-                            clouds.maxSteps);
+                            clouds.maxSteps, jitter, 0.0);
     if (distance <= 0.0) return m.inscatter + m.transmittance * SunDiscRadiance(dir, sun);
     return m.transmittance * surface + m.inscatter;
 }

@@ -146,7 +146,7 @@ int runBench(const BenchOptions& o) {
     const std::string renderer = gl::rendererDescription();
     std::printf("planet bench on %s via %s, %dx%d, %d frames after %d warm-up\n", renderer.c_str(),
                 context.platform().c_str(), size.x, size.y, o.frames, o.warmup);
-    Renderer frame(paths.shaders(), atmosphere::tableSizesFor(o.common.tables, renderer));
+    Renderer frame(paths.shaders(), atmosphere::tableSizesFor(o.common.tables, renderer), session.continents);
 
     std::vector<BenchRow> rows;
     if (o.suite == "terrain") {

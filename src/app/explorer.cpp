@@ -138,12 +138,14 @@ ControlInput pollControls(GLFWwindow* window, PendingInput& pending) {
 class Explorer {
 public:
     Explorer(const ExploreOptions& options, GLFWwindow* window, const DataPaths& paths, Session session)
-        : options_(options), window_(window), session_(std::move(session)), renderer_(paths.shaders(), atmosphere::tableSizesFor(options.common.tables, gl::rendererDescription())),
+        : options_(options), window_(window), session_(std::move(session)), renderer_(paths.shaders(), atmosphere::tableSizesFor(options.common.tables, gl::rendererDescription()),
+                    session_.continents),
           rendererName_(gl::rendererDescription()),
           presetPath_("out/presets/" + session_.presetName + ".toml"),  // never the shipped preset by default
           lastValidScene_(session_.scene),
           showUi_(!options.noPanels) {
         session_.scene.time_s = options.common.time;
+        renderer_.setBackgroundBakes(true);  // a cloud rebake shows as progress in the Scene panel
         glfwSetWindowUserPointer(window_, &pending_);
         glfwSetScrollCallback(window_, [](GLFWwindow* w, double, double dy) {
             static_cast<PendingInput*>(glfwGetWindowUserPointer(w))->scroll += dy;
@@ -246,7 +248,7 @@ void Explorer::drawUi() {
     ImGui::NewFrame();
     if (showUi_) {
         drawProfilerPanel(renderer_.profiler(), rendererName_);
-        if (drawSceneParams(session_.scene, renderer_.atmosphere().rebuildProgress())) acceptOrRevertEdit();
+        if (drawSceneParams(session_.scene, renderer_.atmosphere().rebuildProgress(), renderer_.cloudBakeProgress())) acceptOrRevertEdit();
         if (session_.scene.terrain.ocean && drawWavePanel(session_.scene, clock_)) acceptOrRevertEdit();
         const CameraPanelResult r = drawCameraPanel(session_.camera, controller_, session_.scene.planetRadiusM(),
                                                     session_.views, presetPath_, status_);

@@ -95,7 +95,7 @@ void drawProfilerPanel(const Profiler& profiler, const std::string& renderer) {
     ImGui::End();
 }
 
-bool drawSceneParams(Scene& scene, double rebuildProgress) {
+bool drawSceneParams(Scene& scene, double rebuildProgress, double cloudBakeProgress) {
     ImGui::SetNextWindowPos(ImVec2(10, 330), ImGuiCond_FirstUseEver);
     ImGui::SetNextWindowSize(ImVec2(560, 420), ImGuiCond_FirstUseEver);
     bool changed = false;
@@ -112,6 +112,9 @@ bool drawSceneParams(Scene& scene, double rebuildProgress) {
             open = ImGui::CollapsingHeader(section.c_str(), ImGuiTreeNodeFlags_DefaultOpen);
             if (open && section == "atmosphere" && rebuildProgress < 1.0)
                 ImGui::ProgressBar(static_cast<float>(rebuildProgress), ImVec2(-1.0f, 0.0f), "rebuilding tables");
+            if (open && section == "clouds" && cloudBakeProgress < 1.0)
+                ImGui::ProgressBar(static_cast<float>(cloudBakeProgress), ImVec2(-1.0f, 0.0f),
+                                   "baking the cloud volume and weather map");
         }
         if (!open) continue;
         ImGui::PushID(spec.path().c_str());

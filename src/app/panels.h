@@ -18,8 +18,9 @@ void drawProfilerPanel(const Profiler& profiler, const std::string& renderer);
 // One widget per row of the parameter table, grouped by section. Returns true
 // when a value changed (already clamped to its valid range). While the
 // atmosphere tables are being rebuilt, `rebuildProgress` in [0, 1) shows as a
-// bar (the old tables stay in use until then); pass 1 when idle.
-bool drawSceneParams(Scene& scene, double rebuildProgress);
+// bar (the old tables stay in use until then); pass 1 when idle. `cloudBakeProgress`
+// likewise for a background bake of the clouds' volume and weather map.
+bool drawSceneParams(Scene& scene, double rebuildProgress, double cloudBakeProgress);
 
 struct CameraPanelResult {
     int jumpToView = -1;   // index into views, or -1

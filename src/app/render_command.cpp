@@ -48,7 +48,7 @@ void renderStill(const CommonOptions& common, const std::vector<std::string>& ou
     gl::installDebugOutput(&messages, common.glDebug);  // always to the log; --gl-debug: debug context, synchronous
     logInfo("rendering " + std::to_string(size.x) + "x" + std::to_string(size.y) + " on " +
             gl::rendererDescription() + " via " + context.platform());
-    Renderer renderer(paths.shaders(), atmosphere::tableSizesFor(common.tables, gl::rendererDescription()));
+    Renderer renderer(paths.shaders(), atmosphere::tableSizesFor(common.tables, gl::rendererDescription()), session.continents);
     renderer.render(session.scene, session.camera, size);
 
     for (const std::string& out : outputs) {

@@ -13,7 +13,8 @@ glm::dvec3 windDriftKm(const Scene& scene) {
     return towards * (scene.clouds.wind_speed_mps * scene.time_s / 1000.0);
 }
 
-CloudBlock makeCloudBlock(const Scene& scene, const Camera& camera, double largeStepKm) {
+CloudBlock makeCloudBlock(const Scene& scene, const Camera& camera, double largeStepKm, int volumeSize,
+                          double pixelAngle) {
     const CloudParams& c = scene.clouds;
     const double radius = scene.planet.radius_km;
     const double w = c.tile_width_km;
@@ -45,6 +46,10 @@ CloudBlock makeCloudBlock(const Scene& scene, const Camera& camera, double large
     b.multipleScatteringOctaves = c.multiple_scattering_octaves;
     b.energyConservingStep = c.energy_conserving_step ? 1 : 0;
     b.constantDensity = c.constant_density ? 1 : 0;
+    b.typeProfiles = c.type_profiles ? 1 : 0;
+    b.pixelAngle = static_cast<float>(pixelAngle);
+    // No far field without a volume (the footprint never reaches twice "no voxel").
+    b.voxelKm = volumeSize > 0 ? static_cast<float>(w / volumeSize) : 1.0e30f;
     b.enabled = c.enabled && (c.constant_density || c.coverage > 0.0) && c.density_scale > 0.0 &&
                         c.extinction_per_km > 0.0
                     ? 1

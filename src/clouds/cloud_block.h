@@ -35,11 +35,15 @@ struct CloudBlock {
     int energyConservingStep;
     int constantDensity;
     int enabled;
-    int padding0 = 0;
+    int typeProfiles;
+    float pixelAngle;
+    float voxelKm;
+    float padding1 = 0.0f;
+    float padding2 = 0.0f;
 };
 static_assert(offsetof(CloudBlock, cameraFromCentre) == 16 && offsetof(CloudBlock, bottomRadius) == 28 &&
                   offsetof(CloudBlock, sunSamples) == 80 && offsetof(CloudBlock, enabled) == 104 &&
-                  sizeof(CloudBlock) == 112,
+                  offsetof(CloudBlock, pixelAngle) == 112 && sizeof(CloudBlock) == 128,
               "CloudBlock must match std140 (shaders/clouds/cloud_block.glsl)");
 
 // The drift of the clouds after `time_s` seconds of wind: a world-space translation, km,
@@ -48,7 +52,10 @@ static_assert(offsetof(CloudBlock, cameraFromCentre) == 16 && offsetof(CloudBloc
 glm::dvec3 windDriftKm(const Scene& scene);
 
 // The block for a scene seen from a camera. `largeStepKm` is the step the volume's
-// zero-density border allows (cloud_resources.h); `enabled` false gives the clear sky.
-CloudBlock makeCloudBlock(const Scene& scene, const Camera& camera, double largeStepKm);
+// zero-density border allows and `volumeSize` its voxels per side (cloud_resources.h; 0:
+// none, no far field); `pixelAngle` the angle a pixel spans (0: no far field either).
+// `enabled` false gives the clear sky.
+CloudBlock makeCloudBlock(const Scene& scene, const Camera& camera, double largeStepKm, int volumeSize = 0,
+                          double pixelAngle = 0.0);
 
 }  // namespace planet::clouds

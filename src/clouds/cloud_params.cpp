@@ -47,6 +47,32 @@ void addCloudParams(std::vector<ParamSpec>& table) {
     add("constant_density", "", 0.0, 1.0,
         "A layer of uniform density (density_scale) instead of the noise, for analytic checks.",
         &CloudParams::constant_density);
+    add("type_profiles", "", 0.0, 1.0,
+        "Shape the layer's vertical profile by the weather map's cloud type (stratus low and flat, cumulus heaped, "
+        "high thin sheets near the top); off: Michelic Eq. 13 alone.",
+        &CloudParams::type_profiles);
+    add("volume_seed", "", 0.0, 1e6, "Seed of the baked density volume.", &CloudParams::volume_seed);
+    add("volume_size", "voxels", 16.0, 512.0, "Voxels per side of the baked density volume (Michelic: 256).",
+        &CloudParams::volume_size);
+    add("shape_frequency", "cells", 1.0, 64.0, "Perlin-Worley shape cells per tile of the volume.",
+        &CloudParams::shape_frequency);
+    add("detail_frequency", "cells", 1.0, 256.0, "Worley erosion cells per tile of the volume.",
+        &CloudParams::detail_frequency);
+    add("erosion", "", 0.0, 1.0, "How deeply the Worley detail erodes the shapes' edges.", &CloudParams::erosion);
+    add("cloud_fraction", "", 0.01, 0.99, "Share of the volume's voxels that are cloud (before the coverage).",
+        &CloudParams::cloud_fraction);
+    add("border_voxels", "voxels", 2.0, 32.0,
+        "Zero-density border around every cloud in the volume (Michelic fig. 9); empty space is crossed in steps of "
+        "border_voxels - 1 voxels.",
+        &CloudParams::border_voxels);
+    add("weather_seed", "", 0.0, 1e6, "Seed of the weather map.", &CloudParams::weather_seed);
+    add("weather_map_size", "texels", 4.0, 4096.0, "Texels per cube face of the weather map.",
+        &CloudParams::weather_map_size);
+    add("weather_frequency", "1/radius", 0.01, 100.0, "Cycles per planet radius of the largest weather systems.",
+        &CloudParams::weather_frequency);
+    add("latitude_bands", "", 0.0, 2.0,
+        "Strength of the zonal pattern: cloudy along the equator and the storm tracks, clear under the subtropics.",
+        &CloudParams::latitude_bands);
     add("wind_speed_mps", "m/s", 0.0, 200.0, "The clouds drift with the scene's clock at this speed.",
         &CloudParams::wind_speed_mps);
     add("wind_bearing_deg", "deg", -360.0, 360.0, "Direction the clouds drift towards, clockwise from north.",

@@ -11,7 +11,7 @@
 namespace planet {
 
 struct CloudParams {
-    bool enabled = false;                  // draw the cloud layer
+    bool enabled = true;                   // draw the cloud layer
     double bottom_altitude_km = 1.5;       // bottom of the layer above the planet radius, km, [0, 100]
     double top_altitude_km = 4.0;          // top of the layer, km, [0.01, 200], > bottom
     double tile_width_km = 16.0;           // w of Michelic Eq. 12: the density volume repeats every w, km, [0.1, 1000]
@@ -27,10 +27,24 @@ struct CloudParams {
     double step_km = 0.1;                  // march step inside clouds, km, [0.001, 100]
     int max_steps = 256;                   // cloud steps per pixel at most, [1, 8192]
     int atmosphere_slices = 4;             // atmosphere slices per crossing of the layer (Eq. 17-18), [1, 64]
-    int multiple_scattering_octaves = 1;   // Wrenninge's octaves; 1: single scattering only, [1, 8]
+    int multiple_scattering_octaves = 4;   // Wrenninge's octaves; 1: single scattering only, [1, 8]
     double powder = 0.0;                   // strength of the dark-edge "powder" term, [0, 1]; 0: off
     bool energy_conserving_step = true;    // integrate each step's in-scattering over its extinction (Hillaire 2016)
     bool constant_density = false;         // a layer of uniform density density_scale instead of the noise
+    bool type_profiles = true;             // the weather map's cloud type shapes the vertical profile (else Eq. 13 alone)
+    // The baked density volume (noise/cloud_volume.h); a change rebakes it (cached).
+    int volume_seed = 1;                   // any int
+    int volume_size = 256;                 // voxels per side, [16, 512]; 256^3 half floats are 32 MiB
+    int shape_frequency = 4;               // Perlin-Worley shape cells per tile, [1, 64]
+    int detail_frequency = 16;             // Worley erosion cells per tile, [1, 256]
+    double erosion = 0.4;                  // how deeply the detail eats the shapes' edges, [0, 1]
+    double cloud_fraction = 0.4;           // share of the volume's voxels that are cloud, [0.01, 0.99]
+    int border_voxels = 4;                 // zero-density border around clouds (Michelic fig. 9), voxels, [2, 32]
+    // The weather map (noise/weather_map.h): where the clouds are and of which type; a change rebakes it.
+    int weather_seed = 1;                  // any int
+    int weather_map_size = 256;            // texels per cube face, [4, 4096]
+    double weather_frequency = 2.0;        // cycles per planet radius of the largest weather systems, (0, 100]
+    double latitude_bands = 0.5;           // strength of the zonal pattern (ITCZ, subtropics, storm tracks), [0, 2]
     double wind_speed_mps = 10.0;          // the clouds drift with the scene's clock, m/s, [0, 200]
     double wind_bearing_deg = 90.0;        // towards which they drift, clockwise from north, [-360, 360]
 };

@@ -1,113 +1,180 @@
 #include "clouds/cloud_resources.h"
 
 #include <algorithm>
-#include <cmath>
+#include <chrono>
 #include <string>
+#include <vector>
 
-#include "noise/noise.h"
 #include "render/bindings.h"
+#include "util/log.h"
 
 namespace planet::clouds {
 
+noise::CloudVolumeParams volumeParamsOf(const CloudParams& c) {
+    noise::CloudVolumeParams p;
+    p.seed = c.volume_seed;
+    p.size = c.volume_size;
+    p.shapeFrequency = c.shape_frequency;
+    p.detailFrequency = c.detail_frequency;
+    p.erosion = c.erosion;
+    p.cloudFraction = c.cloud_fraction;
+    p.borderVoxels = c.border_voxels;
+    return p;
+}
+
+noise::WeatherParams weatherParamsOf(const CloudParams& c) {
+    noise::WeatherParams p;
+    p.seed = c.weather_seed;
+    p.coverage = 0.5;  // the layer's coverage scales it live (CloudLocalCoverage): no rebake
+    p.frequency = c.weather_frequency;
+    p.latitudeBands = c.latitude_bands;
+    return p;
+}
+
 namespace {
 
-// Marks every voxel within `border` voxels (Chebyshev distance, wrapping) of a cloud voxel:
-// separable running maxima along x, y and z.
-std::vector<unsigned char> nearCloud(const DensityVolume& v, int border) {
-    const int n = v.size;
-    std::vector<unsigned char> near(v.values.size());
-    for (std::size_t i = 0; i < near.size(); ++i) near[i] = v.values[i] > 0.0f;
-    std::vector<unsigned char> line(n), out(n);
-    const int strides[3] = {1, n, n * n};
-    for (int axis = 0; axis < 3; ++axis) {
-        const int stride = strides[axis];
-        for (int a = 0; a < n; ++a) {
-            for (int b = 0; b < n; ++b) {
-                // The start of a line along `axis`: the other two coordinates are a and b.
-                const int base = axis == 0 ? (a * n + b) * n : axis == 1 ? a * n * n + b : a * n + b;
-                for (int i = 0; i < n; ++i) line[i] = near[base + i * stride];
-                for (int i = 0; i < n; ++i) {
-                    unsigned char any = 0;
-                    for (int d = -border; d <= border && !any; ++d) any = line[((i + d) % n + n) % n];
-                    out[i] = any;
-                }
-                for (int i = 0; i < n; ++i) near[base + i * stride] = out[i];
-            }
-        }
-    }
-    return near;
-}
-
-}  // namespace
-
-DensityVolume interimDensityVolume(int size, int borderVoxels) {
-    DensityVolume v;
-    v.size = size;
-    v.borderVoxels = borderVoxels;
-    v.values.resize(static_cast<std::size_t>(size) * size * size);
-    for (int z = 0; z < size; ++z)
-        for (int y = 0; y < size; ++y)
-            for (int x = 0; x < size; ++x) {
-                const glm::vec3 p = (glm::vec3(x, y, z) + 0.5f) / float(size);
-                float shape = 0.0f, amplitude = 0.5f, total = 0.0f;
-                for (int octave = 0; octave < 3; ++octave) {
-                    const float cells = 4.0f * float(1 << octave);
-                    shape += amplitude * (1.0f - noise::worley(p * cells, cells));
-                    total += amplitude;
-                    amplitude *= 0.5f;
-                }
-                shape /= total;
-                v.values[(static_cast<std::size_t>(z) * size + y) * size + x] =
-                    std::clamp((shape - 0.55f) / 0.3f, 0.0f, 1.0f);
-            }
-    const std::vector<unsigned char> near = nearCloud(v, borderVoxels);
-    for (std::size_t i = 0; i < v.values.size(); ++i)
-        if (v.values[i] <= 0.0f) v.values[i] = near[i] ? 0.0f : -1.0f;
-    return v;
-}
-
-gl::Texture makeVolumeTexture(const DensityVolume& volume) {
-    gl::Texture t(GL_TEXTURE_3D);
-    glTextureStorage3D(t.id(), 1, GL_R16F, volume.size, volume.size, volume.size);
-    glTextureSubImage3D(t.id(), 0, 0, 0, 0, volume.size, volume.size, volume.size, GL_RED, GL_FLOAT,
-                        volume.values.data());
+void setFilters(const gl::Texture& t, GLenum wrap) {
     glTextureParameteri(t.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
     glTextureParameteri(t.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-    for (GLenum wrap : {GL_TEXTURE_WRAP_S, GL_TEXTURE_WRAP_T, GL_TEXTURE_WRAP_R})
-        glTextureParameteri(t.id(), wrap, GL_REPEAT);
-    t.label("cloud volume " + std::to_string(volume.size) + "^3");
+    for (GLenum axis : {GL_TEXTURE_WRAP_S, GL_TEXTURE_WRAP_T, GL_TEXTURE_WRAP_R}) glTextureParameteri(t.id(), axis, wrap);
+}
+
+// The volume as a GL texture: R16F (the cache's half floats as they are), GL_REPEAT on
+// every axis (Eq. 12's fract), trilinear.
+gl::Texture makeVolumeTexture(const noise::CloudVolume& volume) {
+    gl::Texture t(GL_TEXTURE_3D);
+    const int n = volume.size;
+    glTextureStorage3D(t.id(), 1, GL_R16F, n, n, n);
+    const std::vector<std::uint16_t> half = noise::cloudVolumeHalf(volume);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 2);
+    glTextureSubImage3D(t.id(), 0, 0, 0, 0, n, n, n, GL_RED, GL_HALF_FLOAT, half.data());
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+    setFilters(t, GL_REPEAT);
+    t.label("cloud volume " + std::to_string(n) + "^3");
     return t;
 }
 
-CloudResources::CloudResources() {
+// The weather map as a seamless cube map, RG16F (coverage, type).
+gl::Texture makeWeatherTexture(const noise::CubeMap& map) {
+    gl::Texture t(GL_TEXTURE_CUBE_MAP);
+    const int n = map.size;
+    glTextureStorage2D(t.id(), 1, GL_RG16F, n, n);
+    std::vector<float> rg(2 * static_cast<std::size_t>(n) * n);
+    for (int face = 0; face < 6; ++face) {
+        for (std::size_t i = 0; i < rg.size() / 2; ++i) {
+            const glm::vec4& texel = map.texels[static_cast<std::size_t>(face) * n * n + i];
+            rg[2 * i] = texel.x;
+            rg[2 * i + 1] = texel.y;
+        }
+        glTextureSubImage3D(t.id(), 0, 0, 0, face, n, n, 1, GL_RG, GL_FLOAT, rg.data());
+    }
+    setFilters(t, GL_CLAMP_TO_EDGE);
+    t.label("weather map " + std::to_string(n) + "^2 x 6");
+    return t;
+}
+
+bool drawn(const CloudParams& c) { return c.enabled && !c.constant_density; }
+
+}  // namespace
+
+CloudResources::CloudResources(std::filesystem::path cacheRoot) : cacheRoot_(std::move(cacheRoot)) {
     glNamedBufferStorage(buffer_.id(), sizeof(CloudBlock), nullptr, GL_DYNAMIC_STORAGE_BIT);
     buffer_.label("CloudBlock");
-    // The weather map until the baked one lands: full coverage everywhere (the layer's
-    // coverage parameter alone decides).
+    // Placeholders until a bake: one empty voxel, no coverage (shaders always have a texture bound).
+    glTextureStorage3D(volume_.id(), 1, GL_R16F, 1, 1, 1);
+    const float empty = -1.0f;
+    glTextureSubImage3D(volume_.id(), 0, 0, 0, 0, 1, 1, 1, GL_RED, GL_FLOAT, &empty);
+    setFilters(volume_, GL_REPEAT);
+    volume_.label("cloud volume (none)");
     glTextureStorage2D(weather_.id(), 1, GL_RG16F, 1, 1);
-    const float full[2] = {1.0f, 0.5f};
-    for (int face = 0; face < 6; ++face) glTextureSubImage3D(weather_.id(), 0, 0, 0, face, 1, 1, 1, GL_RG, GL_FLOAT, full);
-    glTextureParameteri(weather_.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-    glTextureParameteri(weather_.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-    weather_.label("weather map (uniform)");
+    const float clear[2] = {0.0f, 0.5f};
+    for (int face = 0; face < 6; ++face) glTextureSubImage3D(weather_.id(), 0, 0, 0, face, 1, 1, 1, GL_RG, GL_FLOAT, clear);
+    setFilters(weather_, GL_CLAMP_TO_EDGE);
+    weather_.label("weather map (none)");
+}
+
+CloudResources::~CloudResources() {
+    if (pending_.valid()) pending_.wait();  // the worker reads nothing of ours, but must not outlive the process' GL
 }
 
 double CloudResources::largeStepKm(double tileWidthKm) const {
     if (volumeSize_ == 0) return 0.0;
-    // A trilinear sample < 0 guarantees no cloud voxel within border - 1 voxels of it.
+    // A trilinear sample < 0 guarantees no cloud voxel within border - 1 voxels of it (cloud_volume.h).
     return tileWidthKm * double(std::max(borderVoxels_ - 1, 0)) / double(volumeSize_);
 }
 
-bool CloudResources::update(const Scene& scene, const Camera& camera) {
-    bool made = false;
-    if (volumeSize_ == 0) {
-        const DensityVolume v = interimDensityVolume(64, 3);
-        volume_ = makeVolumeTexture(v);
-        volumeSize_ = v.size;
-        borderVoxels_ = v.borderVoxels;
-        made = true;
+double CloudResources::bakeProgress() const {
+    return pending_.valid() && pendingProgress_ ? std::min(pendingProgress_->load(), 0.999) : 1.0;
+}
+
+bool CloudResources::needsBake(const CloudParams& c) const {
+    return drawn(c) && (volumeParams_ != volumeParamsOf(c) ||
+                        weatherParams_ != std::make_pair(weatherParamsOf(c), c.weather_map_size));
+}
+
+CloudResources::Baked CloudResources::bake(const CloudParams& c, const std::shared_ptr<std::atomic<double>>& progress) const {
+    Baked b;
+    b.volumeParams = volumeParamsOf(c);
+    b.weatherParams = weatherParamsOf(c);
+    b.weatherSize = c.weather_map_size;
+    const bool volume = volumeParams_ != b.volumeParams;
+    const bool weather = weatherParams_ != std::make_pair(b.weatherParams, b.weatherSize);
+    // The volume is the long part: 0-0.9 of the progress when both are made.
+    const double split = volume && weather ? 0.9 : volume ? 1.0 : 0.0;
+    auto report = [progress](double from, double to) -> noise::BakeProgress {
+        return [progress, from, to](double f) { progress->store(from + (to - from) * f); };
+    };
+    if (volume) b.volume = noise::loadOrBakeCloudVolume(b.volumeParams, cacheRoot_, report(0.0, split));
+    if (weather) b.weather = noise::loadOrBakeWeatherMap(b.weatherParams, b.weatherSize, cacheRoot_, report(split, 1.0));
+    progress->store(1.0);
+    return b;
+}
+
+void CloudResources::upload(Baked&& b) {
+    if (b.volume) {
+        volume_ = makeVolumeTexture(*b.volume);
+        volumeSize_ = b.volume->size;
+        borderVoxels_ = b.volumeParams.borderVoxels;
+        volumeStats_ = b.volume->stats;
+        volumeParams_ = b.volumeParams;
     }
-    block_ = makeCloudBlock(scene, camera, largeStepKm(scene.clouds.tile_width_km));
+    if (b.weather) {
+        weather_ = makeWeatherTexture(*b.weather);
+        weatherParams_ = std::make_pair(b.weatherParams, b.weatherSize);
+    }
+}
+
+bool CloudResources::update(const Scene& scene, const Camera& camera, int viewportHeight) {
+    bool made = false;
+    // A finished background bake comes in first (it may be for older parameters; the check
+    // below then starts the next).
+    if (pending_.valid() && pending_.wait_for(std::chrono::seconds(0)) == std::future_status::ready) {
+        try {
+            upload(pending_.get());
+            made = true;
+        } catch (const std::exception& e) {
+            logError(std::string("cloud bake failed: ") + e.what());
+            volumeParams_ = volumeParamsOf(pendingFor_);  // do not retry the same parameters every frame
+            weatherParams_ = std::make_pair(weatherParamsOf(pendingFor_), pendingFor_.weather_map_size);
+        }
+    }
+    const CloudParams& c = scene.clouds;
+    if (needsBake(c) && !pending_.valid()) {
+        pendingProgress_ = std::make_shared<std::atomic<double>>(0.0);
+        if (background_ && volumeSize_ > 0) {  // the first bake is waited for, as the first tables are
+            pendingFor_ = c;
+            pending_ = std::async(std::launch::async, [this, c, progress = pendingProgress_] { return bake(c, progress); });
+        } else {
+            upload(bake(c, pendingProgress_));
+            made = true;
+        }
+    }
+    // Until the first volume is there, the layer is drawn without clouds rather than from
+    // the placeholder.
+    Scene shown = scene;
+    if (drawn(c) && volumeSize_ == 0) shown.clouds.enabled = false;
+    block_ = makeCloudBlock(shown, camera, largeStepKm(c.tile_width_km), volumeSize_,
+                            camera.fovY_rad / std::max(viewportHeight, 1));
     glNamedBufferSubData(buffer_.id(), 0, sizeof block_, &block_);
     return made;
 }

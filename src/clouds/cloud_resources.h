@@ -1,52 +1,90 @@
-// The cloud layer's baked data on the GPU: the tiling density volume (a 3D texture, R16F,
-// GL_REPEAT, trilinear) and the weather map (a cube map: coverage, cloud type), made or
-// loaded in the renderer's prepare step when their parameters change, and the CloudBlock.
+// The cloud layer's baked data on the GPU: the tiling density volume (noise/cloud_volume.h;
+// a 3D texture, R16F, GL_REPEAT, trilinear) and the weather map (noise/weather_map.h; a
+// cube map, RG16F: coverage, cloud type), loaded from the cache or baked in the renderer's
+// prepare step when their parameters change, and the CloudBlock of each frame.
+//
+// A bake takes seconds (a 256^3 volume 11-27 s on two cores, once; the cache makes it a
+// load). A still waits for it, and so does the first frame of the explorer. The explorer asks
+// for background rebakes: a rebake runs on a worker thread, the frame keeps the textures it
+// had, and bakeProgress() tells the Scene panel how far it got; the textures are swapped in
+// at the first prepare after it finished.
 #pragma once
 
-#include <vector>
+#include <atomic>
+#include <filesystem>
+#include <future>
+#include <memory>
+#include <optional>
 
 #include "clouds/cloud_block.h"
 #include "gl/handle.h"
+#include "noise/cloud_volume.h"
+#include "noise/weather_map.h"
 #include "scene/camera.h"
 #include "scene/scene.h"
 
 namespace planet::clouds {
 
-// A tiling density volume: size^3 values, x fastest; > 0 cloud density, 0 empty within
-// `borderVoxels` of a cloud, < 0 empty farther away (Michelic fig. 9).
-struct DensityVolume {
-    int size = 0;
-    int borderVoxels = 0;
-    std::vector<float> values;
-};
+// The bake parameters of a scene's clouds.
+noise::CloudVolumeParams volumeParamsOf(const CloudParams& clouds);
+noise::WeatherParams weatherParamsOf(const CloudParams& clouds);
 
 class CloudResources {
 public:
-    CloudResources();
+    // `cacheRoot`: where the volume and the weather map are cached (noise::defaultCloudCacheRoot()).
+    explicit CloudResources(std::filesystem::path cacheRoot = noise::defaultCloudCacheRoot());
+    ~CloudResources();
+    CloudResources(const CloudResources&) = delete;
+    CloudResources& operator=(const CloudResources&) = delete;
 
-    // Makes the volume and the weather map when there are none yet (or their parameters
-    // changed) and uploads the block for this frame. Returns true when it made textures.
-    bool update(const Scene& scene, const Camera& camera);
-    // Binds the block at BLOCK_CLOUDS and the textures at UNIT_CLOUD_VOLUME, UNIT_WEATHER_MAP.
+    // Makes the volume and the weather map when the clouds are on and their bake parameters
+    // changed (nothing while they are off, or for a constant-density layer), and uploads
+    // the block for this frame. Returns true when it uploaded new textures.
+    // `viewportHeight` (pixels) sets the footprints of the far field.
+    bool update(const Scene& scene, const Camera& camera, int viewportHeight);
+    // Bind the block at BLOCK_CLOUDS and the textures at UNIT_CLOUD_VOLUME, UNIT_WEATHER_MAP.
     void bind() const;
     // The largest step through empty space the volume's border allows for a tile width, km.
     double largeStepKm(double tileWidthKm) const;
     const CloudBlock& block() const { return block_; }
 
+    // Bake on a worker thread and keep drawing meanwhile (the explorer); off: update waits.
+    void setBackgroundBakes(bool on) { background_ = on; }
+    // In [0, 1) while a background bake runs, 1 otherwise.
+    double bakeProgress() const;
+    // What the uploaded volume holds (zero before the first bake).
+    const noise::CloudVolumeStats& volumeStats() const { return volumeStats_; }
+
 private:
+    struct Baked {
+        noise::CloudVolumeParams volumeParams;
+        noise::WeatherParams weatherParams;
+        int weatherSize = 0;
+        std::optional<noise::CloudVolume> volume;  // absent when only the weather changed
+        std::optional<noise::CubeMap> weather;
+    };
+    Baked bake(const CloudParams& clouds, const std::shared_ptr<std::atomic<double>>& progress) const;
+    void upload(Baked&& baked);
+    bool needsBake(const CloudParams& clouds) const;
+
+    std::filesystem::path cacheRoot_;
     gl::Texture volume_{GL_TEXTURE_3D};
     gl::Texture weather_{GL_TEXTURE_CUBE_MAP};
     gl::Buffer buffer_;
     CloudBlock block_{};
+    bool background_ = false;
+
+    // What the textures hold (nullopt: the 1-texel placeholders).
+    std::optional<noise::CloudVolumeParams> volumeParams_;
+    std::optional<std::pair<noise::WeatherParams, int>> weatherParams_;
     int volumeSize_ = 0;
     int borderVoxels_ = 0;
+    noise::CloudVolumeStats volumeStats_;
+
+    // A background bake in flight and what it is for.
+    std::future<Baked> pending_;
+    CloudParams pendingFor_{};
+    std::shared_ptr<std::atomic<double>> pendingProgress_;
 };
-
-// The volume as a GL texture: R16F, GL_REPEAT on every axis (Eq. 12's fract), linear.
-gl::Texture makeVolumeTexture(const DensityVolume& volume);
-
-// An interim volume until the baked Perlin-Worley volume lands (noise/cloud_volume.h):
-// inverted tiled Worley noise, three octaves, thresholded, with its zero-density border.
-DensityVolume interimDensityVolume(int size, int borderVoxels);
 
 }  // namespace planet::clouds

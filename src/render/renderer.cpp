@@ -149,6 +149,8 @@ bool Renderer::historyUsable(const Scene& scene, const Camera& camera, bool resi
     return sceneKey_ == previousSceneKey_;
 }
 
+Renderer::~Renderer() { continents_->releaseTexture(); }
+
 void Renderer::prepare(const Scene& scene, const Camera& camera, glm::ivec2 size) {
     PrepareReport report;
     const bool resized = targets_.resize(size);
@@ -177,7 +179,7 @@ void Renderer::prepare(const Scene& scene, const Camera& camera, glm::ivec2 size
     glNamedBufferSubData(frameUniforms_.id(), 0, sizeof uniforms, &uniforms);
     glBindBufferBase(GL_UNIFORM_BUFFER, binding::BLOCK_FRAME, frameUniforms_.id());
     atmosphere_.bind();
-    report.cloudsUpdated = clouds_.update(scene, camera);
+    report.cloudsUpdated = clouds_.update(scene, camera, size.y);
     clouds_.bind();
     terrain_.prepare(scene, camera);
     if (scene.terrain.ocean) ocean_.prepare(scene, camera);

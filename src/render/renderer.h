@@ -87,6 +87,11 @@ public:
     // once per process for both; without one the renderer makes its own (default cache).
     Renderer(const std::filesystem::path& shaderRoot, const atmosphere::TableSizes& atmosphereTables,
              std::shared_ptr<terrain::Continents> continents = nullptr);
+    // Releases the continents' GL texture: the map may outlive this renderer's GL context
+    // (a Session owns it), its texture must not.
+    ~Renderer();
+    Renderer(const Renderer&) = delete;
+    Renderer& operator=(const Renderer&) = delete;
 
     // Renders one frame into targets(). `present`, when given, runs last as the
     // "ui" pass (the explorer blits LDR to its window and draws panels there),
@@ -100,6 +105,12 @@ public:
     // The continents map the terrain draws, also on the CPU (share it with the camera's ground).
     const terrain::Continents& continents() const { return *continents_; }
     Profiler& profiler() { return profiler_; }
+    // Bake the clouds' volume and weather map on a worker thread and draw meanwhile (the
+    // explorer); off (the default), a frame waits for them.
+    void setBackgroundBakes(bool on) { clouds_.setBackgroundBakes(on); }
+    // In [0, 1) while a background cloud bake runs, 1 otherwise.
+    double cloudBakeProgress() const { return clouds_.bakeProgress(); }
+    const clouds::CloudResources& clouds() const { return clouds_; }
     const PrepareReport& lastPrepare() const { return lastPrepare_; }
     int frameIndex() const { return frameIndex_; }
     std::vector<PassDeclaration> passDeclarations() const;

@@ -116,7 +116,8 @@ std::vector<SceneProblem> validateScene(const Scene& scene) {
         problems.push_back({"clouds.top_altitude_km", "top of the cloud layer " + formatNumber(c.top_altitude_km) +
                                                           " km must be above clouds.bottom_altitude_km " +
                                                           formatNumber(c.bottom_altitude_km) + " km"});
-    else if (c.enabled && !(scene.planet.radius_km + c.top_altitude_km < a.top_radius_km))
+    else if (c.enabled && a.top_radius_km > scene.planet.radius_km &&  // a broken atmosphere is its own problem
+             !(scene.planet.radius_km + c.top_altitude_km < a.top_radius_km))
         problems.push_back({"clouds.top_altitude_km", "top of the cloud layer " + formatNumber(c.top_altitude_km) +
                                                           " km must lie inside the atmosphere (atmosphere.top_radius_km - "
                                                           "planet.radius_km = " +
