@@ -7,6 +7,8 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <map>
+#include <sstream>
 
 #include <stb_image.h>
 
@@ -19,7 +21,14 @@ using planet::test::runCommand;
 
 namespace {
 
-using CliTest = planet::test::CliFixture;
+// The commands with the default preset: its clouds come from one shared cache.
+class CliTest : public planet::test::CliFixture {
+protected:
+    void SetUp() override {
+        CliFixture::SetUp();
+        shareCloudCache();
+    }
+};
 
 using planet::test::contains;
 
@@ -117,7 +126,8 @@ TEST_F(CliTest, BenchWritesTableCsvAndPlot) {
     std::ifstream csv(dir / "b.csv");
     std::string header, line;
     std::getline(csv, header);
-    EXPECT_EQ(header, "renderer,width,height,view,pass,frames,gpu_median_ms,gpu_p95_ms,cpu_median_ms,cpu_p95_ms");
+    EXPECT_EQ(header, "renderer,width,height,view,pass,frames,gpu_median_ms,gpu_p95_ms,cpu_median_ms,cpu_p95_ms,"
+                      "cloud_steps_per_pixel,cloud_skipped_share");
     int rows = 0;
     bool sawSpaceTonemap = false;
     while (std::getline(csv, line)) {
@@ -144,6 +154,43 @@ TEST_F(CliTest, BenchTerrainSuiteSweepsGridSizeAndOctaves) {
     for (std::size_t at = text.find(",terrain,"); at != std::string::npos; at = text.find(",terrain,", at + 1))
         ++configurations;
     EXPECT_EQ(configurations, 12u);  // grid 50/100/200 x continents only, 1, 5, 10 noise layers
+}
+
+TEST_F(CliTest, BenchCloudsSuiteSweepsStepAndSunSamplesAndCountsMarchSteps) {
+    const auto r = runCommand(planet("bench --suite clouds --size 32x18 --frames 1 --warmup 0 --csv c.csv --plot ''"));
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    std::ifstream csv(dir / "c.csv");
+    std::string text((std::istreambuf_iterator<char>(csv)), {});
+    // The five cloud views and the 3 x 4 sweep on the first, each with a frame row holding
+    // the march's steps per pixel and skipped share.
+    std::map<std::string, std::pair<double, double>> frames;
+    std::istringstream lines(text);
+    std::string line;
+    std::getline(lines, line);
+    EXPECT_TRUE(contains(line, "cloud_steps_per_pixel,cloud_skipped_share")) << line;
+    while (std::getline(lines, line)) {
+        std::vector<std::string> f;
+        std::stringstream fields(line);
+        for (std::string x; std::getline(fields, x, ',');) f.push_back(x);
+        ASSERT_GE(f.size(), 12u) << line;  // the renderer's name, quoted, may hold commas: count from the end
+        const std::size_t n = f.size();
+        if (f[n - 8] != "frame") continue;
+        frames[f[n - 9]] = {std::stod(f[n - 2]), std::stod(f[n - 1])};
+    }
+    for (const char* view : {"cumulus", "clouds", "deck", "orbit", "space", "cumulus/step0.2km/sun0",
+                             "cumulus/step0.05km/sun12"})
+        EXPECT_TRUE(frames.count(view)) << view << "\n" << text;
+    EXPECT_EQ(frames.size(), 5u + 12u) << text;
+    for (const auto& [view, m] : frames) {
+        EXPECT_GE(m.second, 0.0) << view;
+        EXPECT_LE(m.second, 1.0) << view;
+    }
+    // Looking up into a cumulus field takes more steps than the disc seen from space, and a
+    // halved step more steps than the preset's.
+    EXPECT_GT(frames["cumulus"].first, frames["space"].first);
+    EXPECT_GT(frames["cumulus/step0.05km/sun6"].first, frames["cumulus/step0.1km/sun6"].first);
+    // The sun samples do not change the view march.
+    EXPECT_EQ(frames["cumulus/step0.1km/sun0"].first, frames["cumulus/step0.1km/sun12"].first);
 }
 
 TEST_F(CliTest, BenchOceanSuiteSweepsWaveCounts) {

@@ -20,7 +20,9 @@
 
 #include <glm/glm.hpp>
 
+#include "noise/cloud_volume.h"
 #include "noise/continents.h"
+#include "noise/weather_map.h"
 #include "process.h"
 #include "test_util.h"
 #include "util/file_util.h"
@@ -420,7 +422,7 @@ TEST_F(ContinentsCache, LoadOrBakeBakesOnceThenReadsAndReplacesADamagedEntry) {
 using BakeCli = planet::test::CliFixture;
 
 TEST_F(BakeCli, BakesCachesAndWritesAPreview) {
-    const auto first = planet::test::runCommand(planet("bake --size 32 --seed 3 --preview p.png"));
+    const auto first = planet::test::runCommand(planet("bake --what continents --size 32 --seed 3 --preview p.png"));
     ASSERT_EQ(first.exitCode, 0) << first.output;
     EXPECT_TRUE(contains(first.output, "sea fraction: 0.6")) << first.output;
     ContinentParams p;
@@ -441,10 +443,10 @@ TEST_F(BakeCli, BakesCachesAndWritesAPreview) {
     stbi_image_free(png);
     EXPECT_TRUE(sea && land);
 
-    const auto second = planet::test::runCommand(planet("bake --size 32 --seed 3"));
+    const auto second = planet::test::runCommand(planet("bake --what continents --size 32 --seed 3"));
     ASSERT_EQ(second.exitCode, 0) << second.output;
     EXPECT_TRUE(contains(second.output, "cache hit")) << second.output;
-    const auto forced = planet::test::runCommand(planet("bake --size 32 --seed 3 --force"));
+    const auto forced = planet::test::runCommand(planet("bake --what continents --size 32 --seed 3 --force"));
     ASSERT_EQ(forced.exitCode, 0) << forced.output;
     EXPECT_FALSE(contains(forced.output, "cache hit")) << forced.output;
 }
@@ -452,7 +454,7 @@ TEST_F(BakeCli, BakesCachesAndWritesAPreview) {
 TEST_F(BakeCli, BakesWhatAPresetsTerrainUses) {
     // The preset's [terrain] parameters: the cache entry the terrain pass will look for.
     std::ofstream(dir / "small.toml") << "[terrain]\nseed = 4\nsea_fraction = 0.3\ncontinent_octaves = 3\n"
-                                         "continent_frequency = 2.5\ncontinent_map_size = 24\n";
+                                         "continent_frequency = 2.5\ncontinent_map_size = 24\n[clouds]\nenabled = false\n";
     const auto r = planet::test::runCommand(planet("bake --preset small.toml"));
     ASSERT_EQ(r.exitCode, 0) << r.output;
     EXPECT_TRUE(contains(r.output, "0.30000 requested")) << r.output;
@@ -462,6 +464,33 @@ TEST_F(BakeCli, BakesWhatAPresetsTerrainUses) {
     p.octaves = 3;
     p.frequency = 2.5;
     EXPECT_TRUE(fs::exists(dir / "cache" / "continents" / continentsCacheKey(p, 24) / "continents.exr")) << r.output;
+}
+
+TEST_F(BakeCli, BakesThePresetsCloudVolumeAndWeatherMapThenHitsTheCache) {
+    std::ofstream(dir / "cloudy.toml") << "[clouds]\nvolume_size = 32\ndetail_frequency = 8\nweather_map_size = 16\n";
+    const auto first = planet::test::runCommand(planet("bake --what clouds --preset cloudy.toml --weather-preview w.png"));
+    ASSERT_EQ(first.exitCode, 0) << first.output;
+    EXPECT_TRUE(contains(first.output, "cloud volume baked in")) << first.output;
+    EXPECT_TRUE(contains(first.output, "weather map baked in")) << first.output;
+    EXPECT_TRUE(contains(first.output, "0.4000 cloud")) << first.output;  // the preset's cloud_fraction
+    EXPECT_FALSE(fs::exists(dir / "cache" / "continents"));  // --what clouds
+    noise::CloudVolumeParams v;
+    v.size = 32;
+    v.detailFrequency = 8;
+    EXPECT_TRUE(fs::exists(dir / "cache" / "clouds" / ("volume-" + noise::cloudVolumeCacheKey(v)) / "cloud_volume.exr"));
+    noise::WeatherParams w;
+    EXPECT_TRUE(fs::exists(dir / "cache" / "clouds" / ("weather-" + noise::weatherMapCacheKey(w, 16)) / "weather_map.exr"));
+    EXPECT_TRUE(fs::exists(dir / "w.png"));
+    const auto second = planet::test::runCommand(planet("bake --what clouds --preset cloudy.toml"));
+    ASSERT_EQ(second.exitCode, 0) << second.output;
+    EXPECT_TRUE(contains(second.output, "cache hit: valid cloud volume")) << second.output;
+    EXPECT_TRUE(contains(second.output, "cache hit: valid weather map")) << second.output;
+    // No clouds in the preset: said, nothing baked.
+    std::ofstream(dir / "clear.toml") << "[clouds]\nenabled = false\n";
+    const auto clear = planet::test::runCommand(planet("bake --what clouds --preset clear.toml --cloud-cache cc"));
+    ASSERT_EQ(clear.exitCode, 0) << clear.output;
+    EXPECT_TRUE(contains(clear.output, "nothing to bake")) << clear.output;
+    EXPECT_FALSE(fs::exists(dir / "cc"));
 }
 
 TEST_F(BakeCli, RejectsABadSize) {

@@ -29,7 +29,7 @@ layout(std140, binding = BLOCK_CLOUDS) uniform CloudBlock {
     int typeProfiles;           // 1: the weather map's cloud type shapes the height signal
     float pixelAngle;           // rad a pixel spans (vertical fov / height): footprints for the far field
     float voxelKm;              // tileWidth / the volume's size; 0 before a volume is there
-    float padding1;
+    int statistics;             // 1: the sky pass counts its march steps (BUFFER_CLOUD_STATISTICS)
     float padding2;
 } clouds;
 

@@ -17,6 +17,7 @@ const int BLOCK_CLOUDS = 5;      // CloudBlock: the cloud layer (clouds/cloud_bl
 const int BUFFER_PROBE_INPUT = 0;   // the compute probes' inputs and outputs (tests and sky-probe)
 const int BUFFER_PROBE_OUTPUT = 1;
 const int BUFFER_OCEAN_WAVES = 3;   // one record per wave (ocean/ocean_waves.glsl)
+const int BUFFER_CLOUD_STATISTICS = 4;  // the sky pass's march step counts, when asked (planet bench)
 
 // Texture units.
 const int UNIT_GBUFFER_NORMAL = 0;          // RGBA16F world normal

@@ -20,6 +20,13 @@ layout(binding = UNIT_SURFACE_DISTANCE) uniform sampler2D surfaceDistance;
 
 layout(location = 0) out vec4 outRadiance;
 
+// The march's step counts over the frame, when clouds.statistics asks (planet bench).
+layout(std430, binding = BUFFER_CLOUD_STATISTICS) buffer CloudStatistics {
+    uint marchSteps;    // small steps (in or near clouds)
+    uint skippedSteps;  // large steps through empty space (the zero-density border's)
+    uint pixels;        // pixels marched through air
+} statistics;
+
 // Under water: the water body between the camera and the first surface (the sea floor, or
 // the sea surface seen from below), lit by the sun and sky through the water above the
 // camera. Nothing drawn: water all the way.
@@ -40,6 +47,11 @@ vec3 throughAir(vec3 dir, vec3 surface, float distance) {
     float jitter = fract(52.9829189 * fract(dot(gl_FragCoord.xy, vec2(0.06711056, 0.00583715))));
     ViewMarch m = MarchView(cameraFromPlanetCentreKm(), dir, distance / M_PER_KM, sun, clouds.atmosphereSlices,
                             clouds.maxSteps, jitter, 0.0);
+    if (clouds.statistics != 0) {
+        atomicAdd(statistics.marchSteps, uint(m.steps));
+        atomicAdd(statistics.skippedSteps, uint(m.skipped));
+        atomicAdd(statistics.pixels, 1u);
+    }
     if (distance <= 0.0) return m.inscatter + m.transmittance * SunDiscRadiance(dir, sun);
     return m.transmittance * surface + m.inscatter;
 }

@@ -6,6 +6,9 @@
 // wall time of each pass's command submission. Output: a table on stdout, a
 // CSV (one row per view and pass, plus a "frame" row), and a stacked bar plot
 // of the median GPU time per pass. Compare runs as ratios on the same machine.
+// Suites: the views as they are; Michelic's terrain (Table 1) and ocean (Table 2) sweeps;
+// the clouds (their views, then the march step and the sun samples swept, with the march's
+// steps per pixel and the share the empty-space border skipped, counted in one extra frame).
 #include <algorithm>
 #include <cstdio>
 #include <iostream>
@@ -33,6 +36,9 @@ struct BenchRow {
     std::string view, pass;
     std::size_t frames = 0;
     double gpuMedian = 0, gpuP95 = 0, cpuMedian = 0, cpuP95 = 0;
+    // The clouds suite's frame rows: the sky pass's march steps (small and large) per pixel
+    // of the image, and the share of them that were large steps through empty space.
+    double cloudStepsPerPixel = -1, cloudSkippedShare = -1;
 };
 
 std::vector<View> benchViews(const std::vector<std::string>& inputs, const DataPaths& paths) {
@@ -79,6 +85,57 @@ std::vector<BenchRow> measureView(Renderer& renderer, Session& session, glm::ive
     return rows;
 }
 
+// One more frame with the sky pass counting its cloud march steps, into the view's frame row.
+void countCloudSteps(Renderer& renderer, const Session& session, glm::ivec2 size, std::vector<BenchRow>& rows) {
+    renderer.setCloudStatistics(true);
+    renderer.render(session.scene, session.camera, size);
+    renderer.setCloudStatistics(false);
+    const clouds::MarchStatistics m = renderer.clouds().marchStatistics();
+    rows.back().cloudStepsPerPixel = m.stepsPerPixel(static_cast<std::uint64_t>(size.x) * static_cast<std::uint64_t>(size.y));
+    rows.back().cloudSkippedShare = m.skippedShare();
+}
+
+// The clouds suite: the cloud views as they are, then the march's small step and the
+// samples towards the sun swept on the first of them.
+void benchClouds(Renderer& frame, Session& session, const std::vector<View>& views, glm::ivec2 size,
+                 const BenchOptions& o, std::vector<BenchRow>& rows) {
+    if (!session.scene.clouds.enabled) throw InputError("--suite clouds: the preset has no clouds ([clouds] enabled)");
+    const CloudParams preset = session.scene.clouds;
+    for (const View& view : views) {
+        logInfo("bench clouds view '" + view.name + "'");
+        applyView(view, session);
+        for (BenchRow& r : measureView(frame, session, size, o)) rows.push_back(std::move(r));
+        countCloudSteps(frame, session, size, rows);
+    }
+    applyView(views.front(), session);
+    for (double step : {0.2, 0.1, 0.05}) {
+        for (int sunSamples : {0, 3, 6, 12}) {
+            session.scene.clouds = preset;
+            session.scene.clouds.step_km = step;
+            session.scene.clouds.sun_samples = sunSamples;
+            char name[64];
+            std::snprintf(name, sizeof name, "%s/step%gkm/sun%d", views.front().name.c_str(), step, sunSamples);
+            session.view.name = name;
+            logInfo(std::string("bench clouds ") + name);
+            for (BenchRow& r : measureView(frame, session, size, o)) rows.push_back(std::move(r));
+            countCloudSteps(frame, session, size, rows);
+        }
+    }
+    session.scene.clouds = preset;
+}
+
+// The clouds suite's views unless --views names others: under the cumulus, inside the
+// layer, above the deck, orbit and space.
+std::vector<View> cloudViews(const std::vector<View>& views, const BenchOptions& o) {
+    if (!o.views.empty()) return views;
+    std::vector<View> chosen;
+    for (const char* name : {"cumulus", "clouds", "deck", "orbit", "space"}) {
+        const auto it = std::find_if(views.begin(), views.end(), [&](const View& v) { return v.name == name; });
+        if (it != views.end()) chosen.push_back(*it);
+    }
+    return chosen.empty() ? views : chosen;
+}
+
 // A CSV field, quoted when it holds a comma, quote or newline (RFC 4180).
 std::string csvField(const std::string& s) {
     if (s.find_first_of(",\"\n") == std::string::npos) return s;
@@ -89,24 +146,36 @@ std::string csvField(const std::string& s) {
 
 std::string csvText(const std::vector<BenchRow>& rows, const std::string& renderer, glm::ivec2 size) {
     std::ostringstream csv;
-    csv << "renderer,width,height,view,pass,frames,gpu_median_ms,gpu_p95_ms,cpu_median_ms,cpu_p95_ms\n";
+    csv << "renderer,width,height,view,pass,frames,gpu_median_ms,gpu_p95_ms,cpu_median_ms,cpu_p95_ms,"
+           "cloud_steps_per_pixel,cloud_skipped_share\n";
     for (const BenchRow& r : rows) {
         char line[512];
         std::snprintf(line, sizeof line, ",%d,%d,", size.x, size.y);
         csv << csvField(renderer) << line << csvField(r.view) << "," << csvField(r.pass);
-        std::snprintf(line, sizeof line, ",%zu,%.4f,%.4f,%.4f,%.4f\n", r.frames, r.gpuMedian, r.gpuP95, r.cpuMedian,
+        std::snprintf(line, sizeof line, ",%zu,%.4f,%.4f,%.4f,%.4f,", r.frames, r.gpuMedian, r.gpuP95, r.cpuMedian,
                       r.cpuP95);
         csv << line;
+        if (r.cloudStepsPerPixel >= 0.0) {
+            std::snprintf(line, sizeof line, "%.3f,%.4f", r.cloudStepsPerPixel, r.cloudSkippedShare);
+            csv << line;
+        } else {
+            csv << ",";
+        }
+        csv << "\n";
     }
     return csv.str();
 }
 
 void printTable(const std::vector<BenchRow>& rows) {
-    std::printf("%-12s %-12s %8s %12s %12s %12s %12s\n", "view", "pass", "frames", "gpu med ms", "gpu p95 ms",
-                "cpu med ms", "cpu p95 ms");
-    for (const BenchRow& r : rows)
-        std::printf("%-12s %-12s %8zu %12.3f %12.3f %12.3f %12.3f\n", r.view.c_str(), r.pass.c_str(), r.frames,
+    const bool clouds = std::any_of(rows.begin(), rows.end(), [](const BenchRow& r) { return r.cloudStepsPerPixel >= 0.0; });
+    std::printf("%-12s %-12s %8s %12s %12s %12s %12s%s\n", "view", "pass", "frames", "gpu med ms", "gpu p95 ms",
+                "cpu med ms", "cpu p95 ms", clouds ? "  steps/px  skipped" : "");
+    for (const BenchRow& r : rows) {
+        std::printf("%-12s %-12s %8zu %12.3f %12.3f %12.3f %12.3f", r.view.c_str(), r.pass.c_str(), r.frames,
                     r.gpuMedian, r.gpuP95, r.cpuMedian, r.cpuP95);
+        if (r.cloudStepsPerPixel >= 0.0) std::printf(" %9.1f %7.1f%%", r.cloudStepsPerPixel, 100.0 * r.cloudSkippedShare);
+        std::printf("\n");
+    }
 }
 
 BarPlot gpuPlot(const std::vector<BenchRow>& rows, const std::string& renderer, glm::ivec2 size) {
@@ -176,6 +245,8 @@ int runBench(const BenchOptions& o) {
             logInfo("bench ocean " + session.view.name + " on view '" + view.name + "'");
             for (BenchRow& r : measureView(frame, session, size, o)) rows.push_back(std::move(r));
         }
+    } else if (o.suite == "clouds") {
+        benchClouds(frame, session, cloudViews(views, o), size, o, rows);
     } else {
         for (const View& view : views) {
             logInfo("bench view '" + view.name + "' (" + std::to_string(o.warmup + o.frames) + " frames)");

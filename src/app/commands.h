@@ -36,7 +36,8 @@ struct RenderOptions {
 struct BenchOptions {
     CommonOptions common;
     std::vector<std::string> views;  // view files or folders of them
-    std::string suite = "views";     // "views": each view as it is; "terrain" / "ocean": Michelic's Table 1 / 2 sweeps
+    std::string suite = "views";     // "views": each view as it is; "terrain" / "ocean": Michelic's Table 1 / 2 sweeps;
+                                     // "clouds": the cloud views, step and sun samples swept, march statistics
     int frames = 60;
     int warmup = 10;
     std::string csv = "out/bench.csv";
@@ -67,6 +68,9 @@ struct BakeOptions {
     bool force = false;        // rebake even when a valid cache entry exists
     std::string cache;         // cache root (empty: noise::defaultContinentsCacheRoot())
     std::string preview;       // equirectangular PNG of the map (empty: none)
+    std::string what = "all";  // "continents", "clouds" (volume and weather map) or "all"
+    std::string cloudCache;    // the clouds' cache root (empty: noise::defaultCloudCacheRoot())
+    std::string weatherPreview;  // equirectangular PNG of the weather map (empty: none)
 };
 
 struct CompareOptions {

@@ -67,8 +67,10 @@ int main(int argc, char** argv) {
     benchCmd->add_option("--suite", bench.suite,
                          "views: every view as set up; terrain: grid 50/100/200 x continents only, 1, 5, 10 noise "
                          "layers on the first view (Michelic Table 1); ocean: 20/50/100/1000 waves on the view 'sea' "
-                         "(Michelic Table 2)")
-        ->check(CLI::IsMember({"views", "terrain", "ocean"}))
+                         "(Michelic Table 2); clouds: the views cumulus, clouds, deck, orbit, space, then cloud step "
+                         "0.2/0.1/0.05 km x 0/3/6/12 sun samples on the first, with march steps per pixel and the "
+                         "share skipped through empty space")
+        ->check(CLI::IsMember({"views", "terrain", "ocean", "clouds"}))
         ->capture_default_str();
     benchCmd->add_option("--frames", bench.frames, "Recorded frames per view")->capture_default_str();
     benchCmd->add_option("--warmup", bench.warmup, "Unrecorded frames per view before recording")->capture_default_str();
@@ -102,8 +104,8 @@ int main(int argc, char** argv) {
 
     planet::BakeOptions bake;
     CLI::App* bakeCmd = app.add_subcommand(
-        "bake", "Bake the continents cube map (fBm simplex elevation and gradient) for a preset's terrain into the "
-                "cache; optional preview PNG");
+        "bake", "Bake what a preset needs into the cache: the continents cube map (fBm simplex elevation and "
+                "gradient) and, with clouds, the cloud density volume and the weather map; optional preview PNGs");
     bakeCmd->add_option("--preset", bake.preset, "Preset whose [terrain] parameters to bake for")->capture_default_str();
     bakeCmd->add_option("--root", bake.root,
                         "Data folder with shaders/ and assets/ (default: $PLANET_ROOT, else the source tree)");
@@ -114,11 +116,18 @@ int main(int argc, char** argv) {
     bakeCmd->add_option("--sea-fraction", bake.seaFraction,
                         "Fraction of the surface under water, [0, 1] (default: the preset's terrain.sea_fraction)")
         ->check(CLI::Range(0.0, 1.0));
-    bakeCmd->add_flag("--force", bake.force, "Rebake even when a valid cached map exists");
+    bakeCmd->add_flag("--force", bake.force, "Rebake even when a valid cache entry exists");
     bakeCmd->add_option("--cache", bake.cache,
                         "Cache root; the map goes to DIR/<key>/ (default: cache/continents, or "
                         "continents beside $PLANET_CACHE)");
-    bakeCmd->add_option("--preview", bake.preview, "Write an equirectangular preview PNG (1024x512)");
+    bakeCmd->add_option("--preview", bake.preview, "Write an equirectangular preview PNG of the continents (1024x512)");
+    bakeCmd->add_option("--what", bake.what, "What to bake: continents, clouds (volume and weather map) or all")
+        ->check(CLI::IsMember({"all", "continents", "clouds"}))
+        ->capture_default_str();
+    bakeCmd->add_option("--cloud-cache", bake.cloudCache,
+                        "The clouds' cache root (default: cache/clouds, or clouds beside $PLANET_CACHE)");
+    bakeCmd->add_option("--weather-preview", bake.weatherPreview,
+                        "Write an equirectangular preview PNG of the weather map (1024x512): coverage, tinted by type");
 
     planet::CompareOptions compare;
     CLI::App* compareCmd = app.add_subcommand(

@@ -38,7 +38,7 @@ struct CloudBlock {
     int typeProfiles;
     float pixelAngle;
     float voxelKm;
-    float padding1 = 0.0f;
+    int statistics = 0;
     float padding2 = 0.0f;
 };
 static_assert(offsetof(CloudBlock, cameraFromCentre) == 16 && offsetof(CloudBlock, bottomRadius) == 28 &&

@@ -80,6 +80,9 @@ bool drawn(const CloudParams& c) { return c.enabled && !c.constant_density; }
 CloudResources::CloudResources(std::filesystem::path cacheRoot) : cacheRoot_(std::move(cacheRoot)) {
     glNamedBufferStorage(buffer_.id(), sizeof(CloudBlock), nullptr, GL_DYNAMIC_STORAGE_BIT);
     buffer_.label("CloudBlock");
+    glNamedBufferStorage(statisticsBuffer_.id(), 3 * sizeof(std::uint32_t), nullptr,
+                         GL_DYNAMIC_STORAGE_BIT | GL_MAP_READ_BIT);
+    statisticsBuffer_.label("cloud march statistics");
     // Placeholders until a bake: one empty voxel, no coverage (shaders always have a texture bound).
     glTextureStorage3D(volume_.id(), 1, GL_R16F, 1, 1, 1);
     const float empty = -1.0f;
@@ -175,7 +178,12 @@ bool CloudResources::update(const Scene& scene, const Camera& camera, int viewpo
     if (drawn(c) && volumeSize_ == 0) shown.clouds.enabled = false;
     block_ = makeCloudBlock(shown, camera, largeStepKm(c.tile_width_km), volumeSize_,
                             camera.fovY_rad / std::max(viewportHeight, 1));
+    block_.statistics = statistics_ ? 1 : 0;
     glNamedBufferSubData(buffer_.id(), 0, sizeof block_, &block_);
+    if (statistics_) {
+        const std::uint32_t zero[3] = {0, 0, 0};
+        glNamedBufferSubData(statisticsBuffer_.id(), 0, sizeof zero, zero);
+    }
     return made;
 }
 
@@ -183,6 +191,14 @@ void CloudResources::bind() const {
     glBindBufferBase(GL_UNIFORM_BUFFER, binding::BLOCK_CLOUDS, buffer_.id());
     glBindTextureUnit(binding::UNIT_CLOUD_VOLUME, volume_.id());
     glBindTextureUnit(binding::UNIT_WEATHER_MAP, weather_.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding::BUFFER_CLOUD_STATISTICS, statisticsBuffer_.id());
+}
+
+MarchStatistics CloudResources::marchStatistics() const {
+    std::uint32_t counts[3] = {0, 0, 0};
+    glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+    glGetNamedBufferSubData(statisticsBuffer_.id(), 0, sizeof counts, counts);
+    return {counts[0], counts[1], counts[2]};
 }
 
 }  // namespace planet::clouds

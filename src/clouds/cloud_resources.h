@@ -11,6 +11,7 @@
 #pragma once
 
 #include <atomic>
+#include <cstdint>
 #include <filesystem>
 #include <future>
 #include <memory>
@@ -28,6 +29,19 @@ namespace planet::clouds {
 // The bake parameters of a scene's clouds.
 noise::CloudVolumeParams volumeParamsOf(const CloudParams& clouds);
 noise::WeatherParams weatherParamsOf(const CloudParams& clouds);
+
+// The sky pass's cloud march over one frame (the sea's reflections not included).
+struct MarchStatistics {
+    std::uint64_t marchSteps = 0;    // small steps, in or near clouds
+    std::uint64_t skippedSteps = 0;  // large steps through empty space (the zero-density border's)
+    std::uint64_t pixels = 0;        // pixels marched through air
+    double stepsPerPixel(std::uint64_t allPixels) const {
+        return allPixels ? double(marchSteps + skippedSteps) / double(allPixels) : 0.0;
+    }
+    double skippedShare() const {
+        return marchSteps + skippedSteps ? double(skippedSteps) / double(marchSteps + skippedSteps) : 0.0;
+    }
+};
 
 class CloudResources {
 public:
@@ -52,6 +66,10 @@ public:
     void setBackgroundBakes(bool on) { background_ = on; }
     // In [0, 1) while a background bake runs, 1 otherwise.
     double bakeProgress() const;
+    // Count the sky pass's march steps (planet bench): the counters are cleared at each
+    // update and read after the frame with marchStatistics().
+    void setStatistics(bool on) { statistics_ = on; }
+    MarchStatistics marchStatistics() const;
     // What the uploaded volume holds (zero before the first bake).
     const noise::CloudVolumeStats& volumeStats() const { return volumeStats_; }
 
@@ -71,6 +89,8 @@ private:
     gl::Texture volume_{GL_TEXTURE_3D};
     gl::Texture weather_{GL_TEXTURE_CUBE_MAP};
     gl::Buffer buffer_;
+    gl::Buffer statisticsBuffer_;
+    bool statistics_ = false;
     CloudBlock block_{};
     bool background_ = false;
 

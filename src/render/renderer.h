@@ -111,6 +111,8 @@ public:
     // In [0, 1) while a background cloud bake runs, 1 otherwise.
     double cloudBakeProgress() const { return clouds_.bakeProgress(); }
     const clouds::CloudResources& clouds() const { return clouds_; }
+    // Count the sky pass's cloud march steps from the next frame on (planet bench).
+    void setCloudStatistics(bool on) { clouds_.setStatistics(on); }
     const PrepareReport& lastPrepare() const { return lastPrepare_; }
     int frameIndex() const { return frameIndex_; }
     std::vector<PassDeclaration> passDeclarations() const;
