@@ -70,7 +70,11 @@ CloudSegmentResult MarchCloudSegment(vec3 origin, vec3 dir, float start, float e
     float t = start;
     for (int i = 0; i < 4 * clouds.maxSteps && t < end; ++i) {
         float footprint = max((fromCamera + t) * clouds.pixelAngle, minFootprintKm);
-        float dt = min(max(step, 0.5 * footprint), end - t);
+        // Where the footprint grows the step (the far field), at least 16 samples across the
+        // layer's depth still, so that a narrow vertical profile (stratus) is resolved.
+        float mu = abs(dot(dir, origin + dir * t)) / length(origin + dir * t);
+        float across = (clouds.topRadius - clouds.bottomRadius) / (16.0 * max(mu, 1e-3));
+        float dt = min(min(max(step, 0.5 * footprint), max(across, step)), end - t);
         vec3 point = origin + dir * (t + jitter * dt);
         float density = CloudDensityAt(point, footprint);
         if (density < 0.0) {  // no cloud within the zero-density border: one large step

@@ -22,7 +22,14 @@ using std::sqrt;
 #define IN(x) const x&
 #define OUT(x) x&
 #define INOUT(x) x&
+// Internal linkage: every translation unit that includes this has its own copy (GLSL has
+// no `inline`), and uses what it needs of it.
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wunused-function"
+namespace {
 #include "shaders/clouds/cloud_model.glsl"
+}  // namespace
+#pragma GCC diagnostic pop
 #undef IN
 #undef OUT
 #undef INOUT
