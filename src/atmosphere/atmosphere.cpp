@@ -1,4 +1,5 @@
 #include "atmosphere/atmosphere.h"
+#include "atmosphere/table_store.h"
 
 #include <cstdio>
 #include <cstring>
@@ -52,27 +53,20 @@ void Atmosphere::update(const Scene& scene) {
 }
 
 GpuTables Atmosphere::loadOrCompute(const AtmosphereParameters& parameters, int orders) {
-    const std::string key = tableCacheKey(parameters, sizes(), orders, atmosphereModelSource(shaderRoot_));
-    const std::filesystem::path dir = defaultTableCacheRoot() / key;
-    std::string reason;
-    if (std::filesystem::exists(dir)) {
-        if (auto cached = loadTables(dir, key, sizes(), &reason)) {
-            logInfo("atmosphere tables from the cache " + dir.string());
-            return upload(*cached);
-        }
-        logWarning("atmosphere cache " + dir.string() + " not used (" + reason + "); rebuilding it");
-    }
-    char mib[32];
-    std::snprintf(mib, sizeof mib, "%.2f MiB", static_cast<double>(sizes().bytes()) / (1 << 20));
-    logInfo(std::string("precomputing atmosphere tables (") + mib + ")...");
-    GpuTables tables = precompute_.compute(parameters, orders, [](const PrecomputeStep& s) {
-        logInfo("  " + s.name + ": " + std::to_string(s.seconds) + " s");
-    });
-    try {
-        saveTables(readBack(tables), dir, key);
-    } catch (const std::exception& e) {  // a read-only folder costs the next start time, nothing else
-        logWarning(std::string("atmosphere tables not cached: ") + e.what());
-    }
+    // The one load-or-compute of the tables (table_store.h), with what the renderer logs.
+    TableStoreOptions options;
+    options.onCompute = [&](const TableStoreReport& r) {
+        if (!r.rejected.empty()) logWarning("atmosphere cache " + r.dir.string() + " not used (" + r.rejected + "); rebuilding it");
+        char mib[32];
+        std::snprintf(mib, sizeof mib, "%.2f MiB", static_cast<double>(sizes().bytes()) / (1 << 20));
+        logInfo(std::string("precomputing atmosphere tables (") + mib + ")...");
+    };
+    options.onStep = [](const PrecomputeStep& s) { logInfo("  " + s.name + ": " + std::to_string(s.seconds) + " s"); };
+    TableStoreReport report;
+    GpuTables tables = loadOrComputeTables(precompute_, parameters, orders, {}, shaderRoot_, options, &report);
+    if (report.hit) logInfo("atmosphere tables from the cache " + report.dir.string());
+    // A read-only folder costs the next start time, nothing else.
+    if (!report.notSaved.empty()) logWarning("atmosphere tables not cached: " + report.notSaved);
     return tables;
 }
 
