@@ -3,22 +3,26 @@
 // prepare   brings every baked resource up to date before anything draws: the atmosphere
 //           tables (loaded or made on first use; while tuning, one chunk of a rebuild a
 //           frame, profiled as "atmosphere tables"), the continents map on the GPU and its
-//           CPU copy (terrain/continents.h, one owner); then uploads the frame's blocks
-//           (FrameBlock, TerrainBlock, GridBlocks, OceanBlock) and packs the waves, and binds
-//           what every pass reads at the units of shaders/common/bindings.glsl.
+//           CPU copy (terrain/continents.h, one owner), the clouds' density volume and
+//           weather map (clouds/cloud_resources.h: cached or baked; rebaked in the background
+//           for the explorer); then uploads the frame's blocks (FrameBlock, TerrainBlock,
+//           GridBlocks, OceanBlock, CloudBlock) and packs the waves, and binds what every pass
+//           reads at the units of shaders/common/bindings.glsl.
 //
 //   pass           reads                                writes
 //   terrain        blocks, continents                   G-buffer (normal, albedo, material, depth)
-//   surface light  G-buffer, atmosphere                 surface radiance R_G + distance: the light
-//                                                       leaving each surface point, no air in it
-//                                                       (render/surface_light.frag; Elek Eq. 17, 20)
+//   surface light  G-buffer, atmosphere, clouds         surface radiance R_G + distance: the light
+//                                                       leaving each surface point, no air in it, the
+//                                                       clouds' shadow in its sun (render/surface_light.frag;
+//                                                       Elek Eq. 17, 20)
 //   ocean          seabed copies, waves, atmosphere     the sea's R_G + distance, and depth, where
 //                                                       the sea is (when terrain.ocean is on)
 //   sky            surface radiance + distance,         HDR radiance: what lies between the camera
 //                  atmosphere                           and R_G or space -- transmittance and
 //                                                       in-scattering, the sky, the sun disc; the
-//                                                       water body under water (render/sky.frag).
-//                                                       The clouds' march goes here (Michelic Eq. 17-20).
+//                                                       water body under water (render/sky.frag),
+//                                                       through the unified march of clouds and air
+//                                                       (clouds/cloud_march.glsl; Michelic Eq. 17-20).
 //   tonemap        HDR radiance, exposure               LDR (display-ready sRGB)
 //   ui             LDR                                  the window (explorer only: blit + panels)
 //
