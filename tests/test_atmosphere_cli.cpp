@@ -102,9 +102,13 @@ TEST_F(AtmosphereCli, SkyProbeGpuMatchesCpuReference) {
                                         "10000,30,60,120\n"  // 10 km up
                                         "100000,40,99,0\n"   // 100 km, above the top: the limb
                                         "100000,40,0,0\n";   // 100 km, looking up: misses the atmosphere
-    const auto gpu = runCommand(planet("sky-probe --tables reduced --in cases.csv --out gpu.csv"));
+    // Earth's clear sky: with its clouds on, sky-probe would march through them (tested in
+    // tests/test_cloud_reference.cpp).
+    std::ofstream(dir / "clear.toml") << "[clouds]\nenabled = false\n";
+    const auto gpu = runCommand(planet("sky-probe --preset clear.toml --tables reduced --in cases.csv --out gpu.csv"));
     ASSERT_EQ(gpu.exitCode, 0) << gpu.output;
-    const auto ref = runCommand(planet("sky-probe --tables reduced --in cases.csv --out ref.csv --reference"));
+    const auto ref =
+        runCommand(planet("sky-probe --preset clear.toml --tables reduced --in cases.csv --out ref.csv --reference"));
     ASSERT_EQ(ref.exitCode, 0) << ref.output;
     const std::vector<ProbeValues> g = readProbe(dir / "gpu.csv"), c = readProbe(dir / "ref.csv");
     ASSERT_EQ(g.size(), 7u);
@@ -138,7 +142,8 @@ TEST_F(AtmosphereCli, SkyProbeGpuMatchesCpuReference) {
         EXPECT_EQ(g[6].transmittance[ch], 1.0);
     }
     // A second GPU run takes the tables from the cache the first one wrote.
-    const auto second = runCommand(planet("sky-probe --tables reduced --in cases.csv --out gpu2.csv"));
+    const auto second =
+        runCommand(planet("sky-probe --preset clear.toml --tables reduced --in cases.csv --out gpu2.csv"));
     ASSERT_EQ(second.exitCode, 0) << second.output;
     EXPECT_TRUE(contains(second.output, "cache hit")) << second.output;
 }

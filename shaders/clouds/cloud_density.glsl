@@ -2,70 +2,75 @@
 // pass that draws (the surfaces' shadows come from here through the atmosphere
 // interface's SunVisibility). Needs cloud_model.glsl and cloud_block.glsl. Positions in
 // km from the planet centre.
+//
+// Written in the subset of GLSL that is also C++ (Number / Length, single components, no
+// swizzles), so that src/clouds/cloud_reference.h compiles this very text in double, with
+// CPU samplers for the volume and the weather map, as the CPU reference of the march.
 
 // How far the far field has taken over (0: the volume alone, 1: the far field alone) for a
 // pixel footprint of `footprintKm`: from 2 to 8 voxels, where trilinear sampling starts to
 // alias and where it would be only noise.
-float CloudFarBlend(float footprintKm) {
+Number CloudFarBlend(Length footprintKm) {
     return smoothstep(2.0 * clouds.voxelKm, 8.0 * clouds.voxelKm, footprintKm);
 }
 
 // Density at `point` (Michelic Eq. 12-14), seen with a pixel footprint of `footprintKm`:
 // < 0 where the volume says the zero-density border is around (a large step is safe), else
 // >= 0. Where the footprint spans voxels, blended into the far field (cloud_model.glsl).
-float CloudDensityAt(vec3 point, float footprintKm) {
-    float r = length(point);
+Number CloudDensityAt(vec3 point, Length footprintKm) {
+    Length r = length(point);
     if (r < clouds.bottomRadius || r > clouds.topRadius) return -1.0;
     if (clouds.constantDensity != 0) return clouds.densityScale;
-    float far = CloudFarBlend(footprintKm);
+    Number far = CloudFarBlend(footprintKm);
     // Eq. 12, camera-relative: the tile offset of the camera comes formed in double and
     // GL_REPEAT takes the fract.
-    float value = 0.0;
+    Number value = 0.0;
     if (far < 1.0) {
         vec3 c = (clouds.cameraTileOffset + (point - clouds.cameraFromCentre)) / clouds.tileWidth;
-        value = textureLod(cloudVolume, c, 0.0).r;
+        value = textureLod(cloudVolume, c, 0.0).x;
         if (value < 0.0 && far == 0.0) return value;  // nothing within the border: the weather cannot add cloud
     }
-    vec2 weather = textureLod(weatherMap, point / r, 0.0).rg;  // coverage, type
-    float coverage = CloudLocalCoverage(weather.x, clouds.coverage);
-    float depth = clouds.topRadius - clouds.bottomRadius;
-    float fraction = (r - clouds.bottomRadius) / depth;
+    vec4 weatherTexel = textureLod(weatherMap, point / r, 0.0);
+    vec2 weather = vec2(weatherTexel.x, weatherTexel.y);  // coverage, type
+    Number coverage = CloudLocalCoverage(weather.x, clouds.coverage);
+    Length depth = clouds.topRadius - clouds.bottomRadius;
+    Number fraction = (r - clouds.bottomRadius) / depth;
     bool typed = clouds.typeProfiles != 0;
-    float h = typed ? CloudTypeHeightSignal(fraction, weather.y) : CloudHeightSignal(r, clouds.bottomRadius, clouds.topRadius);  // Eq. 13
-    float near = max(CloudDensityFromTexture(CloudCoverageRemap(value, coverage), h), 0.0);  // Eq. 14
-    float column = (2.0 / 3.0) * (typed ? CloudTypeProfileWidth(weather.y) : 1.0);
-    float farDensity = CloudFarFieldDensity(coverage, h, column, depth, clouds.extinction * clouds.densityScale);
+    Number h = typed ? CloudTypeHeightSignal(fraction, weather.y) : CloudHeightSignal(r, clouds.bottomRadius, clouds.topRadius);  // Eq. 13
+    Number near = max(CloudDensityFromTexture(CloudCoverageRemap(value, coverage), h), 0.0);  // Eq. 14
+    Number column = (2.0 / 3.0) * (typed ? CloudTypeProfileWidth(weather.y) : 1.0);
+    Number farDensity = CloudFarFieldDensity(coverage, h, column, depth, clouds.extinction * clouds.densityScale);
     return mix(near, farDensity, far) * clouds.densityScale;
 }
 
-float CloudDensity(vec3 point) { return CloudDensityAt(point, 0.0); }
+Number CloudDensity(vec3 point) { return CloudDensityAt(point, 0.0); }
 
 // The footprint of a pixel at `point`: its distance from the camera times the angle a
 // pixel spans.
-float CloudFootprintAt(vec3 point) { return length(point - clouds.cameraFromCentre) * clouds.pixelAngle; }
+Length CloudFootprintAt(vec3 point) { return length(point - clouds.cameraFromCentre) * clouds.pixelAngle; }
 
 // Optical depth per unit extinction (the integral of the density, km) from `point` towards
 // the sun: clouds.sunSamples density samples spread over the sun ray's way through the
 // layer, or over `maxLength` km of it where that way is longer, seen with a footprint of
 // `footprintKm` (the view sample's). 0 without clouds.
-float CloudDensityPathToSun(vec3 point, vec3 sun, float maxLength, float footprintKm) {
+Length CloudDensityPathToSun(vec3 point, vec3 sun, Length maxLength, Length footprintKm) {
     if (clouds.enabled == 0) return 0.0;
-    float r = length(point);
+    Length r = length(point);
     vec2 first;
     vec2 second;
     int count = CloudLayerIntervals(r, dot(point, sun) / r, 1.0e9, clouds.bottomRadius, clouds.topRadius, first, second);
     if (count == 0) return 0.0;
-    float way = min(first.y - first.x, maxLength);
-    float step = way / float(max(clouds.sunSamples, 1));
-    float path = 0.0;
+    Length way = min(first.y - first.x, maxLength);
+    Length step = way / Number(max(clouds.sunSamples, 1));
+    Length path = 0.0;
     for (int i = 0; i < clouds.sunSamples; ++i)
-        path += max(CloudDensityAt(point + sun * (first.x + (float(i) + 0.5) * step), footprintKm), 0.0) * step;
+        path += max(CloudDensityAt(point + sun * (first.x + (Number(i) + 0.5) * step), footprintKm), 0.0) * step;
     return path;
 }
 
 // The clouds' transmittance towards the sun (Michelic Eq. 15 along the sun ray: T_sun)
 // from a point the camera sees (the surfaces' shadows): with that point's footprint, so a
 // shadow seen from orbit is the far field's, not speckle.
-float CloudSunTransmittance(vec3 point, vec3 sun, float maxLength) {
+Number CloudSunTransmittance(vec3 point, vec3 sun, Length maxLength) {
     return exp(-clouds.extinction * CloudDensityPathToSun(point, sun, maxLength, CloudFootprintAt(point)));
 }

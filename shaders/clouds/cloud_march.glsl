@@ -18,6 +18,10 @@
 // Wrenninge's multiple-scattering octaves (octave i: a^i of the light, phase g c^i,
 // optical depth to the sun b^i, a = b = c = 1/2) and the "powder" darkening of sunlit edges;
 // with both off the march is Eq. 15-16 (with energyConservingStep 0, Eq. 16 as written).
+//
+// Written in the subset of GLSL that is also C++ (as cloud_density.glsl):
+// src/clouds/cloud_reference.h compiles it in double, with the interface's functions
+// (SkyRadiance, SkyRadianceToPoint, ...) bound to the atmosphere's CPU model.
 
 struct CloudSegmentResult {
     vec3 transmittance;
@@ -27,18 +31,18 @@ struct CloudSegmentResult {
 };
 
 // Radiance scattered towards the viewer per unit scattering coefficient at a cloud sample.
-vec3 CloudSource(vec3 point, vec3 sun, float cosTheta, float density, float footprintKm) {
+vec3 CloudSource(vec3 point, vec3 sun, Number cosTheta, Number density, Length footprintKm) {
     AtmosphereParameters atmosphere = atmosphereParameters();
-    float r = length(point);
-    float muS = dot(point, sun) / r;
+    Length r = length(point);
+    Number muS = dot(point, sun) / r;
     vec3 sunlight = atmosphere.solar_irradiance * GetTransmittanceToSun(atmosphere, transmittance_texture, r, muS);
-    float opticalDepth = CloudDensityPathToSun(point, sun, float(clouds.sunSamples) * clouds.sunStep, footprintKm);  // density x km
+    Length opticalDepth = CloudDensityPathToSun(point, sun, Number(clouds.sunSamples) * clouds.sunStep, footprintKm);  // density x km
     vec3 light = vec3(0.0);
-    float a = 1.0;
-    float b = 1.0;
-    float c = 1.0;
+    Number a = 1.0;
+    Number b = 1.0;
+    Number c = 1.0;
     for (int octave = 0; octave < clouds.multipleScatteringOctaves; ++octave) {
-        float phase = CloudPhase(clouds.phaseGForward * c, clouds.phaseGBack * c, clouds.phaseBackWeight, cosTheta);
+        Number phase = CloudPhase(clouds.phaseGForward * c, clouds.phaseGBack * c, clouds.phaseBackWeight, cosTheta);
         light += a * phase * exp(-clouds.extinction * b * opticalDepth) * sunlight;
         a *= 0.5;
         b *= 0.5;
@@ -52,31 +56,31 @@ vec3 CloudSource(vec3 point, vec3 sun, float cosTheta, float density, float foot
 
 // Eq. 15-16 from `start` to `end` km along `dir` from `origin` (km from the planet centre),
 // at most `budget` small steps.
-CloudSegmentResult MarchCloudSegment(vec3 origin, vec3 dir, float start, float end, vec3 sun, int budget, float jitter,
-                                     float minFootprintKm) {
+CloudSegmentResult MarchCloudSegment(vec3 origin, vec3 dir, Length start, Length end, vec3 sun, int budget, Number jitter,
+                                     Length minFootprintKm) {
     CloudSegmentResult result;
     result.transmittance = vec3(1.0);
     result.inscatter = vec3(0.0);
     result.steps = 0;
     result.skipped = 0;
-    float cosTheta = dot(dir, sun);
+    Number cosTheta = dot(dir, sun);
     // The step grows where the budget could not cross the segment at clouds.stepKm, and
     // with the pixel's footprint (half of it) where the far field smooths the clouds.
-    float step = max(clouds.stepKm, (end - start) / float(max(budget, 1)));
-    float fromCamera = length(origin - clouds.cameraFromCentre);  // the sea's reflected rays start away from it
+    Length step = max(clouds.stepKm, (end - start) / Number(max(budget, 1)));
+    Length fromCamera = length(origin - clouds.cameraFromCentre);  // the sea's reflected rays start away from it
     // Each step [t, t + dt] is sampled a fraction `jitter` of the way in (1/2: the midpoint
     // rule): neighbouring pixels sample at different depths, which turns the steps' banding
     // into fine noise, and the steps still cover the segment.
-    float t = start;
+    Length t = start;
     for (int i = 0; i < 4 * clouds.maxSteps && t < end; ++i) {
-        float footprint = max((fromCamera + t) * clouds.pixelAngle, minFootprintKm);
+        Length footprint = max((fromCamera + t) * clouds.pixelAngle, minFootprintKm);
         // Where the footprint grows the step (the far field), at least 16 samples across the
         // layer's depth still, so that a narrow vertical profile (stratus) is resolved.
-        float mu = abs(dot(dir, origin + dir * t)) / length(origin + dir * t);
-        float across = (clouds.topRadius - clouds.bottomRadius) / (16.0 * max(mu, 1e-3));
-        float dt = min(min(max(step, 0.5 * footprint), max(across, step)), end - t);
+        Number mu = abs(dot(dir, origin + dir * t)) / length(origin + dir * t);
+        Length across = (clouds.topRadius - clouds.bottomRadius) / (16.0 * max(mu, Number(1e-3)));
+        Length dt = min(min(max(step, 0.5 * footprint), max(across, step)), end - t);
         vec3 point = origin + dir * (t + jitter * dt);
-        float density = CloudDensityAt(point, footprint);
+        Number density = CloudDensityAt(point, footprint);
         if (density < 0.0) {  // no cloud within the zero-density border: one large step
             t += jitter * dt + max(clouds.largeStepKm, step);
             result.skipped += 1;
@@ -110,8 +114,8 @@ struct ViewMarch {
 // cloud march starts (a per-pixel noise in the sky pass, 1/2 elsewhere). `minFootprintKm`:
 // the smallest footprint the density is seen with; the sea's reflection asks for the far
 // field (its few steps would alias the volume, and waves blur the reflection anyway).
-ViewMarch MarchView(vec3 origin, vec3 dir, float distance, vec3 sun, int slicesPerCrossing, int stepBudget, float jitter,
-                    float minFootprintKm) {
+ViewMarch MarchView(vec3 origin, vec3 dir, Length distance, vec3 sun, int slicesPerCrossing, int stepBudget, Number jitter,
+                    Length minFootprintKm) {
     ViewMarch m;
     m.transmittance = vec3(1.0);
     m.inscatter = vec3(0.0);
@@ -121,11 +125,11 @@ ViewMarch MarchView(vec3 origin, vec3 dir, float distance, vec3 sun, int slicesP
     vec2 crossings[2];
     int count = 0;
     if (clouds.enabled != 0) {
-        float r = length(origin);
+        Length r = length(origin);
         count = CloudLayerIntervals(r, dot(origin, dir) / r, toSpace ? 1.0e9 : distance, clouds.bottomRadius,
                                     clouds.topRadius, crossings[0], crossings[1]);
     }
-    float t = 0.0;
+    Length t = 0.0;
     for (int k = 0; k < count; ++k) {
         vec2 crossing = crossings[k];
         if (crossing.x > t) {  // air up to the layer: one slice, T_C = 1, I_C = 0 (Eq. 17-18)
@@ -134,10 +138,10 @@ ViewMarch MarchView(vec3 origin, vec3 dir, float distance, vec3 sun, int slicesP
             CombineSlice(sliceTransmittance, slice, vec3(1.0), vec3(0.0), m.transmittance, m.inscatter);
         }
         int slices = max(slicesPerCrossing, 1);
-        float width = (crossing.y - crossing.x) / float(slices);
+        Length width = (crossing.y - crossing.x) / Number(slices);
         int budget = max(stepBudget / (slices * count), 1);
         for (int s = 0; s < slices; ++s) {  // inside the layer: slices of air with clouds in them (Eq. 19-20)
-            float a = crossing.x + float(s) * width;
+            Length a = crossing.x + Number(s) * width;
             vec3 sliceTransmittance;
             vec3 slice = SkyRadianceToPoint(origin + dir * a, dir, width, sun, sliceTransmittance);
             CloudSegmentResult c = MarchCloudSegment(origin, dir, a, a + width, sun, budget, jitter, minFootprintKm);

@@ -89,8 +89,18 @@ int main(int argc, char** argv) {
 
     planet::SkyProbeOptions skyProbe;
     CLI::App* skyProbeCmd = app.add_subcommand(
-        "sky-probe", "Evaluate sky radiance / solar irradiance (1/sr) and transmittance for rows of a CSV");
+        "sky-probe", "Evaluate sky radiance / solar irradiance (1/sr) and transmittance for rows of a CSV, through "
+                     "the clouds when the preset has them on");
     addCommon(*skyProbeCmd, skyProbe.common);
+    skyProbeCmd->footer(
+        "Rays in a local frame: camera at (0, 0, planet radius + altitude), sun (sin sz, 0, cos sz), view "
+        "(sin vz cos az, sin vz sin az, cos vz); no ground reflection, no sun disc.\n"
+        "Clouds: with the preset's clouds.enabled = true each ray goes through the unified march of clouds and "
+        "atmosphere (the sky pass's MarchView, no jitter, no far field), up to the ground where it hits it; the "
+        "frame is then the planet's: the camera above the north pole, the sun towards longitude 0; --time drifts "
+        "the clouds with the wind. The baked volume and weather map come from the cloud cache (baked there if "
+        "missing). clouds.constant_density = true in the preset gives a uniform layer of density "
+        "clouds.density_scale for analytic checks; clouds.enabled = false the clear sky.");
     skyProbeCmd->add_option("--in", skyProbe.in,
                             "Input CSV: altitude_m,sun_zenith_deg,view_zenith_deg,view_azimuth_deg")
         ->required();
@@ -98,7 +108,8 @@ int main(int argc, char** argv) {
                             "Output CSV: the input columns + radiance_r,g,b (1/sr) + transmittance_r,g,b")
         ->required();
     skyProbeCmd->add_flag("--reference", skyProbe.reference,
-                          "Evaluate on the CPU (double) with CPU reference tables instead of the GPU");
+                          "Evaluate on the CPU (double) with CPU reference tables instead of the GPU (with clouds: "
+                          "the same march compiled as C++, clouds/cloud_reference.h)");
     skyProbeCmd->add_option("--cache", skyProbe.cache,
                             "Table cache root (default: $PLANET_CACHE, else cache/atmosphere)");
 

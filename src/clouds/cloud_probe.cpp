@@ -6,14 +6,24 @@
 
 namespace planet::clouds {
 
+CloudProbe::CloudProbe(const std::filesystem::path& shaderRoot, const atmosphere::TableSizes& sizes)
+    : program_(gl::buildProgram(
+          gl::ShaderSources{shaderRoot, gl::shaderPreamble() + atmosphere::atmosphereShaderDefines(sizes)},
+          gl::ProgramDesc{"cloud probe", {"clouds/cloud_probe.comp"}})) {}
+
 std::vector<CloudProbeResult> probeClouds(const std::filesystem::path& shaderRoot,
                                           const atmosphere::GpuTables& tables,
                                           const atmosphere::AtmosphereUniforms& atmosphere, const CloudBlock& block,
                                           const CloudResources* textures, const std::vector<CloudProbeRay>& rays) {
     if (rays.empty()) return {};
-    const gl::Program program = gl::buildProgram(
-        gl::ShaderSources{shaderRoot, gl::shaderPreamble() + atmosphere::atmosphereShaderDefines(tables.sizes)},
-        gl::ProgramDesc{"cloud probe", {"clouds/cloud_probe.comp"}});
+    return CloudProbe(shaderRoot, tables.sizes).run(tables, atmosphere, block, textures, rays);
+}
+
+std::vector<CloudProbeResult> CloudProbe::run(const atmosphere::GpuTables& tables,
+                                              const atmosphere::AtmosphereUniforms& atmosphere,
+                                              const CloudBlock& block, const CloudResources* textures,
+                                              const std::vector<CloudProbeRay>& rays) const {
+    if (rays.empty()) return {};
     std::vector<glm::vec4> input;
     for (const CloudProbeRay& r : rays) {
         input.emplace_back(glm::vec3(r.origin), static_cast<float>(r.distanceKm));
@@ -37,8 +47,9 @@ std::vector<CloudProbeResult> probeClouds(const std::filesystem::path& shaderRoo
     glBindTextureUnit(binding::UNIT_SCATTERING, tables.scattering.id());
     glBindTextureUnit(binding::UNIT_SINGLE_MIE, tables.singleMie.id());
     glBindTextureUnit(binding::UNIT_IRRADIANCE, tables.irradiance.id());
-    glUseProgram(program.id());
-    glProgramUniform1i(program.id(), 0, static_cast<GLint>(rays.size()));
+    glEnable(GL_TEXTURE_CUBE_MAP_SEAMLESS);  // the weather map, as the renderer samples it
+    glUseProgram(program_.id());
+    glProgramUniform1i(program_.id(), 0, static_cast<GLint>(rays.size()));
     glDispatchCompute(static_cast<GLuint>((rays.size() + 63) / 64), 1, 1);
     glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
     std::vector<glm::vec4> output(rays.size() * 2);

@@ -11,6 +11,7 @@
 #include "atmosphere/precompute_gpu.h"
 #include "atmosphere/uniforms.h"
 #include "clouds/cloud_resources.h"
+#include "gl/program.h"
 
 namespace planet::clouds {
 
@@ -28,8 +29,23 @@ struct CloudProbeResult {
     int skipped = 0;       // large steps through empty space
 };
 
-// Needs a GL context. `block` is bound as the CloudBlock (its cameraFromCentre and
-// cameraTileOffset place the volume), `volume` and `weather` at their units.
+// The probe's program, built once for table sizes and run for any number of ray lists
+// (`planet sky-probe` runs one list per camera position). Needs a GL context.
+class CloudProbe {
+public:
+    CloudProbe(const std::filesystem::path& shaderRoot, const atmosphere::TableSizes& sizes);
+    // `block` is bound as the CloudBlock (its cameraFromCentre and cameraTileOffset place the
+    // volume), the volume and the weather map of `textures` (may be null) at their units;
+    // cube maps are sampled seamlessly, as the renderer does.
+    std::vector<CloudProbeResult> run(const atmosphere::GpuTables& tables,
+                                      const atmosphere::AtmosphereUniforms& atmosphere, const CloudBlock& block,
+                                      const CloudResources* textures, const std::vector<CloudProbeRay>& rays) const;
+
+private:
+    gl::Program program_;
+};
+
+// One CloudProbe run: builds the program, runs it once.
 std::vector<CloudProbeResult> probeClouds(const std::filesystem::path& shaderRoot,
                                           const atmosphere::GpuTables& tables,
                                           const atmosphere::AtmosphereUniforms& atmosphere, const CloudBlock& block,
