@@ -51,7 +51,8 @@ TEST(Views, ShippedViewsLoadWithoutWarnings) {
         EXPECT_TRUE(v.hasSun()) << v.name;
         EXPECT_FALSE(v.description.empty()) << v.name;
     }
-    EXPECT_EQ(names, (std::vector<std::string>{"aircraft", "beach", "clouds", "ground", "mountains", "orbit", "sea", "space", "sunset"}));
+    EXPECT_EQ(names, (std::vector<std::string>{"aircraft", "beach", "cloud_sunset", "clouds", "cumulus", "deck", "ground",
+                                               "mountains", "orbit", "sea", "space", "sunset"}));
     EXPECT_EQ(findView(views, "ground").altitude_m, 2.0);
     EXPECT_EQ(findView(views, "ground").sun_elevation_deg, 40.0);
     EXPECT_EQ(findView(views, "clouds").altitude_m, 2500.0);

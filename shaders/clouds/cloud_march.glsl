@@ -71,7 +71,11 @@ CloudSegmentResult MarchCloudSegment(vec3 origin, vec3 dir, Length start, Length
     // Each step [t, t + dt] is sampled a fraction `jitter` of the way in (1/2: the midpoint
     // rule): neighbouring pixels sample at different depths, which turns the steps' banding
     // into fine noise, and the steps still cover the segment.
+    // Inside dense cloud the step shortens so that each step's optical depth stays about 1/2
+    // (down to an eighth of the step, from the last sample's density): an opaque step would
+    // put the cloud's surface at one of its ends and show the steps as bands or grain.
     Length t = start;
+    Number previous = 0.0;
     for (int i = 0; i < 4 * clouds.maxSteps && t < end; ++i) {
         Length footprint = max((fromCamera + t) * clouds.pixelAngle, minFootprintKm);
         // Where the footprint grows the step (the far field), at least 16 samples across the
@@ -79,13 +83,16 @@ CloudSegmentResult MarchCloudSegment(vec3 origin, vec3 dir, Length start, Length
         Number mu = abs(dot(dir, origin + dir * t)) / length(origin + dir * t);
         Length across = (clouds.topRadius - clouds.bottomRadius) / (16.0 * max(mu, Number(1e-3)));
         Length dt = min(min(max(step, 0.5 * footprint), max(across, step)), end - t);
+        if (previous > 0.0) dt = min(dt, max(0.5 / (clouds.extinction * previous), step / 8.0));
         vec3 point = origin + dir * (t + jitter * dt);
         Number density = CloudDensityAt(point, footprint);
         if (density < 0.0) {  // no cloud within the zero-density border: one large step
             t += jitter * dt + max(clouds.largeStepKm, step);
             result.skipped += 1;
+            previous = 0.0;
             continue;
         }
+        previous = density;
         if (density > 0.0) {
             vec3 source = CloudSource(point, sun, cosTheta, density, footprint);
             CloudMarchStep(density, dt, clouds.extinction, clouds.scattering, source, clouds.energyConservingStep != 0,

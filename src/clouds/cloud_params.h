@@ -24,7 +24,7 @@ struct CloudParams {
     double phase_back_weight = 0.0;        // weight of the back lobe, [0, 1]; 0: Michelic's single HG
     int sun_samples = 6;                   // density samples towards the sun for T_sun (Michelic: 6), [0, 64]
     double sun_step_km = 0.2;              // spacing of those samples, km, [0.001, 100]
-    double step_km = 0.1;                  // march step inside clouds, km, [0.001, 100]
+    double step_km = 0.05;                 // march step inside clouds, km, [0.001, 100]
     int max_steps = 256;                   // cloud steps per pixel at most, [1, 8192]
     int atmosphere_slices = 4;             // atmosphere slices per crossing of the layer (Eq. 17-18), [1, 64]
     int multiple_scattering_octaves = 4;   // Wrenninge's octaves; 1: single scattering only, [1, 8]
