@@ -1,13 +1,17 @@
 // The clouds in the whole frame (tier (c) of STYLE habit 9): coverage 0 is the clear
 // sky, every camera case of Michelic fig. 12 under a high, a setting and a set sun gives
 // finite pixels, a climb through the layer has no jump at its bottom or top, and from space
-// the clouds hide as much of the ground as the weather map says.
+// the clouds hide as much of the ground as the weather map says; a rebake for the explorer
+// runs in the background.
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <chrono>
+#include <filesystem>
 #include <random>
+#include <thread>
 
 #include "app/session.h"
 #include "atmosphere/parameters.h"
@@ -201,4 +205,40 @@ TEST_F(CloudFrame, FromSpaceTheCloudsHideWhatTheWeatherMapCovers) {
     EXPECT_LT(worst, 0.03);
     EXPECT_GT(meanExpected, 0.1);  // clouds there to measure
     EXPECT_LT(meanExpected, 0.9);  // and clear sky too
+}
+
+TEST_F(CloudFrame, ARebakeRunsInTheBackgroundWhileTheOldCloudsStay) {
+    // The explorer's path (Renderer::setBackgroundBakes): the first bake is waited for, a
+    // later one runs on a worker thread while the old textures stay bound, reports its
+    // progress, and its textures come in at the first update after it finished.
+    Scene scene;
+    scene.clouds.volume_size = 32;
+    scene.clouds.detail_frequency = 8;
+    scene.clouds.weather_map_size = 16;
+    const std::filesystem::path root = std::filesystem::path(PLANET_TEST_OUT) / "background_bake";
+    std::filesystem::remove_all(root);
+    clouds::CloudResources resources(root);
+    resources.setBackgroundBakes(true);
+    const Camera camera;
+    EXPECT_TRUE(resources.update(scene, camera, 54));  // first: waited for
+    EXPECT_EQ(resources.bakeProgress(), 1.0);
+    EXPECT_EQ(resources.block().enabled, 1);
+    const double largeStep = resources.largeStepKm(scene.clouds.tile_width_km);
+
+    scene.clouds.volume_seed = 7;
+    scene.clouds.border_voxels = 6;  // a new large step tells the new volume from the old
+    bool madeAtOnce = resources.update(scene, camera, 54);
+    EXPECT_FALSE(madeAtOnce);  // started, not waited for
+    EXPECT_EQ(resources.largeStepKm(scene.clouds.tile_width_km), largeStep) << "the old volume stays meanwhile";
+    bool made = false;
+    for (int i = 0; i < 6000 && !made; ++i) {  // up to a minute
+        EXPECT_LE(resources.bakeProgress(), 1.0);
+        std::this_thread::sleep_for(std::chrono::milliseconds(10));
+        made = resources.update(scene, camera, 54);
+    }
+    ASSERT_TRUE(made);
+    EXPECT_EQ(resources.bakeProgress(), 1.0);
+    EXPECT_NE(resources.largeStepKm(scene.clouds.tile_width_km), largeStep);
+    EXPECT_TRUE(std::filesystem::exists(root / ("volume-" + noise::cloudVolumeCacheKey(clouds::volumeParamsOf(scene.clouds)))));
+    EXPECT_FALSE(resources.update(scene, camera, 54));  // nothing more to do
 }
