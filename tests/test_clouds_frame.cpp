@@ -242,3 +242,20 @@ TEST_F(CloudFrame, ARebakeRunsInTheBackgroundWhileTheOldCloudsStay) {
     EXPECT_TRUE(std::filesystem::exists(root / ("volume-" + noise::cloudVolumeCacheKey(clouds::volumeParamsOf(scene.clouds)))));
     EXPECT_FALSE(resources.update(scene, camera, 54));  // nothing more to do
 }
+
+TEST_F(CloudFrame, TheFarFieldSwitchesOffForReferenceFrames) {
+    // From orbit the far field draws the weather map's smooth fields; off, the volume's tiles
+    // (aliasing) everywhere: the two frames must differ, both finite, and off must be the
+    // block's "no far field" (a footprint never spans 1e30 km of voxels).
+    Session on = session("orbit");
+    Session off = on;
+    off.scene.clouds.far_field = false;
+    const ImageRGBAF a = render(on), b = render(off);
+    ASSERT_TRUE(test::allFinite(a));
+    ASSERT_TRUE(test::allFinite(b));
+    EXPECT_GT(renderer->clouds().block().voxelKm, 1e29f);  // the last frame was `off`
+    double differ = 0.0;
+    for (std::size_t i = 0; i < a.pixels.size() / 4; ++i)
+        differ += std::abs(luminance(&a.pixels[4 * i]) - luminance(&b.pixels[4 * i])) > 0.02 * luminance(&a.pixels[4 * i]);
+    EXPECT_GT(differ / static_cast<double>(a.pixels.size() / 4), 0.05);
+}

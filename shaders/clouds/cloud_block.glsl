@@ -28,7 +28,7 @@ layout(std140, binding = BLOCK_CLOUDS) uniform CloudBlock {
     int enabled;                // 0: no clouds (the march is the clear sky's)
     int typeProfiles;           // 1: the weather map's cloud type shapes the height signal
     float pixelAngle;           // rad a pixel spans (vertical fov / height): footprints for the far field
-    float voxelKm;              // tileWidth / the volume's size; 0 before a volume is there
+    float voxelKm;              // tileWidth / the volume's size; 1e30 without a volume or far field
     int statistics;             // 1: the sky pass counts its march steps (BUFFER_CLOUD_STATISTICS)
     float padding2;
 } clouds;

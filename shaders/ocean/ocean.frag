@@ -112,7 +112,7 @@ void main() {
     vec3 reflected = reflect(view, normal);
     reflected = normalize(reflected + up * max(0.0, 0.01 - dot(reflected, up)));  // keep it above the horizon
     ViewMarch reflection = MarchView(point, reflected, 0.0, sun, 1, max(clouds.maxSteps / 32, 4), 0.5,
-                                     8.0 * clouds.voxelKm);
+                                     clouds.voxelKm < 1.0e20 ? 8.0 * clouds.voxelKm : 0.0);  // 1e30: no far field
     vec3 sky = reflection.inscatter;
     vec3 skyIrradiance;
     vec3 sunIrradiance = SunAndSkyIrradiance(point, up, sun, skyIrradiance);

@@ -48,8 +48,9 @@ CloudBlock makeCloudBlock(const Scene& scene, const Camera& camera, double large
     b.constantDensity = c.constant_density ? 1 : 0;
     b.typeProfiles = c.type_profiles ? 1 : 0;
     b.pixelAngle = static_cast<float>(pixelAngle);
-    // No far field without a volume (the footprint never reaches twice "no voxel").
-    b.voxelKm = volumeSize > 0 ? static_cast<float>(w / volumeSize) : 1.0e30f;
+    // No far field without a volume or when it is switched off (the footprint never reaches
+    // twice "no voxel").
+    b.voxelKm = volumeSize > 0 && c.far_field ? static_cast<float>(w / volumeSize) : 1.0e30f;
     b.enabled = c.enabled && (c.constant_density || c.coverage > 0.0) && c.density_scale > 0.0 &&
                         c.extinction_per_km > 0.0
                     ? 1

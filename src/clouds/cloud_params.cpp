@@ -47,6 +47,10 @@ void addCloudParams(std::vector<ParamSpec>& table) {
     add("constant_density", "", 0.0, 1.0,
         "A layer of uniform density (density_scale) instead of the noise, for analytic checks.",
         &CloudParams::constant_density);
+    add("far_field", "", 0.0, 1.0,
+        "Where a pixel spans several voxels (far away, from orbit), draw a smooth field whose column hides the "
+        "weather map's coverage instead of the aliasing volume; off: the volume everywhere (reference frames).",
+        &CloudParams::far_field);
     add("type_profiles", "", 0.0, 1.0,
         "Shape the layer's vertical profile by the weather map's cloud type (stratus low and flat, cumulus heaped, "
         "high thin sheets near the top); off: Michelic Eq. 13 alone.",

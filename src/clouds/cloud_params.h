@@ -31,6 +31,7 @@ struct CloudParams {
     double powder = 0.0;                   // strength of the dark-edge "powder" term, [0, 1]; 0: off
     bool energy_conserving_step = true;    // integrate each step's in-scattering over its extinction (Hillaire 2016)
     bool constant_density = false;         // a layer of uniform density density_scale instead of the noise
+    bool far_field = true;                 // smooth, coverage-true clouds where a pixel spans voxels (off: the volume everywhere)
     bool type_profiles = true;             // the weather map's cloud type shapes the vertical profile (else Eq. 13 alone)
     // The baked density volume (noise/cloud_volume.h); a change rebakes it (cached).
     int volume_seed = 1;                   // any int
