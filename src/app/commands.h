@@ -31,6 +31,8 @@ struct RenderOptions {
     CommonOptions common;
     std::vector<std::string> outputs;  // .png (display-ready) and/or .exr (linear HDR)
     std::optional<double> exposure;
+    std::string path;                  // camera path (name under assets/paths or a file): a sequence instead of a still
+    std::optional<int> frames;         // with path: this many frames evenly in time (default: duration x fps + 1)
 };
 
 struct BenchOptions {
@@ -95,6 +97,10 @@ int runCompare(const CompareOptions& options);  // throws when a limit is exceed
 // Renders one still headlessly (shared by `render` and explore's no-display fallback).
 void renderStill(const CommonOptions& common, const std::vector<std::string>& outputs,
                  std::optional<double> exposure);
+// Renders a camera path's frames in sequence with one Renderer, to numbered files
+// (each output a printf pattern such as seq/f_%04d.png); progress on stderr.
+void renderPath(const CommonOptions& common, const std::vector<std::string>& outputs,
+                std::optional<double> exposure, const std::string& path, std::optional<int> frames);
 
 struct Scene;
 namespace atmosphere {

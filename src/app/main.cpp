@@ -59,6 +59,11 @@ int main(int argc, char** argv) {
                           "Output file(s): .png = tone-mapped sRGB, .exr = linear HDR radiance (half RGBA)")
         ->required();
     renderCmd->add_option("--exposure", render.exposure, "Override the preset's exposure");
+    renderCmd->add_option("--path", render.path,
+                          "Camera path (name under assets/paths/ or a .toml file): render its frames in sequence to "
+                          "numbered files, each --out a printf pattern such as seq/f_%04d.png (--view is ignored)");
+    renderCmd->add_option("--frames", render.frames,
+                          "With --path: this many frames evenly over the whole path (default: duration x fps + 1)");
 
     planet::BenchOptions bench;
     CLI::App* benchCmd = app.add_subcommand("bench", "Time each pass over scripted views; table, CSV and plot");

@@ -1,8 +1,11 @@
 // `planet render`: one still from a preset and a view, headless (EGL), to PNG
 // (display-ready sRGB) and/or OpenEXR (linear HDR), the same pixels the
 // explorer's window shows for the same inputs.
+#include <chrono>
+#include <cstdio>
 #include <iostream>
 
+#include "app/camera_path.h"
 #include "app/commands.h"
 #include "app/session.h"
 #include "gl/context.h"
@@ -28,6 +31,30 @@ void checkOutputs(const std::vector<std::string>& outputs) {
     checkOutputsWritable(outputs);
 }
 
+void writeOutputs(const Renderer& renderer, const std::vector<std::string>& outputs, glm::ivec2 size,
+                  double exposure) {
+    for (const std::string& out : outputs) {
+        if (fs::path(out).extension() == ".png")
+            writePng(readTextureRGBA8(renderer.targets().ldr(), size.x, size.y), out);
+        else
+            writeExr(readTextureRGBAF(renderer.targets().hdr(), size.x, size.y), out, exposure);
+        std::cout << "wrote " << fs::absolute(out).lexically_normal().string() << "\n";
+    }
+}
+
+void applyExposure(std::optional<double> exposure, Scene& scene) {
+    if (!exposure) return;
+    // Same range as the preset's render.exposure.
+    if (!(*exposure >= 1e-3 && *exposure <= 1e3)) throw InputError("--exposure must be in [0.001, 1000]");
+    scene.render.exposure = *exposure;
+}
+
+std::string formatSeconds(double s) {
+    char buffer[32];
+    std::snprintf(buffer, sizeof buffer, "%.1f s", s);
+    return buffer;
+}
+
 }  // namespace
 
 void renderStill(const CommonOptions& common, const std::vector<std::string>& outputs,
@@ -37,11 +64,7 @@ void renderStill(const CommonOptions& common, const std::vector<std::string>& ou
     const DataPaths paths = findDataPaths(common.root);
     Session session = loadSession(paths, common.preset, common.view);
     session.scene.time_s = common.time;
-    if (exposure) {
-        // Same range as the preset's render.exposure.
-        if (!(*exposure >= 1e-3 && *exposure <= 1e3)) throw InputError("--exposure must be in [0.001, 1000]");
-        session.scene.render.exposure = *exposure;
-    }
+    applyExposure(exposure, session.scene);
 
     gl::DebugMessages messages;  // outlives the context that reports into it
     gl::HeadlessContext context(common.glDebug);
@@ -50,17 +73,78 @@ void renderStill(const CommonOptions& common, const std::vector<std::string>& ou
             gl::rendererDescription() + " via " + context.platform());
     Renderer renderer(paths.shaders(), atmosphere::tableSizesFor(common.tables, gl::rendererDescription()), session.continents);
     renderer.render(session.scene, session.camera, size);
+    writeOutputs(renderer, outputs, size, session.scene.render.exposure);
+}
 
-    for (const std::string& out : outputs) {
-        if (fs::path(out).extension() == ".png")
-            writePng(readTextureRGBA8(renderer.targets().ldr(), size.x, size.y), out);
-        else
-            writeExr(readTextureRGBAF(renderer.targets().hdr(), size.x, size.y), out, session.scene.render.exposure);
-        std::cout << "wrote " << fs::absolute(out).lexically_normal().string() << "\n";
+void renderPath(const CommonOptions& common, const std::vector<std::string>& outputs,
+                std::optional<double> exposure, const std::string& pathName, std::optional<int> frames) {
+    if (outputs.empty()) throw InputError("--out: give at least one output file pattern (.png or .exr)");
+    for (const std::string& out : outputs) frameFileName(out, 0);  // each names the frame number
+    const glm::ivec2 size = parseSize(common.size);
+    const DataPaths paths = findDataPaths(common.root);
+    std::vector<std::string> warnings;
+    const CameraPathFile file = loadCameraPath(resolveCameraPath(pathName, paths.assets() / "paths"), &warnings);
+    for (const std::string& w : warnings) logWarning(w);
+    const int frameCount = pathFrameCount(file, frames);
+    std::vector<std::string> firstOutputs;
+    for (const std::string& out : outputs) firstOutputs.push_back(frameFileName(out, 0));
+    checkOutputs(firstOutputs);
+
+    Session session = loadSession(paths, common.preset, common.view);
+    session.scene.sun = session.presetScene.sun;  // the path's sun, or the preset's: never the --view's
+    applyExposure(exposure, session.scene);
+    session.ground.update(session.scene.terrain);
+    // A keyframe's altitude is above the ground under it, as a view's is.
+    const CameraPath path(file, session.scene.planetRadiusM(), [&session](const glm::dvec3& direction) {
+        return terrain::surfaceHeightM(session.ground, direction);
+    });
+
+    gl::DebugMessages messages;  // outlives the context that reports into it
+    gl::HeadlessContext context(common.glDebug);
+    gl::installDebugOutput(&messages, common.glDebug);
+    logInfo("rendering path '" + file.name + "': " + std::to_string(frameCount) + " frames of " +
+            std::to_string(size.x) + "x" + std::to_string(size.y) + " on " + gl::rendererDescription() + " via " +
+            context.platform());
+    // One renderer for the whole sequence: each frame has the history of the ones before it.
+    Renderer renderer(paths.shaders(), atmosphere::tableSizesFor(common.tables, gl::rendererDescription()),
+                      session.continents);
+    using Clock = std::chrono::steady_clock;
+    const Clock::time_point start = Clock::now();
+    for (int i = 0; i < frameCount; ++i) {
+        const double t = pathFrameTime(file, i, frameCount);
+        const PathSample sample = path.sample(t);
+        session.camera = sample.camera;
+        keepAboveGround(session);
+        const std::string fix = sanitizeCamera(session.camera, session.scene.planetRadiusM());
+        if (!fix.empty()) logWarning("path '" + file.name + "' frame " + std::to_string(i) + ": " + fix);
+        if (sample.sun_elevation_deg) {
+            View place;
+            place.latitude_deg = sample.latitude_deg;
+            place.longitude_deg = sample.longitude_deg;
+            place.sun_elevation_deg = sample.sun_elevation_deg;
+            place.sun_azimuth_deg = sample.sun_azimuth_deg;
+            applyViewSun(place, session.scene);
+        }
+        session.scene.time_s = common.time + (t - file.startTime());
+        renderer.render(session.scene, session.camera, size);
+
+        std::vector<std::string> names;
+        for (const std::string& out : outputs) names.push_back(frameFileName(out, i));
+        writeOutputs(renderer, names, size, session.scene.render.exposure);
+
+        const double elapsed = std::chrono::duration<double>(Clock::now() - start).count();
+        const double remaining = elapsed / (i + 1) * (frameCount - i - 1);
+        std::cerr << "frame " << (i + 1) << " of " << frameCount << " (t = " << formatSeconds(t - file.startTime())
+                  << "): elapsed " << formatSeconds(elapsed) << ", about " << formatSeconds(remaining) << " left\n";
     }
 }
 
 int runRender(const RenderOptions& options) {
+    if (!options.path.empty()) {
+        renderPath(options.common, options.outputs, options.exposure, options.path, options.frames);
+        return 0;
+    }
+    if (options.frames) throw InputError("--frames needs --path (a still is one frame)");
     renderStill(options.common, options.outputs, options.exposure);
     return 0;
 }
