@@ -75,11 +75,32 @@ WindowPtr openWindow(glm::ivec2 size, bool debug) {
     return window;
 }
 
+// Where the panels' layout is kept between runs: $XDG_CONFIG_HOME/planet/imgui.ini, else
+// ~/.config/planet/imgui.ini; never the working folder. Empty when there is no such folder
+// and it cannot be made (the layout is then not kept).
+std::string panelLayoutFile() {
+    std::filesystem::path config;
+    if (const char* xdg = std::getenv("XDG_CONFIG_HOME"); xdg && *xdg)
+        config = xdg;
+    else if (const char* home = std::getenv("HOME"); home && *home)
+        config = std::filesystem::path(home) / ".config";
+    else
+        return {};
+    std::error_code ec;
+    std::filesystem::create_directories(config / "planet", ec);
+    if (ec) {
+        logWarning("the panel layout will not be kept: cannot make " + (config / "planet").string() + ": " + ec.message());
+        return {};
+    }
+    return (config / "planet" / "imgui.ini").string();
+}
+
 struct ImGuiLayer {
-    explicit ImGuiLayer(GLFWwindow* window) {
+    explicit ImGuiLayer(GLFWwindow* window) : iniFile(panelLayoutFile()) {
         IMGUI_CHECKVERSION();
         ImGui::CreateContext();
-        ImGui::GetIO().IniFilename = nullptr;  // no imgui.ini written into the working folder
+        // The layout the user left (ImGui reads it now and writes it back as it changes and at exit).
+        ImGui::GetIO().IniFilename = iniFile.empty() ? nullptr : iniFile.c_str();
         ImGui::StyleColorsDark();
         ImGui_ImplGlfw_InitForOpenGL(window, true);
         ImGui_ImplOpenGL3_Init("#version 450 core");
@@ -91,6 +112,7 @@ struct ImGuiLayer {
     }
     ImGuiLayer(const ImGuiLayer&) = delete;
     ImGuiLayer& operator=(const ImGuiLayer&) = delete;
+    std::string iniFile;  // outlives the context, which keeps a pointer to it
 };
 
 // Input gathered between frames; GLFW reports scroll through a callback.
@@ -250,8 +272,9 @@ void Explorer::drawUi() {
         drawProfilerPanel(renderer_.profiler(), rendererName_);
         if (drawSceneParams(session_.scene, renderer_.atmosphere().rebuildProgress(), renderer_.cloudBakeProgress())) acceptOrRevertEdit();
         if (session_.scene.terrain.ocean && drawWavePanel(session_.scene, clock_)) acceptOrRevertEdit();
-        const CameraPanelResult r = drawCameraPanel(session_.camera, controller_, session_.scene.planetRadiusM(),
-                                                    session_.views, presetPath_, status_);
+        const CameraPanelResult r =
+            drawCameraPanel(session_.camera, controller_, session_.scene, session_.views, presetPath_, status_);
+        if (r.sunMoved) acceptOrRevertEdit();
         if (r.jumpToView >= 0) jumpToView(static_cast<std::size_t>(r.jumpToView));
         if (r.savePreset) savePreset();
     }

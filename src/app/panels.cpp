@@ -72,11 +72,44 @@ bool paramWidget(const ParamSpec& spec, Scene& scene) {
     return changed;
 }
 
+// The first-use placement of the panel `name` (initialPanelLayout), for the next Begin.
+void placeOnFirstUse(const char* name) {
+    const ImVec2 display = ImGui::GetIO().DisplaySize;
+    for (const PanelPlacement& p : initialPanelLayout(display.x, display.y)) {
+        if (p.name != name) continue;
+        ImGui::SetNextWindowPos(ImVec2(p.x, p.y), ImGuiCond_FirstUseEver);
+        ImGui::SetNextWindowSize(ImVec2(p.width, p.height), ImGuiCond_FirstUseEver);
+        ImGui::SetNextWindowCollapsed(p.collapsed, ImGuiCond_FirstUseEver);
+    }
+}
+
 }  // namespace
 
+std::vector<PanelPlacement> initialPanelLayout(float w, float h) {
+    const float right = std::max(w - 330.0f, 0.0f);
+    return {{"Frame time", 10.0f, 10.0f, 430.0f, std::min(260.0f, 0.4f * h), false},
+            {"Scene", 10.0f, std::min(280.0f, 0.5f * h), 560.0f, std::min(420.0f, 0.55f * h), true},
+            {"Camera", right, 10.0f, 320.0f, std::min(330.0f, 0.5f * h), true},
+            {"Waves", right, 40.0f, 320.0f, std::min(360.0f, 0.5f * h), true}};
+}
+
+double panelCoverage(const std::vector<PanelPlacement>& layout, float w, float h, float titleHeight) {
+    // Counted on the pixel grid, so overlaps count once.
+    const int width = std::max(static_cast<int>(w), 1), height = std::max(static_cast<int>(h), 1);
+    std::vector<unsigned char> covered(static_cast<std::size_t>(width) * height, 0);
+    for (const PanelPlacement& p : layout) {
+        const float bottom = p.y + (p.collapsed ? titleHeight : p.height);
+        for (int y = std::max(static_cast<int>(p.y), 0); y < std::min(static_cast<int>(bottom), height); ++y)
+            for (int x = std::max(static_cast<int>(p.x), 0); x < std::min(static_cast<int>(p.x + p.width), width); ++x)
+                covered[static_cast<std::size_t>(y) * width + x] = 1;
+    }
+    std::size_t count = 0;
+    for (unsigned char c : covered) count += c;
+    return static_cast<double>(count) / static_cast<double>(covered.size());
+}
+
 void drawProfilerPanel(const Profiler& profiler, const std::string& renderer) {
-    ImGui::SetNextWindowPos(ImVec2(10, 10), ImGuiCond_FirstUseEver);
-    ImGui::SetNextWindowSize(ImVec2(430, 0), ImGuiCond_FirstUseEver);
+    placeOnFirstUse("Frame time");
     if (!ImGui::Begin("Frame time")) return ImGui::End();
     const double cpu = profiler.frameCpuMs().median();
     ImGui::Text("%.1f FPS   frame CPU %.2f ms   GPU %.2f ms", ImGui::GetIO().Framerate, cpu,
@@ -96,8 +129,7 @@ void drawProfilerPanel(const Profiler& profiler, const std::string& renderer) {
 }
 
 bool drawSceneParams(Scene& scene, double rebuildProgress, double cloudBakeProgress) {
-    ImGui::SetNextWindowPos(ImVec2(10, 330), ImGuiCond_FirstUseEver);
-    ImGui::SetNextWindowSize(ImVec2(560, 420), ImGuiCond_FirstUseEver);
+    placeOnFirstUse("Scene");
     bool changed = false;
     if (!ImGui::Begin("Scene")) {
         ImGui::End();
@@ -130,17 +162,15 @@ bool drawSceneParams(Scene& scene, double rebuildProgress, double cloudBakeProgr
     return changed;
 }
 
-CameraPanelResult drawCameraPanel(const Camera& camera, CameraController& controller, double planetRadiusM,
+CameraPanelResult drawCameraPanel(const Camera& camera, CameraController& controller, Scene& scene,
                                   const std::vector<View>& views, std::string& presetPath, const std::string& status) {
     CameraPanelResult result;
-    const ImVec2 display = ImGui::GetIO().DisplaySize;
-    ImGui::SetNextWindowPos(ImVec2(display.x - 330, 10), ImGuiCond_FirstUseEver);
-    ImGui::SetNextWindowSize(ImVec2(320, 0), ImGuiCond_FirstUseEver);
+    placeOnFirstUse("Camera");
     if (!ImGui::Begin("Camera")) {
         ImGui::End();
         return result;
     }
-    const double altitude = camera.altitude(planetRadiusM);
+    const double altitude = camera.altitude(scene.planetRadiusM());
     const glm::dvec3 up = glm::normalize(camera.position);
     ImGui::Text("altitude %.3f %s", altitude >= 1e4 ? altitude / 1e3 : altitude, altitude >= 1e4 ? "km" : "m");
     ImGui::Text("lat %.4f  lon %.4f", glm::degrees(std::asin(glm::clamp(up.z, -1.0, 1.0))),
@@ -154,6 +184,14 @@ CameraPanelResult drawCameraPanel(const Camera& camera, CameraController& contro
     float speed = static_cast<float>(controller.speedScale);
     if (ImGui::SliderFloat("speed", &speed, 1e-3f, 1e3f, "%.3g", ImGuiSliderFlags_Logarithmic))
         controller.speedScale = speed;
+    // The planet turns under the sun: one drag goes from dawn over noon to dusk here.
+    float hour = static_cast<float>(localSolarHour(scene.sun, up));
+    if (ImGui::SliderFloat("time of day", &hour, 0.0f, 24.0f, "%.2f h")) {
+        setLocalSolarHour(scene.sun, up, hour);
+        result.sunMoved = true;
+    }
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("Local solar time at the camera: moves the sun's longitude (its latitude, the season, stays)");
     ImGui::Separator();
     ImGui::TextUnformatted("Views (keys 1-9)");
     for (std::size_t i = 0; i < views.size(); ++i) {
@@ -208,9 +246,7 @@ bool waveWidgets(ocean::GerstnerWave& w) {
 }  // namespace
 
 bool drawWavePanel(Scene& scene, WaveClock& clock) {
-    const ImVec2 display = ImGui::GetIO().DisplaySize;
-    ImGui::SetNextWindowPos(ImVec2(display.x - 330, 330), ImGuiCond_FirstUseEver);
-    ImGui::SetNextWindowSize(ImVec2(320, 360), ImGuiCond_FirstUseEver);
+    placeOnFirstUse("Waves");
     if (!ImGui::Begin("Waves")) {
         ImGui::End();
         return false;

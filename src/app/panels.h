@@ -12,6 +12,21 @@
 
 namespace planet {
 
+// Where each panel starts when there is no saved layout (the layout is saved in the user's
+// config folder, explorer.cpp): the frame-time panel open at the top left, the others
+// collapsed to their title bars at the edges (`width` x `height` once expanded), so that at
+// 1280x720 they cover under 30 % of the view (tested).
+struct PanelPlacement {
+    std::string name;
+    float x = 0, y = 0, width = 0, height = 0;
+    bool collapsed = false;
+};
+std::vector<PanelPlacement> initialPanelLayout(float displayWidth, float displayHeight);
+// The share of the display the placements cover, a collapsed panel by its title bar
+// (`titleHeight` pixels), overlaps counted once.
+double panelCoverage(const std::vector<PanelPlacement>& layout, float displayWidth, float displayHeight,
+                     float titleHeight);
+
 // Frame time: FPS, frame GPU/CPU graph, and a per-pass min/median/max table.
 void drawProfilerPanel(const Profiler& profiler, const std::string& renderer);
 
@@ -22,11 +37,14 @@ void drawProfilerPanel(const Profiler& profiler, const std::string& renderer);
 // likewise for a background bake of the clouds' volume and weather map.
 bool drawSceneParams(Scene& scene, double rebuildProgress, double cloudBakeProgress);
 
+// Camera: altitude and place, fly/orbit and speed, the view bookmarks, the time of day at
+// the camera (moves the sun: scene.sun's longitude), and saving the preset.
 struct CameraPanelResult {
     int jumpToView = -1;   // index into views, or -1
     bool savePreset = false;
+    bool sunMoved = false; // the time-of-day control changed scene.sun
 };
-CameraPanelResult drawCameraPanel(const Camera& camera, CameraController& controller, double planetRadiusM,
+CameraPanelResult drawCameraPanel(const Camera& camera, CameraController& controller, Scene& scene,
                                   const std::vector<View>& views, std::string& presetPath, const std::string& status);
 
 // The ocean's clock, owned by the explorer: scene.time_s advances by rate * dt unless paused.

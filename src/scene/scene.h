@@ -65,4 +65,11 @@ struct Scene {
 // Unit vector in the world frame for a geographic latitude/longitude (degrees).
 glm::dvec3 directionFromLatLon(double latitudeDeg, double longitudeDeg);
 
+// Local solar time at a place (unit direction from the planet centre), hours in [0, 24):
+// 12 where the subsolar point's longitude is the place's, 6 and 18 a quarter turn away.
+double localSolarHour(const SunParams& sun, glm::dvec3 place);
+// Moves the subsolar point's longitude so that it is `hour` o'clock at `place` (the
+// planet turns under a fixed sun; the sun's latitude, the season, stays).
+void setLocalSolarHour(SunParams& sun, glm::dvec3 place, double hour);
+
 }  // namespace planet

@@ -23,6 +23,19 @@ glm::dvec3 directionFromLatLon(double latitudeDeg, double longitudeDeg) {
 glm::dvec3 Scene::sunDirection() const { return directionFromLatLon(sun.latitude_deg, sun.longitude_deg); }
 
 namespace {
+double wrap(double x, double period) { return x - period * std::floor(x / period); }
+double placeLongitudeDeg(glm::dvec3 place) { return glm::degrees(std::atan2(place.y, place.x)); }
+}  // namespace
+
+double localSolarHour(const SunParams& sun, glm::dvec3 place) {
+    return wrap(12.0 + (placeLongitudeDeg(place) - sun.longitude_deg) / 15.0, 24.0);
+}
+
+void setLocalSolarHour(SunParams& sun, glm::dvec3 place, double hour) {
+    sun.longitude_deg = wrap(placeLongitudeDeg(place) - (hour - 12.0) * 15.0 + 180.0, 360.0) - 180.0;
+}
+
+namespace {
 
 std::vector<ParamSpec> buildTable() {
     std::vector<ParamSpec> t;
