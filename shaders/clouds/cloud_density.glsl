@@ -53,7 +53,7 @@ Length CloudFootprintAt(vec3 point) { return length(point - clouds.cameraFromCen
 // the sun: clouds.sunSamples density samples spread over the sun ray's way through the
 // layer, or over `maxLength` km of it where that way is longer, seen with a footprint of
 // `footprintKm` (the view sample's). 0 without clouds.
-Length CloudDensityPathToSun(vec3 point, vec3 sun, Length maxLength, Length footprintKm) {
+Length CloudDensityPathToSun(vec3 point, vec3 sun, Length maxLength, Length footprintKm, int samples) {
     if (clouds.enabled == 0) return 0.0;
     Length r = length(point);
     vec2 first;
@@ -61,9 +61,9 @@ Length CloudDensityPathToSun(vec3 point, vec3 sun, Length maxLength, Length foot
     int count = CloudLayerIntervals(r, dot(point, sun) / r, 1.0e9, clouds.bottomRadius, clouds.topRadius, first, second);
     if (count == 0) return 0.0;
     Length way = min(first.y - first.x, maxLength);
-    Length step = way / Number(max(clouds.sunSamples, 1));
+    Length step = way / Number(max(samples, 1));
     Length path = 0.0;
-    for (int i = 0; i < clouds.sunSamples; ++i)
+    for (int i = 0; i < samples; ++i)
         path += max(CloudDensityAt(point + sun * (first.x + (Number(i) + 0.5) * step), footprintKm), 0.0) * step;
     return path;
 }
@@ -72,5 +72,5 @@ Length CloudDensityPathToSun(vec3 point, vec3 sun, Length maxLength, Length foot
 // from a point the camera sees (the surfaces' shadows): with that point's footprint, so a
 // shadow seen from orbit is the far field's, not speckle.
 Number CloudSunTransmittance(vec3 point, vec3 sun, Length maxLength) {
-    return exp(-clouds.extinction * CloudDensityPathToSun(point, sun, maxLength, CloudFootprintAt(point)));
+    return exp(-clouds.extinction * CloudDensityPathToSun(point, sun, maxLength, CloudFootprintAt(point), clouds.sunSamples));
 }

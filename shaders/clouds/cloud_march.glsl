@@ -23,6 +23,27 @@
 // src/clouds/cloud_reference.h compiles it in double, with the interface's functions
 // (SkyRadiance, SkyRadianceToPoint, ...) bound to the atmosphere's CPU model.
 
+// How finely a caller marches: the sky pass gives the preset's (MarchQualityOf), the sea's
+// reflection less (ocean.frag), the probes the preset's with jitter 1/2.
+struct MarchQuality {
+    int slicesPerCrossing;  // atmosphere slices per crossing of the layer (Eq. 17-18)
+    int stepBudget;         // small cloud steps at most, over the whole ray
+    int sunSamples;         // density samples towards the sun for T_sun
+    Number jitter;          // in [0, 1): where in each step it is sampled (1/2: the midpoint)
+    Length minFootprintKm;  // the smallest footprint the density is seen with (> 0: the far field)
+};
+
+// The preset's march, with the given jitter.
+MarchQuality MarchQualityOf(Number jitter) {
+    MarchQuality q;
+    q.slicesPerCrossing = clouds.atmosphereSlices;
+    q.stepBudget = clouds.maxSteps;
+    q.sunSamples = clouds.sunSamples;
+    q.jitter = jitter;
+    q.minFootprintKm = 0.0;
+    return q;
+}
+
 struct CloudSegmentResult {
     vec3 transmittance;
     vec3 inscatter;
@@ -31,12 +52,12 @@ struct CloudSegmentResult {
 };
 
 // Radiance scattered towards the viewer per unit scattering coefficient at a cloud sample.
-vec3 CloudSource(vec3 point, vec3 sun, Number cosTheta, Number density, Length footprintKm) {
+vec3 CloudSource(vec3 point, vec3 sun, Number cosTheta, Number density, Length footprintKm, int sunSamples) {
     AtmosphereParameters atmosphere = atmosphereParameters();
     Length r = length(point);
     Number muS = dot(point, sun) / r;
     vec3 sunlight = atmosphere.solar_irradiance * GetTransmittanceToSun(atmosphere, transmittance_texture, r, muS);
-    Length opticalDepth = CloudDensityPathToSun(point, sun, Number(clouds.sunSamples) * clouds.sunStep, footprintKm);  // density x km
+    Length opticalDepth = CloudDensityPathToSun(point, sun, Number(clouds.sunSamples) * clouds.sunStep, footprintKm, sunSamples);  // density x km
     vec3 light = vec3(0.0);
     Number a = 1.0;
     Number b = 1.0;
@@ -56,8 +77,8 @@ vec3 CloudSource(vec3 point, vec3 sun, Number cosTheta, Number density, Length f
 
 // Eq. 15-16 from `start` to `end` km along `dir` from `origin` (km from the planet centre),
 // at most `budget` small steps.
-CloudSegmentResult MarchCloudSegment(vec3 origin, vec3 dir, Length start, Length end, vec3 sun, int budget, Number jitter,
-                                     Length minFootprintKm) {
+CloudSegmentResult MarchCloudSegment(vec3 origin, vec3 dir, Length start, Length end, vec3 sun, int budget,
+                                     MarchQuality quality) {
     CloudSegmentResult result;
     result.transmittance = vec3(1.0);
     result.inscatter = vec3(0.0);
@@ -77,24 +98,24 @@ CloudSegmentResult MarchCloudSegment(vec3 origin, vec3 dir, Length start, Length
     Length t = start;
     Number previous = 0.0;
     for (int i = 0; i < 4 * clouds.maxSteps && t < end; ++i) {
-        Length footprint = max((fromCamera + t) * clouds.pixelAngle, minFootprintKm);
+        Length footprint = max((fromCamera + t) * clouds.pixelAngle, quality.minFootprintKm);
         // Where the footprint grows the step (the far field), at least 16 samples across the
         // layer's depth still, so that a narrow vertical profile (stratus) is resolved.
         Number mu = abs(dot(dir, origin + dir * t)) / length(origin + dir * t);
         Length across = (clouds.topRadius - clouds.bottomRadius) / (16.0 * max(mu, Number(1e-3)));
         Length dt = min(min(max(step, 0.5 * footprint), max(across, step)), end - t);
         if (previous > 0.0) dt = min(dt, max(0.5 / (clouds.extinction * previous), step / 8.0));
-        vec3 point = origin + dir * (t + jitter * dt);
+        vec3 point = origin + dir * (t + quality.jitter * dt);
         Number density = CloudDensityAt(point, footprint);
         if (density < 0.0) {  // no cloud within the zero-density border: one large step
-            t += jitter * dt + max(clouds.largeStepKm, step);
+            t += quality.jitter * dt + max(clouds.largeStepKm, step);
             result.skipped += 1;
             previous = 0.0;
             continue;
         }
         previous = density;
         if (density > 0.0) {
-            vec3 source = CloudSource(point, sun, cosTheta, density, footprint);
+            vec3 source = CloudSource(point, sun, cosTheta, density, footprint, quality.sunSamples);
             CloudMarchStep(density, dt, clouds.extinction, clouds.scattering, source, clouds.energyConservingStep != 0,
                            result.transmittance, result.inscatter);
         }
@@ -115,14 +136,11 @@ struct ViewMarch {
 
 // Everything between `origin` (km from the planet centre) and the point `distance` km along
 // `dir`, or space when `distance` <= 0 (then the sky behind is in `inscatter`, and
-// `transmittance` is that of the whole ray, for the sun disc). `slicesPerCrossing` atmosphere
-// slices per crossing of the layer and `stepBudget` cloud steps at most: the sky pass gives
-// the preset's, the sea's reflection fewer. `jitter` in [0, 1): where in its first step the
-// cloud march starts (a per-pixel noise in the sky pass, 1/2 elsewhere). `minFootprintKm`:
-// the smallest footprint the density is seen with; the sea's reflection asks for the far
-// field (its few steps would alias the volume, and waves blur the reflection anyway).
-ViewMarch MarchView(vec3 origin, vec3 dir, Length distance, vec3 sun, int slicesPerCrossing, int stepBudget, Number jitter,
-                    Length minFootprintKm) {
+// `transmittance` is that of the whole ray, for the sun disc), marched as finely as `quality`
+// says: the sky pass gives the preset's with a per-pixel jitter; the sea's reflection one
+// slice, fewer steps and sun samples and the far field (its few steps would alias the
+// volume, and waves and Fresnel blur the reflection anyway).
+ViewMarch MarchView(vec3 origin, vec3 dir, Length distance, vec3 sun, MarchQuality quality) {
     ViewMarch m;
     m.transmittance = vec3(1.0);
     m.inscatter = vec3(0.0);
@@ -144,14 +162,14 @@ ViewMarch MarchView(vec3 origin, vec3 dir, Length distance, vec3 sun, int slices
             vec3 slice = SkyRadianceToPoint(origin + dir * t, dir, crossing.x - t, sun, sliceTransmittance);
             CombineSlice(sliceTransmittance, slice, vec3(1.0), vec3(0.0), m.transmittance, m.inscatter);
         }
-        int slices = max(slicesPerCrossing, 1);
+        int slices = max(quality.slicesPerCrossing, 1);
         Length width = (crossing.y - crossing.x) / Number(slices);
-        int budget = max(stepBudget / (slices * count), 1);
+        int budget = max(quality.stepBudget / (slices * count), 1);
         for (int s = 0; s < slices; ++s) {  // inside the layer: slices of air with clouds in them (Eq. 19-20)
             Length a = crossing.x + Number(s) * width;
             vec3 sliceTransmittance;
             vec3 slice = SkyRadianceToPoint(origin + dir * a, dir, width, sun, sliceTransmittance);
-            CloudSegmentResult c = MarchCloudSegment(origin, dir, a, a + width, sun, budget, jitter, minFootprintKm);
+            CloudSegmentResult c = MarchCloudSegment(origin, dir, a, a + width, sun, budget, quality);
             CombineSlice(sliceTransmittance, slice, c.transmittance, c.inscatter, m.transmittance, m.inscatter);
             m.steps += c.steps;
             m.skipped += c.skipped;

@@ -21,8 +21,7 @@ layout(std430, binding = BUFFER_PROBE_OUTPUT) writeonly buffer ProbeResults {
 void main() {
     int i = int(gl_GlobalInvocationID.x);
     if (i >= rayCount) return;
-    ViewMarch m = MarchView(rays[3 * i].xyz, rays[3 * i + 1].xyz, rays[3 * i].w, rays[3 * i + 2].xyz, clouds.atmosphereSlices,
-                            clouds.maxSteps, 0.5, 0.0);
+    ViewMarch m = MarchView(rays[3 * i].xyz, rays[3 * i + 1].xyz, rays[3 * i].w, rays[3 * i + 2].xyz, MarchQualityOf(0.5));
     results[2 * i] = vec4(m.transmittance, float(m.steps));
     results[2 * i + 1] = vec4(m.inscatter, float(m.skipped));
 }

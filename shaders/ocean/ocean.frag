@@ -111,8 +111,13 @@ void main() {
 
     vec3 reflected = reflect(view, normal);
     reflected = normalize(reflected + up * max(0.0, 0.01 - dot(reflected, up)));  // keep it above the horizon
-    ViewMarch reflection = MarchView(point, reflected, 0.0, sun, 1, max(clouds.maxSteps / 32, 4), 0.5,
-                                     clouds.voxelKm < 1.0e20 ? 8.0 * clouds.voxelKm : 0.0);  // 1e30: no far field
+    // The reflection's march: one slice, a 32nd of the steps, two sun samples and the far field.
+    MarchQuality quality = MarchQualityOf(0.5);
+    quality.slicesPerCrossing = 1;
+    quality.stepBudget = max(clouds.maxSteps / 32, 4);
+    quality.sunSamples = min(clouds.sunSamples, 2);
+    quality.minFootprintKm = clouds.voxelKm < 1.0e20 ? 8.0 * clouds.voxelKm : 0.0;  // 1e30: no far field
+    ViewMarch reflection = MarchView(point, reflected, 0.0, sun, quality);  // 1e30: no far field
     vec3 sky = reflection.inscatter;
     vec3 skyIrradiance;
     vec3 sunIrradiance = SunAndSkyIrradiance(point, up, sun, skyIrradiance);

@@ -45,8 +45,7 @@ vec3 throughAir(vec3 dir, vec3 surface, float distance) {
     vec3 sun = frame.sunDirection;
     // Interleaved gradient noise (Jimenez 2014): a different start in each pixel of a 3x3 block.
     float jitter = fract(52.9829189 * fract(dot(gl_FragCoord.xy, vec2(0.06711056, 0.00583715))));
-    ViewMarch m = MarchView(cameraFromPlanetCentreKm(), dir, distance / M_PER_KM, sun, clouds.atmosphereSlices,
-                            clouds.maxSteps, jitter, 0.0);
+    ViewMarch m = MarchView(cameraFromPlanetCentreKm(), dir, distance / M_PER_KM, sun, MarchQualityOf(jitter));
     if (clouds.statistics != 0) {
         atomicAdd(statistics.marchSteps, uint(m.steps));
         atomicAdd(statistics.skippedSteps, uint(m.skipped));

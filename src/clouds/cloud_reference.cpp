@@ -123,8 +123,7 @@ CloudProbeResult CloudReference::march(const CloudBlock& block, const CloudProbe
     glsl::CloudMarchModel model(atmosphere_, tables_, block, volume_, weather_);
     // clouds/cloud_probe.comp's call.
     const glsl::CloudMarchModel::ViewMarch m =
-        model.MarchView(ray.origin, ray.direction, ray.distanceKm, ray.sun, model.clouds.atmosphereSlices,
-                        model.clouds.maxSteps, 0.5, 0.0);
+        model.MarchView(ray.origin, ray.direction, ray.distanceKm, ray.sun, model.MarchQualityOf(0.5));
     return {m.transmittance, m.inscatter, m.steps, m.skipped};
 }
 
