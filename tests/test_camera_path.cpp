@@ -322,5 +322,56 @@ TEST_F(RenderPathTest, BadSequenceArgumentsFail) {
     EXPECT_FALSE(fs::exists(dir / "f_0.png"));
 }
 
+TEST_F(RenderPathTest, TheExplorerPlaysAPathAsRenderRendersIt) {
+    // `explore --path` shows one path frame per window frame: with the panels hidden, its
+    // third window frame is render --path's frame 2, pixel for pixel (the same camera, sun,
+    // clock and frame history). Needs a window: Xvfb.
+    std::ofstream(dir / "turn.toml") << R"(description = "turn"
+fps = 4
+[[keyframe]]
+time_s = 0
+latitude_deg = 20
+longitude_deg = 10
+altitude_m = 400000
+heading_deg = 90
+pitch_deg = -20
+sun_elevation_deg = 40
+sun_azimuth_deg = 180
+[[keyframe]]
+time_s = 2
+latitude_deg = 22
+longitude_deg = 12
+altitude_m = 300000
+heading_deg = 150
+pitch_deg = -40
+sun_elevation_deg = 50
+sun_azimuth_deg = 190
+)";
+    const auto render = test::runCommand(planet("render --path turn.toml --size 160x90 --out f_%d.png"));
+    ASSERT_EQ(render.exitCode, 0) << render.output;
+    const auto r = test::runCommand("cd '" + dir.string() + "' && XDG_CONFIG_HOME='" + (dir / "config").string() +
+                                    "' xvfb-run -a -s '-screen 0 640x480x24' '" PLANET_EXE
+                                    "' explore --no-panels --path turn.toml --size 160x90 --frames 3 --screenshot w.png");
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_TRUE(test::contains(r.output, "playing path 'turn': 9 frames")) << r.output;
+    int w1, h1, n1, w2, h2, n2;
+    unsigned char* a = stbi_load((dir / "f_2.png").c_str(), &w1, &h1, &n1, 4);
+    unsigned char* b = stbi_load((dir / "w.png").c_str(), &w2, &h2, &n2, 4);
+    unsigned char* first = stbi_load((dir / "f_0.png").c_str(), &w2, &h2, &n2, 4);
+    ASSERT_TRUE(a && b && first);
+    ASSERT_EQ(w1, w2);
+    ASSERT_EQ(h1, h2);
+    int differing = 0, moved = 0;
+    for (int i = 0; i < w1 * h1 * 4; ++i) {
+        differing += a[i] != b[i];
+        moved += a[i] != first[i];
+    }
+    EXPECT_EQ(differing, 0);
+    EXPECT_GT(moved, w1 * h1);  // the camera did move between frames 0 and 2
+    stbi_image_free(a);
+    stbi_image_free(b);
+    stbi_image_free(first);
+}
+
 }  // namespace
 }  // namespace planet

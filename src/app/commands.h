@@ -25,6 +25,7 @@ struct ExploreOptions {
     std::string screenshot;            // PNG of the window (UI included) after the last frame
     bool noPanels = false;             // start with the panels hidden (F1 shows them)
     std::string headlessOut = "out/planet.png";  // still written when there is no display
+    std::string path;                  // camera path to play (name under assets/paths or a file); P pauses
 };
 
 struct RenderOptions {

@@ -168,6 +168,13 @@ public:
           showUi_(!options.noPanels) {
         session_.scene.time_s = options.common.time;
         renderer_.setBackgroundBakes(true);  // a cloud rebake shows as progress in the Scene panel
+        if (!options.path.empty()) {
+            path_.emplace(loadSessionPath(paths, options.path, session_));
+            pathFrames_ = pathFrameCount(path_->file(), std::nullopt);
+            pathPlaying_ = true;
+            logInfo("playing path '" + path_->file().name + "': " + std::to_string(pathFrames_) +
+                    " frames, one a window frame (P pauses)");
+        }
         glfwSetWindowUserPointer(window_, &pending_);
         glfwSetScrollCallback(window_, [](GLFWwindow* w, double, double dy) {
             static_cast<PendingInput*>(glfwGetWindowUserPointer(w))->scroll += dy;
@@ -186,6 +193,7 @@ private:
     void jumpToView(std::size_t index);
     void savePreset();
     void pollShaders();
+    void followPath();
 
     const ExploreOptions& options_;
     GLFWwindow* window_;
@@ -202,6 +210,11 @@ private:
     PendingInput pending_;
     std::chrono::steady_clock::time_point lastShaderPoll_{};
     std::vector<std::string> lastShaderErrors_;  // logged once each
+    // Path playback (--path): the natural frames of render --path, one per window frame.
+    std::optional<CameraPath> path_;
+    int pathFrame_ = 0;
+    int pathFrames_ = 0;
+    bool pathPlaying_ = false;
 };
 
 void Explorer::handleKeys() {
@@ -214,11 +227,28 @@ void Explorer::handleKeys() {
         if (typing) continue;
         if (key == GLFW_KEY_TAB)
             controller_.mode = controller_.mode == CameraMode::Fly ? CameraMode::Orbit : CameraMode::Fly;
+        if (key == GLFW_KEY_P && path_) {  // pause, resume, or play again from the start once ended
+            if (!pathPlaying_ && pathFrame_ >= pathFrames_) pathFrame_ = 0;
+            pathPlaying_ = !pathPlaying_;
+        }
         const int index = key - GLFW_KEY_1;
         if (index >= 0 && index < 9 && index < static_cast<int>(session_.views.size()))
             jumpToView(static_cast<std::size_t>(index));
     }
     pending_.keys.clear();
+}
+
+// The path's next frame: the camera, the sun (when the path has one) and the clock, as
+// render --path sets them for its frame of that number.
+void Explorer::followPath() {
+    const double t = pathFrameTime(path_->file(), pathFrame_, pathFrames_);
+    const std::string fix = applyPathSample(*path_, t, options_.common.time, session_);
+    if (!fix.empty()) logWarning("path '" + path_->file().name + "': " + fix);
+    lastValidScene_ = session_.scene;  // the path's sun is not an edit to revert
+    if (++pathFrame_ >= pathFrames_) {
+        pathPlaying_ = false;
+        logInfo("path '" + path_->file().name + "' ended (P plays it again)");
+    }
 }
 
 void Explorer::pollShaders() {
@@ -300,9 +330,14 @@ void Explorer::run() {
 
         pollShaders();
         handleKeys();
-        if (!clock_.paused) session_.scene.time_s += dt * clock_.rate;
-        controller_.update(session_.camera, pollControls(window_, pending_), dt, session_.scene.planetRadiusM());
-        keepAboveGround(session_);
+        if (pathPlaying_) {
+            pollControls(window_, pending_);  // the path flies the camera: input is dropped, not queued
+            followPath();
+        } else {
+            if (!clock_.paused) session_.scene.time_s += dt * clock_.rate;
+            controller_.update(session_.camera, pollControls(window_, pending_), dt, session_.scene.planetRadiusM());
+            keepAboveGround(session_);
+        }
         renderer_.render(session_.scene, session_.camera, size, [&] {
             glBlitNamedFramebuffer(renderer_.targets().ldrFramebuffer(), 0, 0, 0, size.x, size.y, 0, 0, size.x,
                                    size.y, GL_COLOR_BUFFER_BIT, GL_NEAREST);
@@ -329,6 +364,8 @@ int runExplore(const ExploreOptions& options) {
     if (!displayAvailable()) {
         std::cout << "No display found (DISPLAY and WAYLAND_DISPLAY are unset): rendering a still instead."
                   << std::endl;
+        if (!options.path.empty())
+            std::cout << "(--path needs a window; planet render --path renders its frames headlessly)" << std::endl;
         renderStill(options.common, {options.headlessOut}, std::nullopt);
         return 0;
     }

@@ -49,6 +49,10 @@ int main(int argc, char** argv) {
     exploreCmd->add_option("--frames", explore.frames, "Quit after this many frames (0: run until closed)");
     exploreCmd->add_option("--screenshot", explore.screenshot, "Write a PNG of the window, panels included, at the end");
     exploreCmd->add_flag("--no-panels", explore.noPanels, "Start with the panels hidden (F1 toggles them)");
+    exploreCmd->add_option("--path", explore.path,
+                           "Play a camera path (name under assets/paths or a file), one path frame (1 / fps) per "
+                           "window frame, as planet render --path renders it; P pauses and resumes, the camera is "
+                           "yours while paused");
     exploreCmd->add_option("--headless-out", explore.headlessOut, "Where the still goes when there is no display")
         ->capture_default_str();
 

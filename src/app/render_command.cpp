@@ -82,22 +82,14 @@ void renderPath(const CommonOptions& common, const std::vector<std::string>& out
     for (const std::string& out : outputs) frameFileName(out, 0);  // each names the frame number
     const glm::ivec2 size = parseSize(common.size);
     const DataPaths paths = findDataPaths(common.root);
-    std::vector<std::string> warnings;
-    const CameraPathFile file = loadCameraPath(resolveCameraPath(pathName, paths.assets() / "paths"), &warnings);
-    for (const std::string& w : warnings) logWarning(w);
+    Session session = loadSession(paths, common.preset, common.view);
+    applyExposure(exposure, session.scene);
+    const CameraPath path = loadSessionPath(paths, pathName, session);
+    const CameraPathFile& file = path.file();
     const int frameCount = pathFrameCount(file, frames);
     std::vector<std::string> firstOutputs;
     for (const std::string& out : outputs) firstOutputs.push_back(frameFileName(out, 0));
     checkOutputs(firstOutputs);
-
-    Session session = loadSession(paths, common.preset, common.view);
-    session.scene.sun = session.presetScene.sun;  // the path's sun, or the preset's: never the --view's
-    applyExposure(exposure, session.scene);
-    session.ground.update(session.scene.terrain);
-    // A keyframe's altitude is above the ground under it, as a view's is.
-    const CameraPath path(file, session.scene.planetRadiusM(), [&session](const glm::dvec3& direction) {
-        return terrain::surfaceHeightM(session.ground, direction);
-    });
 
     gl::DebugMessages messages;  // outlives the context that reports into it
     gl::HeadlessContext context(common.glDebug);
@@ -112,20 +104,8 @@ void renderPath(const CommonOptions& common, const std::vector<std::string>& out
     const Clock::time_point start = Clock::now();
     for (int i = 0; i < frameCount; ++i) {
         const double t = pathFrameTime(file, i, frameCount);
-        const PathSample sample = path.sample(t);
-        session.camera = sample.camera;
-        keepAboveGround(session);
-        const std::string fix = sanitizeCamera(session.camera, session.scene.planetRadiusM());
+        const std::string fix = applyPathSample(path, t, common.time, session);
         if (!fix.empty()) logWarning("path '" + file.name + "' frame " + std::to_string(i) + ": " + fix);
-        if (sample.sun_elevation_deg) {
-            View place;
-            place.latitude_deg = sample.latitude_deg;
-            place.longitude_deg = sample.longitude_deg;
-            place.sun_elevation_deg = sample.sun_elevation_deg;
-            place.sun_azimuth_deg = sample.sun_azimuth_deg;
-            applyViewSun(place, session.scene);
-        }
-        session.scene.time_s = common.time + (t - file.startTime());
         renderer.render(session.scene, session.camera, size);
 
         std::vector<std::string> names;

@@ -92,4 +92,32 @@ glm::ivec2 parseSize(const std::string& text) {
     throw InputError("--size '" + text + "': expected WIDTHxHEIGHT with each side in [1, 16384], e.g. 640x360");
 }
 
+CameraPath loadSessionPath(const DataPaths& paths, const std::string& nameOrPath, Session& session) {
+    std::vector<std::string> warnings;
+    const CameraPathFile file = loadCameraPath(resolveCameraPath(nameOrPath, paths.assets() / "paths"), &warnings);
+    for (const std::string& w : warnings) logWarning(w);
+    session.scene.sun = session.presetScene.sun;
+    session.ground.update(session.scene.terrain);
+    return CameraPath(file, session.scene.planetRadiusM(), [&session](const glm::dvec3& direction) {
+        return terrain::surfaceHeightM(session.ground, direction);
+    });
+}
+
+std::string applyPathSample(const CameraPath& path, double t, double clockStart, Session& session) {
+    const PathSample sample = path.sample(t);
+    session.camera = sample.camera;
+    keepAboveGround(session);
+    const std::string fix = sanitizeCamera(session.camera, session.scene.planetRadiusM());
+    if (sample.sun_elevation_deg) {
+        View place;
+        place.latitude_deg = sample.latitude_deg;
+        place.longitude_deg = sample.longitude_deg;
+        place.sun_elevation_deg = sample.sun_elevation_deg;
+        place.sun_azimuth_deg = sample.sun_azimuth_deg;
+        applyViewSun(place, session.scene);
+    }
+    session.scene.time_s = clockStart + (t - path.file().startTime());
+    return fix;
+}
+
 }  // namespace planet

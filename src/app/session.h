@@ -11,6 +11,7 @@
 
 #include <glm/glm.hpp>
 
+#include "app/camera_path.h"
 #include "scene/camera.h"
 #include "app/views.h"
 #include "scene/scene.h"
@@ -58,6 +59,17 @@ void applyView(const View& view, Session& session);
 // session.ground up to date with session.scene.terrain first (a rebake when a
 // parameter of the continents changed). Returns true when it moved the camera.
 bool keepAboveGround(Session& session);
+
+// A camera path over the session's ground (keyframe altitudes are above it), loaded by name
+// under assets/paths or as a file; warnings logged; the session's sun back to the preset's
+// (a path's sun, or the preset's: never a view's). Throws InputError.
+CameraPath loadSessionPath(const DataPaths& paths, const std::string& nameOrPath, Session& session);
+
+// Puts the session at a path's sample: the camera (kept above the ground and within the
+// renderer's limits), the sun when the path has one, and the scene's clock
+// (clockStart + the time along the path). What planet render --path and the explorer's
+// playback do for each frame. Returns what was corrected ("" when nothing).
+std::string applyPathSample(const CameraPath& path, double t, double clockStart, Session& session);
 
 // "640x360" -> {640, 360}; throws InputError for anything else or sides outside [1, 16384].
 glm::ivec2 parseSize(const std::string& text);
