@@ -103,6 +103,37 @@ TEST(CloudModel, TypeProfilesPlaceStratusLowCumulusMidAndHighCloudAtTheTop) {
     EXPECT_EQ(glsl::CloudTypeHeightSignal(0.5, 0.0), 0.0);   // no stratus half way up
 }
 
+TEST(CloudModel, FarFieldPathInClosedFormIsTheIntegralOfTheFarFieldDensity) {
+    // CloudFarFieldPath against a fine numerical integral of CloudFarFieldDensity with the
+    // type's height signal along straight paths (heights linear along them), up, down, across
+    // a profile's edge and nearly level; and straight up through the whole layer the column's
+    // transmittance is 1 - 0.98 coverage, what the far field is built for.
+    const double E = 40.0, D = 2.5;
+    for (double type : {0.0, 0.3, 0.5, 0.8, 1.0}) {
+        double b = 0.0, c = 0.0;
+        glsl::CloudTypeBounds(type, b, c);
+        const double span = c - b;
+        for (double coverage : {0.1, 0.5, 0.9}) {
+            struct Path { double fa, fb, way; };
+            for (const Path p : {Path{0.0, 1.0, 2.5}, Path{0.1, 0.35, 4.0}, Path{0.6, 0.2, 1.2}, Path{0.5, 0.50001, 1.0},
+                                 Path{0.05, 0.9, 30.0}}) {
+                const int n = 200000;
+                double numeric = 0.0;
+                for (int i = 0; i < n; ++i) {
+                    const double f = p.fa + (p.fb - p.fa) * (i + 0.5) / n;
+                    const double h = glsl::CloudTypeHeightSignal(f, type);
+                    numeric += glsl::CloudFarFieldDensity(coverage, h, (2.0 / 3.0) * span, D, E) * p.way / n;
+                }
+                const double closed =
+                    glsl::CloudFarFieldPath(coverage, span, (p.fa - b) / span, (p.fb - b) / span, p.way, D, E);
+                EXPECT_NEAR(closed, numeric, 1e-6 + 1e-6 * numeric) << type << " " << coverage << " " << p.fa;
+            }
+            const double column = glsl::CloudFarFieldPath(coverage, span, -b / span, (1.0 - b) / span, D, D, E);
+            EXPECT_NEAR(std::exp(-E * column), 1.0 - 0.98 * coverage, 1e-12) << type << " " << coverage;
+        }
+    }
+}
+
 TEST(CloudModel, PhaseFunctionIntegratesToOneWithMeanCosineG) {
     for (double g : {-0.5, 0.0, 0.3, 0.8}) {
         double integral = 0.0, meanCos = 0.0;

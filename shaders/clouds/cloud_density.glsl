@@ -49,10 +49,28 @@ Number CloudDensity(vec3 point) { return CloudDensityAt(point, 0.0); }
 // pixel spans.
 Length CloudFootprintAt(vec3 point) { return length(point - clouds.cameraFromCentre) * clouds.pixelAngle; }
 
+// The far field's optical depth per unit extinction from `a` to `b` (in the layer, `way` km
+// apart), in closed form (cloud_model.glsl's CloudFarFieldPath): the weather at the
+// middle of the way, the heights of its ends. What the samples would approximate, exactly.
+Length CloudFarFieldPathToSun(vec3 a, vec3 b, Length way) {
+    vec3 middle = 0.5 * (a + b);
+    vec4 weatherTexel = textureLod(weatherMap, middle / length(middle), 0.0);
+    Number coverage = CloudLocalCoverage(weatherTexel.x, clouds.coverage);
+    Length depth = clouds.topRadius - clouds.bottomRadius;
+    Number bottom = 0.0;
+    Number top = 1.0;
+    if (clouds.typeProfiles != 0) CloudTypeBounds(weatherTexel.y, bottom, top);
+    Number span = top - bottom;
+    Number ua = ((length(a) - clouds.bottomRadius) / depth - bottom) / span;
+    Number ub = ((length(b) - clouds.bottomRadius) / depth - bottom) / span;
+    return CloudFarFieldPath(coverage, span, ua, ub, way, depth, clouds.extinction);
+}
+
 // Optical depth per unit extinction (the integral of the density, km) from `point` towards
 // the sun: clouds.sunSamples density samples spread over the sun ray's way through the
 // layer, or over `maxLength` km of it where that way is longer, seen with a footprint of
-// `footprintKm` (the view sample's). 0 without clouds.
+// `footprintKm` (the view sample's); in closed form where that footprint sees the far field
+// alone. 0 without clouds.
 Length CloudDensityPathToSun(vec3 point, vec3 sun, Length maxLength, Length footprintKm, int samples) {
     if (clouds.enabled == 0) return 0.0;
     Length r = length(point);
@@ -61,6 +79,8 @@ Length CloudDensityPathToSun(vec3 point, vec3 sun, Length maxLength, Length foot
     int count = CloudLayerIntervals(r, dot(point, sun) / r, 1.0e9, clouds.bottomRadius, clouds.topRadius, first, second);
     if (count == 0) return 0.0;
     Length way = min(first.y - first.x, maxLength);
+    if (CloudFarBlend(footprintKm) >= 1.0 && clouds.constantDensity == 0)
+        return CloudFarFieldPathToSun(point + sun * first.x, point + sun * (first.x + way), way);
     Length step = way / Number(max(samples, 1));
     Length path = 0.0;
     for (int i = 0; i < samples; ++i)

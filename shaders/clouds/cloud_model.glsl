@@ -92,6 +92,27 @@ Number CloudFarFieldDensity(Number coverage, Number height_signal, Number column
     return height_signal * tau / max(extinction * column_fraction * depth, Number(1e-9));
 }
 
+// The part of Eq. 13's parabola 4x(1 - x) above u on its own span (u in [0, 1]):
+// integral from u to 1 of 4x(1 - x) dx = 2/3 - 2u^2 + 4u^3/3 (2/3 below the span, 0 above).
+Number CloudProfileAbove(Number u) {
+    Number x = clamp(u, Number(0.0), Number(1.0));
+    return 2.0 / 3.0 - 2.0 * x * x + 4.0 / 3.0 * x * x * x;
+}
+
+// The far field's optical depth per unit extinction (density x km) along `way` km of a
+// straight path whose ends lie at ua and ub of the cloud's span (0 its bottom, 1 its top;
+// `span` its share of the layer's `depth`), heights taken as linear along the path: the
+// field of CloudFarFieldDensity, in closed form, h averaged over [ua, ub] as
+// (CloudProfileAbove(ua) - CloudProfileAbove(ub)) / (ub - ua).
+Number CloudFarFieldPath(Number coverage, Number span, Number ua, Number ub, Length way, Length depth,
+                         Number extinction) {
+    Number um = clamp(0.5 * (ua + ub), Number(0.0), Number(1.0));
+    Number mean_h = abs(ub - ua) < 1e-4 ? (0.5 * (ua + ub) == um ? 4.0 * um * (1.0 - um) : Number(0.0))
+                                         : (CloudProfileAbove(ua) - CloudProfileAbove(ub)) / (ub - ua);
+    Number tau = -log(1.0 - 0.98 * clamp(coverage, Number(0.0), Number(1.0)));
+    return way * mean_h * tau / max(extinction * (2.0 / 3.0) * span * depth, Number(1e-9));
+}
+
 // Henyey-Greenstein phase function, per steradian, for the cosine between the light's
 // direction of travel and the direction towards the viewer (1 = straight through).
 Number HenyeyGreenstein(Number g, Number cos_theta) {

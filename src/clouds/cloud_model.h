@@ -17,6 +17,7 @@ using glm::exp;
 using glm::max;
 using glm::min;
 using std::exp;
+using std::abs;
 using std::log;
 using std::sqrt;
 #define IN(x) const x&
