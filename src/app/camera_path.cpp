@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "app/place_keys.h"
 #include "scene/scene.h"
 
 namespace planet {
@@ -15,70 +16,18 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// One numeric key of a keyframe. open: the range excludes its ends.
-struct PathKey {
-    const char* key;
-    double lo, hi;
-    const char* unit;
-    bool open = false;
-};
+using namespace place_keys;
 
-constexpr PathKey kTime{"time_s", 0.0, 1e6, "s"};
-constexpr PathKey kLatitude{"latitude_deg", -90.0, 90.0, "deg"};
-constexpr PathKey kLongitude{"longitude_deg", -180.0, 180.0, "deg"};
-constexpr PathKey kAltitude{"altitude_m", 0.1, 1e9, "m"};
-constexpr PathKey kHeading{"heading_deg", -360.0, 360.0, "deg"};
-constexpr PathKey kPitch{"pitch_deg", -90.0, 90.0, "deg"};
-constexpr PathKey kFov{"fov_deg", 1.0, 170.0, "deg", true};
-constexpr PathKey kSunElevation{"sun_elevation_deg", -90.0, 90.0, "deg"};
-constexpr PathKey kSunAzimuth{"sun_azimuth_deg", -360.0, 360.0, "deg"};
-constexpr PathKey kFps{"fps", 0.0, 1000.0, "frames/s"};  // (0, 1000]
+constexpr NumberKey kTime{"time_s", 0.0, 1e6, "s"};
+constexpr NumberKey kFps{"fps", 0.0, 1000.0, "frames/s"};  // (0, 1000]
 
 const std::vector<std::string> kTopKeys = {"description", "fps", "keyframe"};
 
 std::vector<std::string> keyframeKeys() {
     std::vector<std::string> keys;
-    for (const PathKey& k : {kTime, kLatitude, kLongitude, kAltitude, kHeading, kPitch, kFov, kSunElevation, kSunAzimuth})
+    for (const NumberKey& k : {kTime, kLatitude, kLongitude, kAltitude, kHeading, kPitch, kFov, kSunElevation, kSunAzimuth})
         keys.emplace_back(k.key);
     return keys;
-}
-
-// The key's value, type- and range-checked; nullopt when absent. prefix: "keyframe[i]." or "".
-std::optional<double> readKey(const toml::table& table, const PathKey& k, const std::string& file,
-                              const std::string& prefix) {
-    const toml::node* node = table.get(k.key);
-    if (!node) return std::nullopt;
-    const std::string field = prefix + k.key;
-    const double value = readNumber(*node, file, field);
-    const InputLocation where = locate(*node, file, field);
-    if (k.open) {
-        if (!(value > k.lo && value < k.hi))
-            throw InputError(where.file, where.line, where.field,
-                             "value " + formatNumber(value) + " is out of range (" + formatNumber(k.lo) + ", " +
-                                 formatNumber(k.hi) + ") " + k.unit);
-    } else {
-        checkRange(value, k.lo, k.hi, k.unit, where);
-    }
-    return value;
-}
-
-double readRequired(const toml::table& table, const PathKey& k, const std::string& file, const std::string& prefix,
-                    int tableLine) {
-    const std::optional<double> value = readKey(table, k, file, prefix);
-    if (!value) throw InputError(file, tableLine, prefix + k.key, "required key is missing");
-    return *value;
-}
-
-void warnUnknownKeys(const toml::table& table, const std::vector<std::string>& known, const std::string& file,
-                     const std::string& prefix, std::vector<std::string>* warnings) {
-    if (!warnings) return;
-    for (auto&& [key, value] : table) {
-        const std::string name(key.str());
-        if (std::find(known.begin(), known.end(), name) != known.end()) continue;
-        const int keyLine = static_cast<int>(key.source().begin.line);
-        warnings->push_back(
-            unknownKeyWarning(file, keyLine > 0 ? keyLine : sourceLine(value), prefix + name, known));
-    }
 }
 
 PathKeyframe readKeyframe(const toml::table& table, const std::string& file, int index,
@@ -88,21 +37,14 @@ PathKeyframe readKeyframe(const toml::table& table, const std::string& file, int
     warnUnknownKeys(table, keyframeKeys(), file, prefix, warnings);
     PathKeyframe k;
     k.line = line;
-    k.time_s = readRequired(table, kTime, file, prefix, line);
-    k.latitude_deg = readRequired(table, kLatitude, file, prefix, line);
-    k.longitude_deg = readRequired(table, kLongitude, file, prefix, line);
-    k.altitude_m = readRequired(table, kAltitude, file, prefix, line);
-    k.heading_deg = readRequired(table, kHeading, file, prefix, line);
-    k.pitch_deg = readRequired(table, kPitch, file, prefix, line);
-    k.fov_deg = readKey(table, kFov, file, prefix).value_or(k.fov_deg);
-    k.sun_elevation_deg = readKey(table, kSunElevation, file, prefix);
-    k.sun_azimuth_deg = readKey(table, kSunAzimuth, file, prefix);
-    if (k.sun_elevation_deg.has_value() != k.sun_azimuth_deg.has_value()) {
-        const PathKey& present = k.sun_elevation_deg ? kSunElevation : kSunAzimuth;
-        const PathKey& missing = k.sun_elevation_deg ? kSunAzimuth : kSunElevation;
-        throw InputError(file, sourceLine(*table.get(present.key)), prefix + present.key,
-                         std::string("needs '") + missing.key + "' as well (the sun keys come as a pair or not at all)");
-    }
+    k.time_s = readRequiredKey(table, kTime, file, prefix, line);
+    k.latitude_deg = readRequiredKey(table, kLatitude, file, prefix, line);
+    k.longitude_deg = readRequiredKey(table, kLongitude, file, prefix, line);
+    k.altitude_m = readRequiredKey(table, kAltitude, file, prefix, line);
+    k.heading_deg = readRequiredKey(table, kHeading, file, prefix, line);
+    k.pitch_deg = readRequiredKey(table, kPitch, file, prefix, line);
+    k.fov_deg = readNumberKey(table, kFov, file, prefix).value_or(k.fov_deg);
+    readSunKeys(table, file, prefix, k.sun_elevation_deg, k.sun_azimuth_deg);
     return k;
 }
 

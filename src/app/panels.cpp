@@ -1,6 +1,7 @@
 #include "app/panels.h"
 
 #include <imgui.h>
+#include <imgui_internal.h>  // FindWindowByName
 
 #include <algorithm>
 #include <cmath>
@@ -74,6 +75,7 @@ bool paramWidget(const ParamSpec& spec, Scene& scene) {
 
 // The first-use placement of the panel `name` (initialPanelLayout), for the next Begin.
 void placeOnFirstUse(const char* name) {
+    if (ImGui::FindWindowByName(name)) return;  // placed already: nothing to do on later frames
     const ImVec2 display = ImGui::GetIO().DisplaySize;
     for (const PanelPlacement& p : initialPanelLayout(display.x, display.y)) {
         if (p.name != name) continue;

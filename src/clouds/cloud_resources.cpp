@@ -172,12 +172,11 @@ bool CloudResources::update(const Scene& scene, const Camera& camera, int viewpo
             made = true;
         }
     }
+    block_ = makeCloudBlock(scene, camera, largeStepKm(c.tile_width_km), volumeSize_,
+                            camera.fovY_rad / std::max(viewportHeight, 1));
     // Until the first volume is there, the layer is drawn without clouds rather than from
     // the placeholder.
-    Scene shown = scene;
-    if (drawn(c) && volumeSize_ == 0) shown.clouds.enabled = false;
-    block_ = makeCloudBlock(shown, camera, largeStepKm(c.tile_width_km), volumeSize_,
-                            camera.fovY_rad / std::max(viewportHeight, 1));
+    if (drawn(c) && volumeSize_ == 0) block_.enabled = 0;
     block_.statistics = statistics_ ? 1 : 0;
     glNamedBufferSubData(buffer_.id(), 0, sizeof block_, &block_);
     if (statistics_) {
