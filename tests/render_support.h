@@ -10,6 +10,7 @@
 // equals what this returns. Needs a current GL context (test::GLTest).
 #pragma once
 
+#include <memory>
 #include <string>
 
 #include <glm/glm.hpp>
@@ -20,6 +21,21 @@
 #include "render/renderer.h"
 
 namespace planet::test {
+
+// A suite that shares one Renderer (reduced tables) across its tests, made once the GL
+// context is up and gone before it goes.
+class SharedRendererTest : public GLTest {
+protected:
+    static void SetUpTestSuite() {
+        GLTest::SetUpTestSuite();
+        renderer = std::make_unique<Renderer>(repoPaths().shaders(), atmosphere::TableSizes::reduced());
+    }
+    static void TearDownTestSuite() {
+        renderer.reset();
+        GLTest::TearDownTestSuite();
+    }
+    static inline std::unique_ptr<Renderer> renderer;
+};
 
 struct HdrStill {
     ImageRGBAF radiance;  // linear HDR, row 0 at the top

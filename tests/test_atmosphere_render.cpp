@@ -6,6 +6,7 @@
 
 #include "atmosphere/precompute_gpu.h"
 #include "gl_test_support.h"
+#include "render_support.h"
 #include "render/readback.h"
 #include "render/renderer.h"
 #include "shaders_ray_sphere_double.h"
@@ -18,16 +19,8 @@ namespace {
 
 constexpr glm::ivec2 kSize{96, 54};
 
-class AtmosphereRenderTest : public test::GLTest {
+class AtmosphereRenderTest : public test::SharedRendererTest {
 protected:
-    static void SetUpTestSuite() {
-        GLTest::SetUpTestSuite();
-        renderer = std::make_unique<Renderer>(test::repoPaths().shaders(), atmosphere::TableSizes::reduced());
-    }
-    static void TearDownTestSuite() {
-        renderer.reset();
-        GLTest::TearDownTestSuite();
-    }
     // The atmosphere alone: no clouds (tests/test_clouds.cpp has theirs, through the same pass).
     static Session session(const std::string& view) {
         Session s = loadSession(test::repoPaths(), "earth", view);
@@ -38,7 +31,6 @@ protected:
         renderer->render(s.scene, s.camera, size);
         return readTextureRGBAF(renderer->targets().hdr(), size.x, size.y);
     }
-    static inline std::unique_ptr<Renderer> renderer;
 };
 
 glm::vec3 rgb(const ImageRGBAF& image, int x, int y) {

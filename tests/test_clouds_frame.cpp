@@ -22,6 +22,7 @@
 #include "clouds/cloud_probe.h"
 #include "clouds/cloud_resources.h"
 #include "gl_test_support.h"
+#include "render_support.h"
 #include "render/readback.h"
 #include "render/renderer.h"
 
@@ -40,22 +41,13 @@ double meanLuminance(const ImageRGBAF& image) {
     return sum / static_cast<double>(n);
 }
 
-class CloudFrame : public test::GLTest {
+class CloudFrame : public test::SharedRendererTest {
 protected:
-    static void SetUpTestSuite() {
-        GLTest::SetUpTestSuite();
-        renderer = std::make_unique<Renderer>(test::repoPaths().shaders(), atmosphere::TableSizes::reduced());
-    }
-    static void TearDownTestSuite() {
-        renderer.reset();
-        GLTest::TearDownTestSuite();
-    }
     static Session session(const std::string& view) { return loadSession(test::repoPaths(), "earth", view); }
     static ImageRGBAF render(const Session& s, glm::ivec2 size = kSize) {
         renderer->render(s.scene, s.camera, size);
         return readTextureRGBAF(renderer->targets().hdr(), size.x, size.y);
     }
-    static inline std::unique_ptr<Renderer> renderer;
 };
 
 }  // namespace

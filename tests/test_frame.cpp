@@ -14,6 +14,7 @@
 
 #include "atmosphere/uniforms.h"
 #include "gl_test_support.h"
+#include "render_support.h"
 #include "grid/grid_mesh.h"
 #include "ocean/ocean_block.h"
 #include "render/bindings.h"
@@ -28,18 +29,9 @@ namespace {
 
 constexpr glm::ivec2 kSize{32, 18};
 
-class FrameTest : public test::GLTest {
+class FrameTest : public test::SharedRendererTest {
 protected:
-    static void SetUpTestSuite() {
-        GLTest::SetUpTestSuite();
-        renderer = std::make_unique<Renderer>(test::repoPaths().shaders(), atmosphere::TableSizes::reduced());
-    }
-    static void TearDownTestSuite() {
-        renderer.reset();
-        GLTest::TearDownTestSuite();
-    }
     static Session session(const std::string& view) { return loadSession(test::repoPaths(), "earth", view); }
-    static inline std::unique_ptr<Renderer> renderer;
 };
 
 }  // namespace
