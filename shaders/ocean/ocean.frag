@@ -116,7 +116,7 @@ void main() {
     quality.slicesPerCrossing = 1;
     quality.stepBudget = max(clouds.maxSteps / 32, 4);
     quality.sunSamples = min(clouds.sunSamples, 2);
-    quality.minFootprintKm = clouds.voxelKm < 1.0e20 ? 8.0 * clouds.voxelKm : 0.0;  // 1e30: no far field
+    quality.minFootprintKm = CloudFarFieldFootprint();
     ViewMarch reflection = MarchView(point, reflected, 0.0, sun, quality);  // 1e30: no far field
     vec3 sky = reflection.inscatter;
     vec3 skyIrradiance;
