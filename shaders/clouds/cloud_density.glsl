@@ -43,8 +43,6 @@ Number CloudDensityAt(vec3 point, Length footprintKm) {
     return mix(near, farDensity, far) * clouds.densityScale;
 }
 
-Number CloudDensity(vec3 point) { return CloudDensityAt(point, 0.0); }
-
 // A footprint that sees the far field alone (8 voxels), for a caller that wants no volume
 // detail (the sea's reflection); 0 where there is no far field (switched off, no volume).
 Length CloudFarFieldFootprint() { return clouds.voxelKm < 1.0e20 ? 8.0 * clouds.voxelKm : 0.0; }

@@ -138,7 +138,6 @@ void CloudResources::upload(Baked&& b) {
         volume_ = makeVolumeTexture(*b.volume);
         volumeSize_ = b.volume->size;
         borderVoxels_ = b.volumeParams.borderVoxels;
-        volumeStats_ = b.volume->stats;
         volumeParams_ = b.volumeParams;
     }
     if (b.weather) {

@@ -70,8 +70,6 @@ public:
     // update and read after the frame with marchStatistics().
     void setStatistics(bool on) { statistics_ = on; }
     MarchStatistics marchStatistics() const;
-    // What the uploaded volume holds (zero before the first bake).
-    const noise::CloudVolumeStats& volumeStats() const { return volumeStats_; }
 
 private:
     struct Baked {
@@ -99,7 +97,6 @@ private:
     std::optional<std::pair<noise::WeatherParams, int>> weatherParams_;
     int volumeSize_ = 0;
     int borderVoxels_ = 0;
-    noise::CloudVolumeStats volumeStats_;
 
     // A background bake in flight and what it is for.
     std::future<Baked> pending_;
