@@ -134,7 +134,9 @@ TEST_F(CliTest, BenchWritesTableCsvAndPlot) {
         ++rows;
         sawSpaceTonemap = sawSpaceTonemap || contains(line, ",space,tonemap,3,");
     }
-    EXPECT_EQ(rows, 2 * 7);  // (prepare, terrain, surface light, ocean, sky, tonemap, frame) x 2 views
+    // (prepare, terrain, surface light, ocean, sky march, sky temporal, tonemap, frame) x 2 views: the
+    // warm-up frame of each view is the full-rate one (the view jumped), the recorded ones reduced-rate
+    EXPECT_EQ(rows, 2 * 8);
     EXPECT_TRUE(sawSpaceTonemap);
 
     int w = 0, h = 0, n = 0;
@@ -161,8 +163,8 @@ TEST_F(CliTest, BenchCloudsSuiteSweepsStepAndSunSamplesAndCountsMarchSteps) {
     ASSERT_EQ(r.exitCode, 0) << r.output;
     std::ifstream csv(dir / "c.csv");
     std::string text((std::istreambuf_iterator<char>(csv)), {});
-    // The five cloud views and the 3 x 4 sweep on the first, each with a frame row holding
-    // the march's steps per pixel and skipped share.
+    // The five cloud views at the reduced and the full rate and the 3 x 4 sweep on the first,
+    // each with a frame row holding the march's steps per pixel and skipped share.
     std::map<std::string, std::pair<double, double>> frames;
     std::istringstream lines(text);
     std::string line;
@@ -177,17 +179,22 @@ TEST_F(CliTest, BenchCloudsSuiteSweepsStepAndSunSamplesAndCountsMarchSteps) {
         if (f[n - 8] != "frame") continue;
         frames[f[n - 9]] = {std::stod(f[n - 2]), std::stod(f[n - 1])};
     }
-    for (const char* view : {"cumulus", "clouds", "deck", "orbit", "space", "cumulus/step0.2km/sun0",
-                             "cumulus/step0.05km/sun12"})
+    for (const char* view : {"cumulus", "clouds", "deck", "orbit", "space", "cumulus/full-rate", "space/full-rate",
+                             "cumulus/step0.2km/sun0", "cumulus/step0.05km/sun12"})
         EXPECT_TRUE(frames.count(view)) << view << "\n" << text;
-    EXPECT_EQ(frames.size(), 5u + 12u) << text;
+    EXPECT_EQ(frames.size(), 5u + 5u + 12u) << text;
+    // The reduced rate marches one pixel of each 4x4 block: about a 16th of the steps per
+    // pixel of the image (the blocks at the edges and the jitter make it not exactly that).
+    EXPECT_GT(frames["cumulus/full-rate"].first, 8.0 * frames["cumulus"].first);
+    EXPECT_LT(frames["cumulus/full-rate"].first, 32.0 * frames["cumulus"].first);
+    EXPECT_TRUE(contains(r.output, "of the full-rate march")) << r.output;
     for (const auto& [view, m] : frames) {
         EXPECT_GE(m.second, 0.0) << view;
         EXPECT_LE(m.second, 1.0) << view;
     }
     // Looking up into a cumulus field takes more steps than the disc seen from space, and a
     // halved step more steps than the preset's.
-    EXPECT_GT(frames["cumulus"].first, frames["space"].first);
+    EXPECT_GT(frames["cumulus/full-rate"].first, frames["space/full-rate"].first);
     EXPECT_GT(frames["cumulus/step0.05km/sun6"].first, frames["cumulus/step0.1km/sun6"].first);
     // The sun samples do not change the view march.
     EXPECT_EQ(frames["cumulus/step0.1km/sun0"].first, frames["cumulus/step0.1km/sun12"].first);
@@ -255,13 +262,17 @@ TEST_F(CliTest, ContextWithoutOpenGL45GetsAClearMessage) {
 }
 
 TEST_F(CliTest, WindowShowsTheSamePixelsAsTheStill) {
-    // With the panels hidden, the window's frame is the still `render` writes.
+    // With the panels hidden and the temporal march off, the window's frame is the still
+    // `render` writes (with it on, the explorer's first frame is reconstructed from a 16th of
+    // the pixels and converges over the next ones: tests/test_temporal.cpp).
     for (const char* view : {"orbit", "space"}) {
         const std::string still = std::string(view) + ".png", shot = std::string(view) + "-window.png";
-        ASSERT_EQ(runCommand(planet(std::string("render --view ") + view + " --size 160x90 --out " + still)).exitCode, 0);
+        ASSERT_EQ(runCommand(planet(std::string("render --no-temporal --view ") + view + " --size 160x90 --out " + still))
+                      .exitCode,
+                  0);
         const auto r = runCommand("cd '" + dir.string() + "' && XDG_CONFIG_HOME='" + (dir / "config").string() +
                                   "' xvfb-run -a -s '-screen 0 640x480x24' '" PLANET_EXE
-                                  "' explore --no-panels --view " + view + " --size 160x90 --frames 3 --screenshot " +
+                                  "' explore --no-panels --no-temporal --view " + view + " --size 160x90 --frames 3 --screenshot " +
                                   shot);
         ASSERT_EQ(r.exitCode, 0) << r.output;
         int w1, h1, n1, w2, h2, n2;

@@ -51,7 +51,8 @@ TEST_F(FrameTest, TheRenderersPassesAreDeclaredInAnOrderThatHolds) {
     EXPECT_TRUE(checkPassOrder(passes).empty());
     std::vector<std::string> names;
     for (const PassDeclaration& p : passes) names.push_back(p.name);
-    EXPECT_EQ(names, (std::vector<std::string>{"terrain", "surface light", "ocean", "sky", "tonemap", "ui"}));
+    EXPECT_EQ(names, (std::vector<std::string>{"terrain", "surface light", "ocean", "sky", "sky march", "sky temporal",
+                                              "tonemap", "ui"}));
 }
 
 TEST_F(FrameTest, BakedResourcesAreMadeInThePrepareStepOncePerChange) {
@@ -224,8 +225,10 @@ TEST(FrameSources, AerialPerspectiveIsComputedInOneShaderFunctionCalledFromOnePa
     // Every shader under shaders/ (the atmosphere's own model files aside): only the unified
     // march of clouds and atmosphere (clouds/cloud_march.glsl, MarchView) calls the
     // interface's SkyRadianceToPoint, nothing outside the interface calls the model's
-    // in-scattering lookups, and the only pass that marches to a surface point is the sky
-    // pass (the ocean marches its reflected rays to space: no surface, no aerial perspective).
+    // in-scattering lookups, and the only passes that march to a surface point are the sky
+    // passes, through one function (render/sky_air.glsl, marchAir: at full rate and at the
+    // reduced rate); the ocean marches its reflected rays to space (no surface, no aerial
+    // perspective).
     // Probes (compute shaders that run the same functions for tests) may call anything.
     const fs::path root = test::repoPaths().shaders();
     const std::regex toPoint(R"(\bSkyRadianceToPoint\s*\()");
@@ -248,7 +251,7 @@ TEST(FrameSources, AerialPerspectiveIsComputedInOneShaderFunctionCalledFromOnePa
     EXPECT_EQ(toPointCallers, (std::vector<std::string>{"clouds/cloud_march.glsl"}));
     std::sort(marchCallers.begin(), marchCallers.end());
     for (const std::string& caller : marchCallers)
-        EXPECT_TRUE(caller == "render/sky.frag" || caller == "ocean/ocean.frag" || caller.ends_with("_probe.comp"))
+        EXPECT_TRUE(caller == "render/sky_air.glsl" || caller == "ocean/ocean.frag" || caller.ends_with("_probe.comp"))
             << caller;
-    EXPECT_NE(std::find(marchCallers.begin(), marchCallers.end(), "render/sky.frag"), marchCallers.end());
+    EXPECT_NE(std::find(marchCallers.begin(), marchCallers.end(), "render/sky_air.glsl"), marchCallers.end());
 }

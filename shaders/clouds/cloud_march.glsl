@@ -49,6 +49,7 @@ struct CloudSegmentResult {
     vec3 inscatter;
     int steps;      // small steps taken (in or near clouds)
     int skipped;    // large steps taken through empty space
+    Length depthSum;  // sum of each step's distance along the ray times the opacity it added (cloud T)
 };
 
 // Radiance scattered towards the viewer per unit scattering coefficient at a cloud sample.
@@ -84,6 +85,7 @@ CloudSegmentResult MarchCloudSegment(vec3 origin, vec3 dir, Length start, Length
     result.inscatter = vec3(0.0);
     result.steps = 0;
     result.skipped = 0;
+    result.depthSum = 0.0;
     Number cosTheta = dot(dir, sun);
     // The step grows where the budget could not cross the segment at clouds.stepKm, and
     // with the pixel's footprint (half of it) where the far field smooths the clouds.
@@ -116,8 +118,10 @@ CloudSegmentResult MarchCloudSegment(vec3 origin, vec3 dir, Length start, Length
         previous = density;
         if (density > 0.0) {
             vec3 source = CloudSource(point, sun, cosTheta, density, footprint, quality.sunSamples);
+            Number before = result.transmittance.x;  // the clouds' extinction is grey
             CloudMarchStep(density, dt, clouds.extinction, clouds.scattering, source, clouds.energyConservingStep != 0,
                            result.transmittance, result.inscatter);
+            result.depthSum += (before - result.transmittance.x) * (t + quality.jitter * dt);
         }
         t += dt;
         result.steps += 1;
@@ -132,6 +136,9 @@ struct ViewMarch {
     vec3 inscatter;      // light added on the way (air and clouds)
     int steps;
     int skipped;
+    Number cloudOpacity;   // 1 - the clouds' own transmittance along the ray (air not counted)
+    Length cloudDistance;  // where along the ray the clouds are, km: each step's distance weighted by
+                           // the opacity it added (the temporal march reprojects clouds from there); 0: none
 };
 
 // Everything between `origin` (km from the planet centre) and the point `distance` km along
@@ -146,6 +153,10 @@ ViewMarch MarchView(vec3 origin, vec3 dir, Length distance, vec3 sun, MarchQuali
     m.inscatter = vec3(0.0);
     m.steps = 0;
     m.skipped = 0;
+    m.cloudOpacity = 0.0;
+    m.cloudDistance = 0.0;
+    Number cloudTransmittance = 1.0;
+    Length depthSum = 0.0;
     bool toSpace = distance <= 0.0;
     vec2 crossings[2];
     int count = 0;
@@ -173,6 +184,8 @@ ViewMarch MarchView(vec3 origin, vec3 dir, Length distance, vec3 sun, MarchQuali
             CombineSlice(sliceTransmittance, slice, c.transmittance, c.inscatter, m.transmittance, m.inscatter);
             m.steps += c.steps;
             m.skipped += c.skipped;
+            depthSum += cloudTransmittance * c.depthSum;
+            cloudTransmittance *= c.transmittance.x;
         }
         t = crossing.y;
     }
@@ -181,5 +194,7 @@ ViewMarch MarchView(vec3 origin, vec3 dir, Length distance, vec3 sun, MarchQuali
     vec3 rest = toSpace ? SkyRadiance(origin + dir * t, dir, sun, restTransmittance)
                         : SkyRadianceToPoint(origin + dir * t, dir, max(distance - t, 0.0), sun, restTransmittance);
     CombineSlice(restTransmittance, rest, vec3(1.0), vec3(0.0), m.transmittance, m.inscatter);
+    m.cloudOpacity = 1.0 - cloudTransmittance;
+    if (m.cloudOpacity > 0.0) m.cloudDistance = depthSum / m.cloudOpacity;
     return m;
 }

@@ -23,8 +23,10 @@ layout(std140, binding = BLOCK_FRAME) uniform FrameBlock {
     float exposure;              // tone mapping: display = 1 - exp(-exposure * radiance)
     int frameIndex;              // frames since the renderer started
     float cameraDepthBelowSea;   // m below the mean sea surface (> 0: the camera is under water)
-    float padding0;
+    float stillSincePrevious;    // 1: the camera and the clock are the previous frame's (nothing moved)
     float padding1;
+    vec3 cloudDriftSincePrevious; // m, world axes: how far the wind moved the clouds since the previous frame
+    float padding2;
 } frame;
 
 // World-oriented direction of the view ray through a point in NDC (x, y in [-1, 1]).
@@ -52,4 +54,12 @@ float viewDistanceFromDepth(float depth) { return frame.nearPlane / depth; }
 vec3 previousNdcFromWorld(vec3 pointFromCamera) {
     vec4 clip = frame.previousClipFromWorld * vec4(pointFromCamera + frame.cameraFromPrevious, 1.0);
     return clip.xyz / clip.w;
+}
+
+// Where a direction at infinity (world axes) was in the previous frame's NDC; w <= 0 (behind
+// the previous camera) gives a point far outside [-1, 1]. Meaningful only where
+// frame.historyValid is 1.
+vec3 previousNdcFromDirection(vec3 dir) {
+    vec4 clip = frame.previousClipFromWorld * vec4(dir, 0.0);
+    return clip.w > 0.0 ? clip.xyz / clip.w : vec3(1.0e9);
 }

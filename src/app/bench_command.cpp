@@ -16,6 +16,7 @@
 
 #include "app/commands.h"
 #include "app/session.h"
+#include "app/temporal_error.h"
 #include "gl/context.h"
 #include "gl/debug.h"
 #include "ocean/wave_spectrum.h"
@@ -74,6 +75,7 @@ std::vector<BenchRow> measureView(Renderer& renderer, Session& session, glm::ive
     std::vector<BenchRow> rows;
     std::vector<double> totalGpu(static_cast<std::size_t>(o.frames), 0.0), totalCpu = totalGpu;
     for (const PassTimings& p : profiler.passes()) {
+        if (p.recordedGpuMs.empty()) continue;  // not drawn in this view (the sky's full- or reduced-rate passes)
         rows.push_back({session.view.name, p.name, p.recordedGpuMs.size(), percentile(p.recordedGpuMs, 50),
                         percentile(p.recordedGpuMs, 95), percentile(p.recordedCpuMs, 50),
                         percentile(p.recordedCpuMs, 95)});
@@ -95,22 +97,49 @@ void countCloudSteps(Renderer& renderer, const Session& session, glm::ivec2 size
     rows.back().cloudSkippedShare = m.skippedShare();
 }
 
-// The clouds suite: the cloud views as they are, then the march's small step and the
-// samples towards the sun swept on the first of them.
-void benchClouds(Renderer& frame, Session& session, const std::vector<View>& views, glm::ivec2 size,
-                 const BenchOptions& o, std::vector<BenchRow>& rows) {
+// The sky's GPU time in a view's rows: the full-rate pass ("sky"), or the reduced-rate
+// march and its reconstruction ("sky march" + "sky temporal"); medians, ms.
+double skyGpuMs(const std::vector<BenchRow>& rows, const std::string& view) {
+    double ms = 0.0;
+    for (const BenchRow& r : rows)
+        if (r.view == view && (r.pass == "sky" || r.pass == "sky march" || r.pass == "sky temporal")) ms += r.gpuMedian;
+    return ms;
+}
+
+// The clouds suite: each cloud view marched at the reduced rate (render.temporal, the
+// frames after the first with history) and at full rate ("VIEW/full-rate"), the ratio of
+// their sky passes printed; then the march's small step and the samples towards the sun
+// swept on the first view, at full rate (the march's own cost).
+// Returns the lines of that comparison, for after the table.
+std::vector<std::string> benchClouds(Renderer& frame, Session& session, const std::vector<View>& views, glm::ivec2 size,
+                                     const BenchOptions& o, std::vector<BenchRow>& rows) {
     if (!session.scene.clouds.enabled) throw InputError("--suite clouds: the preset has no clouds ([clouds] enabled)");
-    const CloudParams preset = session.scene.clouds;
+    const Scene preset = session.scene;
+    std::vector<std::string> ratios;
     for (const View& view : views) {
-        logInfo("bench clouds view '" + view.name + "'");
-        applyView(view, session);
-        for (BenchRow& r : measureView(frame, session, size, o)) rows.push_back(std::move(r));
-        countCloudSteps(frame, session, size, rows);
+        for (bool temporal : {true, false}) {
+            applyView(view, session);
+            session.scene.render.temporal = temporal;
+            if (!temporal) session.view.name += "/full-rate";
+            logInfo("bench clouds view '" + session.view.name + "'");
+            // A frame that seeds the history, not recorded: the view jumped, and without it the
+            // first reduced-rate frame would be a full-rate one.
+            if (temporal) frame.render(session.scene, session.camera, size);
+            for (BenchRow& r : measureView(frame, session, size, o)) rows.push_back(std::move(r));
+            countCloudSteps(frame, session, size, rows);
+        }
+        const double reduced = skyGpuMs(rows, view.name), full = skyGpuMs(rows, view.name + "/full-rate");
+        char line[160];
+        std::snprintf(line, sizeof line, "%-12s reduced rate %9.3f ms, full rate %9.3f ms: %.3f of the full-rate march",
+                      view.name.c_str(), reduced, full, full > 0.0 ? reduced / full : 0.0);
+        ratios.push_back(line);
     }
+    session.scene = preset;
+    session.scene.render.temporal = false;
     applyView(views.front(), session);
     for (double step : {0.2, 0.1, 0.05}) {
         for (int sunSamples : {0, 3, 6, 12}) {
-            session.scene.clouds = preset;
+            session.scene.clouds = preset.clouds;
             session.scene.clouds.step_km = step;
             session.scene.clouds.sun_samples = sunSamples;
             char name[64];
@@ -121,7 +150,9 @@ void benchClouds(Renderer& frame, Session& session, const std::vector<View>& vie
             countCloudSteps(frame, session, size, rows);
         }
     }
-    session.scene.clouds = preset;
+    session.scene = preset;
+    ratios.insert(ratios.begin(), "sky passes (GPU medians): the reduced-rate march + its reconstruction against the full-rate march");
+    return ratios;
 }
 
 // The clouds suite's views unless --views names others: under the cumulus, inside the
@@ -166,6 +197,60 @@ std::string csvText(const std::vector<BenchRow>& rows, const std::string& render
     return csv.str();
 }
 
+// The temporal suite: every frame of a camera path rendered with the temporal march (its
+// history kept from frame to frame, as `planet render --path` and the explorer do) and at full
+// rate, compared in linear luminance; one CSV row per frame, a summary, and the worst frame
+// (highest 99th percentile) written as the two images and their difference beside the CSV.
+void benchTemporal(Renderer& temporal, Renderer& fullRate, Session& session, const DataPaths& paths,
+                   glm::ivec2 size, const BenchOptions& o) {
+    if (!session.scene.render.temporal) throw InputError("--suite temporal: the temporal march is off (--no-temporal or render.temporal)");
+    const CameraPath path = loadSessionPath(paths, o.path, session);
+    const int frameCount = pathFrameCount(path.file(), o.pathFrames);
+    std::printf("temporal march against the full rate along path '%s', %d frames\n", path.file().name.c_str(), frameCount);
+    std::printf("%8s %9s %8s %10s %10s %10s\n", "frame", "time s", "reduced", "mean %", "p99 %", "max %");
+    TemporalWorstFrame worst;
+    const std::vector<TemporalFrameError> errors = measureTemporalError(
+        temporal, fullRate, session, path, frameCount, 0, frameCount, size, &worst, [&](const TemporalFrameError& e) {
+            if (e.frame % 10 == 0 || e.frame == frameCount - 1)
+                std::printf("%8d %9.2f %8s %10.3f %10.2f %10.1f\n", e.frame, e.time_s, e.reducedRate ? "yes" : "no",
+                            100 * e.meanRelative, 100 * e.p99Relative, 100 * e.maxRelative);
+        });
+    double worstMean = 0.0, sumMean = 0.0;
+    int overMean = 0, overP99 = 0;
+    std::vector<double> p99s;
+    for (const TemporalFrameError& e : errors) {
+        worstMean = std::max(worstMean, e.meanRelative);
+        sumMean += e.meanRelative;
+        overMean += e.meanRelative >= 0.03 ? 1 : 0;
+        overP99 += e.p99Relative >= 0.15 ? 1 : 0;
+        p99s.push_back(e.p99Relative);
+    }
+    std::printf("frames: %zu; mean error: average %.3f %%, worst %.3f %% (%d frames at 3 %% or more); 99th percentile: "
+                "median %.2f %%, worst %.2f %% at frame %d, t = %.2f s (%d frames at 15 %% or more)\n",
+                errors.size(), 100 * sumMean / static_cast<double>(errors.size()), 100 * worstMean, overMean,
+                100 * percentile(p99s, 50), 100 * worst.error.p99Relative, worst.error.frame, worst.error.time_s, overP99);
+    if (o.csv.empty()) return;
+    std::ostringstream csv;
+    csv << "renderer,width,height,path,frame,time_s,reduced_rate,mean_relative_error,p99_relative_error,max_relative_error\n";
+    for (const TemporalFrameError& e : errors) {
+        char line[256];
+        std::snprintf(line, sizeof line, ",%d,%d,%s,%d,%.4f,%d,%.6f,%.6f,%.6f\n", size.x, size.y,
+                      path.file().name.c_str(), e.frame, e.time_s, e.reducedRate ? 1 : 0, e.meanRelative,
+                      e.p99Relative, e.maxRelative);
+        csv << csvField(gl::rendererDescription()) << line;
+    }
+    writeFileAtomic(o.csv, csv.str());
+    std::printf("wrote %s\n", fs::absolute(o.csv).lexically_normal().c_str());
+    const fs::path stem = fs::path(o.csv).replace_extension();
+    const std::string frame = "_worst_frame" + std::to_string(worst.error.frame);
+    const fs::path a = stem.string() + frame + "_temporal.exr", b = stem.string() + frame + "_full_rate.exr",
+                   d = stem.string() + frame + "_difference.png";
+    writeExr(worst.temporal, a, session.scene.render.exposure);
+    writeExr(worst.fullRate, b, session.scene.render.exposure);
+    writeDifferenceImage(compareImages(worst.temporal, worst.fullRate), worst.temporal, worst.fullRate, d);
+    for (const fs::path& f : {a, b, d}) std::printf("wrote %s\n", fs::absolute(f).lexically_normal().c_str());
+}
+
 void printTable(const std::vector<BenchRow>& rows) {
     const bool clouds = std::any_of(rows.begin(), rows.end(), [](const BenchRow& r) { return r.cloudStepsPerPixel >= 0.0; });
     std::printf("%-12s %-12s %8s %12s %12s %12s %12s%s\n", "view", "pass", "frames", "gpu med ms", "gpu p95 ms",
@@ -206,7 +291,7 @@ int runBench(const BenchOptions& o) {
         if (!f.empty()) outputs.push_back(f);
     checkOutputsWritable(outputs);
     const DataPaths paths = findDataPaths(o.common.root);
-    Session session = loadSession(paths, o.common.preset, o.common.view);
+    Session session = loadSession(paths, o.common.preset, o.common.view, o.common.noTemporal);
     const std::vector<View> views = benchViews(o.views, paths);
 
     gl::DebugMessages messages;  // outlives the context that reports into it
@@ -217,7 +302,13 @@ int runBench(const BenchOptions& o) {
                 context.platform().c_str(), size.x, size.y, o.frames, o.warmup);
     Renderer frame(paths.shaders(), atmosphere::tableSizesFor(o.common.tables, renderer), session.continents);
 
+    if (o.suite == "temporal") {
+        Renderer fullRate(paths.shaders(), atmosphere::tableSizesFor(o.common.tables, renderer), session.continents);
+        benchTemporal(frame, fullRate, session, paths, size, o);
+        return 0;
+    }
     std::vector<BenchRow> rows;
+    std::vector<std::string> notes;  // printed after the table
     if (o.suite == "terrain") {
         // Michelic Table 1: the same view, grid size x noise layers, from the continents alone
         // (the baked map, no mountain noise) to 10 layers of mountain noise.
@@ -246,7 +337,7 @@ int runBench(const BenchOptions& o) {
             for (BenchRow& r : measureView(frame, session, size, o)) rows.push_back(std::move(r));
         }
     } else if (o.suite == "clouds") {
-        benchClouds(frame, session, cloudViews(views, o), size, o, rows);
+        notes = benchClouds(frame, session, cloudViews(views, o), size, o, rows);
     } else {
         for (const View& view : views) {
             logInfo("bench view '" + view.name + "' (" + std::to_string(o.warmup + o.frames) + " frames)");
@@ -255,6 +346,7 @@ int runBench(const BenchOptions& o) {
         }
     }
     printTable(rows);
+    for (const std::string& line : notes) std::printf("%s\n", line.c_str());
     if (!o.csv.empty()) {
         writeFileAtomic(o.csv, csvText(rows, renderer, size));
         std::printf("wrote %s\n", fs::absolute(o.csv).lexically_normal().c_str());

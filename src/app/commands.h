@@ -17,6 +17,7 @@ struct CommonOptions {
     bool glDebug = false;          // KHR_debug output (synchronous)
     std::string tables = "auto";   // atmosphere table sizes: full, reduced, auto (reduced on software GL)
     double time = 0.0;             // the ocean's clock at the first frame, s
+    bool noTemporal = false;       // render.temporal off: every pixel marched every frame
 };
 
 struct ExploreOptions {
@@ -40,9 +41,12 @@ struct BenchOptions {
     CommonOptions common;
     std::vector<std::string> views;  // view files or folders of them
     std::string suite = "views";     // "views": each view as it is; "terrain" / "ocean": Michelic's Table 1 / 2 sweeps;
-                                     // "clouds": the cloud views, step and sun samples swept, march statistics
+                                     // "clouds": the cloud views, step and sun samples swept, march statistics;
+                                     // "temporal": the temporal march against the full rate along a path
     int frames = 60;
     int warmup = 10;
+    std::string path = "takeoff";         // --suite temporal: the camera path
+    std::optional<int> pathFrames;        // --suite temporal: frames over it (default: its natural count)
     std::string csv = "out/bench.csv";
     std::string plot = "out/bench.png";
 };

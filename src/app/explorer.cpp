@@ -168,6 +168,9 @@ public:
           showUi_(!options.noPanels) {
         session_.scene.time_s = options.common.time;
         renderer_.setBackgroundBakes(true);  // a cloud rebake shows as progress in the Scene panel
+        // A reset (a slider dragged, a jump) costs a reduced-rate frame and converges in 16; a
+        // path plays as `planet render --path` renders it, its first frame at full rate.
+        renderer_.setFullRateOnReset(!options.path.empty());
         if (!options.path.empty()) {
             path_.emplace(loadSessionPath(paths, options.path, session_));
             pathFrames_ = pathFrameCount(path_->file(), std::nullopt);
@@ -370,7 +373,7 @@ int runExplore(const ExploreOptions& options) {
         return 0;
     }
     const DataPaths paths = findDataPaths(options.common.root);
-    Session session = loadSession(paths, options.common.preset, options.common.view);
+    Session session = loadSession(paths, options.common.preset, options.common.view, options.common.noTemporal);
     const glm::ivec2 size = parseSize(options.common.size);
 
     gl::DebugMessages messages;  // outlives the context that reports into it

@@ -32,6 +32,8 @@ void addCommon(CLI::App& cmd, planet::CommonOptions& o) {
             },
             "SECONDS"))
         ->capture_default_str();
+    cmd.add_flag("--no-temporal", o.noTemporal,
+                 "March clouds and air in every pixel every frame (the preset's render.temporal off): reference frames");
     cmd.add_flag("--gl-debug", o.glDebug, "Ask for a debug GL context and report KHR_debug messages synchronously");
 }
 
@@ -76,12 +78,18 @@ int main(int argc, char** argv) {
     benchCmd->add_option("--suite", bench.suite,
                          "views: every view as set up; terrain: grid 50/100/200 x continents only, 1, 5, 10 noise "
                          "layers on the first view (Michelic Table 1); ocean: 20/50/100/1000 waves on the view 'sea' "
-                         "(Michelic Table 2); clouds: the views cumulus, clouds, deck, orbit, space, then cloud step "
-                         "0.2/0.1/0.05 km x 0/3/6/12 sun samples on the first, with march steps per pixel and the "
-                         "share skipped through empty space")
-        ->check(CLI::IsMember({"views", "terrain", "ocean", "clouds"}))
+                         "(Michelic Table 2); clouds: the views cumulus, clouds, deck, orbit, space, each at the "
+                         "reduced and the full rate, then cloud step 0.2/0.1/0.05 km x 0/3/6/12 sun samples on the "
+                         "first, with march steps per pixel and the share skipped through empty space; temporal: "
+                         "every frame of --path with the temporal march against the full-rate march (errors per "
+                         "frame to the CSV, the worst frame's images beside it)")
+        ->check(CLI::IsMember({"views", "terrain", "ocean", "clouds", "temporal"}))
         ->capture_default_str();
     benchCmd->add_option("--frames", bench.frames, "Recorded frames per view")->capture_default_str();
+    benchCmd->add_option("--path", bench.path, "--suite temporal: the camera path (name under assets/paths or a file)")
+        ->capture_default_str();
+    benchCmd->add_option("--path-frames", bench.pathFrames,
+                         "--suite temporal: this many frames evenly over the path (default: duration x fps + 1)");
     benchCmd->add_option("--warmup", bench.warmup, "Unrecorded frames per view before recording")->capture_default_str();
     benchCmd->add_option("--csv", bench.csv, "CSV output (empty: none)")->capture_default_str();
     benchCmd->add_option("--plot", bench.plot, "Plot PNG output (empty: none)")->capture_default_str();

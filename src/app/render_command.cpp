@@ -62,7 +62,7 @@ void renderStill(const CommonOptions& common, const std::vector<std::string>& ou
     checkOutputs(outputs);
     const glm::ivec2 size = parseSize(common.size);
     const DataPaths paths = findDataPaths(common.root);
-    Session session = loadSession(paths, common.preset, common.view);
+    Session session = loadSession(paths, common.preset, common.view, common.noTemporal);
     session.scene.time_s = common.time;
     applyExposure(exposure, session.scene);
 
@@ -82,7 +82,7 @@ void renderPath(const CommonOptions& common, const std::vector<std::string>& out
     for (const std::string& out : outputs) frameFileName(out, 0);  // each names the frame number
     const glm::ivec2 size = parseSize(common.size);
     const DataPaths paths = findDataPaths(common.root);
-    Session session = loadSession(paths, common.preset, common.view);
+    Session session = loadSession(paths, common.preset, common.view, common.noTemporal);
     applyExposure(exposure, session.scene);
     const CameraPath path = loadSessionPath(paths, pathName, session);
     const CameraPathFile& file = path.file();

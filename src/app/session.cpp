@@ -42,11 +42,13 @@ void applyView(const View& view, Session& session) {
     if (!fix.empty()) logWarning("view '" + view.name + "': " + fix);
 }
 
-Session loadSession(const DataPaths& paths, const std::string& preset, const std::string& viewName) {
+Session loadSession(const DataPaths& paths, const std::string& preset, const std::string& viewName,
+                    bool noTemporal) {
     Session s;
     s.presetPath = resolvePreset(preset, paths.assets());
     PresetLoad load = loadPreset(s.presetPath);
     for (const std::string& w : load.warnings) logWarning(w);
+    if (noTemporal) load.scene.render.temporal = false;
     s.scene = load.scene;
     s.presetScene = load.scene;
     s.presetName = s.presetPath.stem().string();

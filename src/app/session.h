@@ -49,7 +49,9 @@ struct Session {
 
 // Loads the preset (warnings go to the log) and the view bookmarks, picks the
 // view, places the sun and the camera. Throws InputError naming file, line, field.
-Session loadSession(const DataPaths& paths, const std::string& preset, const std::string& viewName);
+// `noTemporal` (--no-temporal) switches the preset's render.temporal off.
+Session loadSession(const DataPaths& paths, const std::string& preset, const std::string& viewName,
+                    bool noTemporal = false);
 
 // Puts the camera (and the sun, when the view places it) where a view says.
 void applyView(const View& view, Session& session);

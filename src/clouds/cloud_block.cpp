@@ -5,12 +5,14 @@
 
 namespace planet::clouds {
 
-glm::dvec3 windDriftKm(const Scene& scene) {
+glm::dvec3 windDriftKm(const Scene& scene) { return windDriftKm(scene, scene.time_s); }
+
+glm::dvec3 windDriftKm(const Scene& scene, double time_s) {
     const LocalFrame frame = localFrameAt(directionFromLatLon(scene.ocean.wind_latitude_deg,
                                                               scene.ocean.wind_longitude_deg));
     const double bearing = glm::radians(scene.clouds.wind_bearing_deg);
     const glm::dvec3 towards = std::cos(bearing) * frame.north + std::sin(bearing) * frame.east;
-    return towards * (scene.clouds.wind_speed_mps * scene.time_s / 1000.0);
+    return towards * (scene.clouds.wind_speed_mps * time_s / 1000.0);
 }
 
 CloudBlock makeCloudBlock(const Scene& scene, const Camera& camera, double largeStepKm, int volumeSize,

@@ -46,10 +46,11 @@ static_assert(offsetof(CloudBlock, cameraFromCentre) == 16 && offsetof(CloudBloc
                   offsetof(CloudBlock, pixelAngle) == 112 && sizeof(CloudBlock) == 128,
               "CloudBlock must match std140 (shaders/clouds/cloud_block.glsl)");
 
-// The drift of the clouds after `time_s` seconds of wind: a world-space translation, km,
-// along the wind's bearing at the ocean's wind point (a fixed place, so that the drift does
-// not change as the camera moves).
+// The drift of the clouds after the scene's time_s seconds of wind (or `time_s`): a
+// world-space translation, km, along the wind's bearing at the ocean's wind point (a fixed
+// place, so that the drift does not change as the camera moves).
 glm::dvec3 windDriftKm(const Scene& scene);
+glm::dvec3 windDriftKm(const Scene& scene, double time_s);
 
 // The block for a scene seen from a camera. `largeStepKm` is the step the volume's
 // zero-density border allows and `volumeSize` its voxels per side (cloud_resources.h; 0:

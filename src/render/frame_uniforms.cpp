@@ -1,5 +1,7 @@
 #include "render/frame_uniforms.h"
 
+#include "clouds/cloud_block.h"
+
 namespace planet {
 
 double halton(int index, int base) {
@@ -53,6 +55,10 @@ FrameUniforms makeFrameUniforms(const Scene& scene, const Camera& camera, glm::i
     u.time = static_cast<float>(scene.time_s);
     u.cameraFromPrevious = glm::vec3(camera.position - before.position);
     u.historyValid = previous ? 1.0f : 0.0f;
+    u.stillSincePrevious = previous && before.position == camera.position && before.orientation == camera.orientation &&
+                                   previous->time_s == scene.time_s
+                               ? 1.0f
+                               : 0.0f;
     u.viewportSize = glm::vec2(size);
     u.inverseViewportSize = 1.0f / glm::vec2(size);
     u.jitter = subPixelJitter(frameIndex);
@@ -60,6 +66,8 @@ FrameUniforms makeFrameUniforms(const Scene& scene, const Camera& camera, glm::i
     u.exposure = static_cast<float>(scene.render.exposure);
     u.frameIndex = frameIndex;
     u.cameraDepthBelowSea = static_cast<float>(cameraDepthBelowSeaM(scene, camera));
+    const double beforeTime = previous ? previous->time_s : scene.time_s;
+    u.cloudDriftSincePrevious = glm::vec3((clouds::windDriftKm(scene) - clouds::windDriftKm(scene, beforeTime)) * 1000.0);
     return u;
 }
 

@@ -38,20 +38,23 @@ struct FrameUniforms {
     float exposure;
     int frameIndex;
     float cameraDepthBelowSea;        // m below the mean sea surface (> 0: under water)
-    float padding0 = 0.0f;
+    float stillSincePrevious;         // 1: the camera and the clock are the previous frame's (nothing moved)
     float padding1 = 0.0f;
+    glm::vec3 cloudDriftSincePrevious; // m, world axes: how far the wind moved the clouds since the previous frame
+    float padding2 = 0.0f;
 };
 static_assert(offsetof(FrameUniforms, planetCenterFromCamera) == 320 && offsetof(FrameUniforms, cameraUp) == 336 &&
                   offsetof(FrameUniforms, sunDirection) == 352 && offsetof(FrameUniforms, cameraFromPrevious) == 368 &&
                   offsetof(FrameUniforms, viewportSize) == 384 && offsetof(FrameUniforms, jitter) == 400 &&
                   offsetof(FrameUniforms, nearPlane) == 408 && offsetof(FrameUniforms, frameIndex) == 416 &&
-                  sizeof(FrameUniforms) == 432,
+                  offsetof(FrameUniforms, cloudDriftSincePrevious) == 432 && sizeof(FrameUniforms) == 448,
               "FrameUniforms must match the std140 block in shaders/common/frame_uniforms.glsl");
 
 // The camera a previous frame was rendered with, kept in double for reprojection.
 struct PreviousFrame {
     Camera camera;
     glm::ivec2 size{0, 0};
+    double time_s = 0.0;  // the scene's clock
 };
 
 // Per-frame uniforms for a scene seen by a camera at a frame size, formed in double and

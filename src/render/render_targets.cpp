@@ -73,13 +73,22 @@ bool RenderTargets::resize(glm::ivec2 size) {
     surfaceFramebuffer_ =
         makeFramebuffer({&surfaceRadiance_, &surfaceDistance_}, &gbuffer_.depth, "surface radiance + depth");
     hdr_ = makeTexture(GL_RGBA16F, size, "hdr");
-    hdrFramebuffer_ = makeFramebuffer({&hdr_}, nullptr, "hdr");
+    skyInscatter_ = makeTexture(GL_RGBA16F, size, "sky inscatter");
+    skyTransmittance_ = makeTexture(GL_RGBA16F, size, "sky transmittance");
+    hdrFramebuffer_ = makeFramebuffer({&hdr_, &skyInscatter_, &skyTransmittance_}, nullptr, "hdr + sky T, S");
+    sparseSky_.size = (size + 3) / 4;
+    sparseSky_.inscatter = makeTexture(GL_RGBA16F, sparseSky_.size, "sparse sky inscatter");
+    sparseSky_.transmittance = makeTexture(GL_RGBA16F, sparseSky_.size, "sparse sky transmittance");
+    sparseSky_.framebuffer =
+        makeFramebuffer({&sparseSky_.inscatter, &sparseSky_.transmittance}, nullptr, "sparse sky T, S");
     ldr_ = makeTexture(GL_RGBA8, size, "ldr");
     ldrFramebuffer_ = makeFramebuffer({&ldr_}, nullptr, "ldr");
     seabedDepth_ = makeTexture(GL_DEPTH_COMPONENT32F, size, "seabed depth");
     seabedRadiance_ = makeTexture(GL_RGBA16F, size, "seabed radiance");
     history_.radiance = makeTexture(GL_RGBA16F, size, "history.radiance");
     history_.surfaceDistance = makeTexture(GL_R32F, size, "history.surface distance");
+    history_.skyInscatter = makeTexture(GL_RGBA16F, size, "history.sky inscatter");
+    history_.skyTransmittance = makeTexture(GL_RGBA16F, size, "history.sky transmittance");
     return true;
 }
 
@@ -97,6 +106,8 @@ void RenderTargets::copySeabed() const {
 void RenderTargets::keepHistory() const {
     copyImage(hdr_, history_.radiance, size_);
     copyImage(surfaceDistance_, history_.surfaceDistance, size_);
+    copyImage(skyInscatter_, history_.skyInscatter, size_);
+    copyImage(skyTransmittance_, history_.skyTransmittance, size_);
 }
 
 }  // namespace planet

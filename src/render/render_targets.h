@@ -8,9 +8,13 @@
 //             (surfaceFramebuffer, with the G-buffer's depth for the sea).
 //   seabed    copies of the G-buffer depth and of the surface radiance taken before the
 //             ocean, which reads them while drawing over them
-//   hdr       RGBA16F linear radiance arriving at the camera (what `render --out x.exr` writes)
+//   hdr       RGBA16F linear radiance arriving at the camera (what `render --out x.exr` writes),
+//             with the sky passes' T and S beside it (skyInscatter: S, samples in the temporal
+//             history; skyTransmittance: T, reprojection distance km; render/sky_temporal.frag)
+//   sparse    a quarter of the size on each side (rounded up): the reduced-rate march's
+//             samples, one pixel of each 4x4 block (render/sky_sparse.frag)
 //   ldr       RGBA8 tone-mapped sRGB bytes (what the window shows and PNGs hold)
-//   history   the previous frame's hdr and surface distance, kept for temporal work
+//   history   the previous frame's hdr, surface distance and sky T and S, kept for temporal work
 //             (FrameUniforms: previousClipFromWorld, cameraFromPrevious, historyValid)
 //
 // Layout must match shaders/common/gbuffer.glsl. Resized only when the frame size
@@ -34,6 +38,16 @@ struct GBuffer {
 struct FrameHistory {
     gl::Texture radiance{GL_TEXTURE_2D};         // RGBA16F, the previous frame's hdr
     gl::Texture surfaceDistance{GL_TEXTURE_2D};  // R32F, the previous frame's surface distance
+    gl::Texture skyInscatter{GL_TEXTURE_2D};     // RGBA16F, its sky S and sample count
+    gl::Texture skyTransmittance{GL_TEXTURE_2D}; // RGBA16F, its sky T and reprojection distance
+};
+
+// The reduced-rate march's samples (a quarter of the frame's size on each side).
+struct SparseSky {
+    glm::ivec2 size{0, 0};
+    gl::Texture inscatter{GL_TEXTURE_2D};      // RGBA16F: S, reprojection distance km
+    gl::Texture transmittance{GL_TEXTURE_2D};  // RGBA16F: T
+    gl::Framebuffer framebuffer;
 };
 
 class RenderTargets {
@@ -48,7 +62,11 @@ public:
     const gl::Texture& surfaceDistance() const { return surfaceDistance_; }
     const gl::Texture& hdr() const { return hdr_; }
     const gl::Texture& ldr() const { return ldr_; }
+    const gl::Texture& skyInscatter() const { return skyInscatter_; }
+    const gl::Texture& skyTransmittance() const { return skyTransmittance_; }
+    const SparseSky& sparseSky() const { return sparseSky_; }
     const FrameHistory& history() const { return history_; }
+    // hdr, skyInscatter and skyTransmittance (the sky passes').
     GLuint hdrFramebuffer() const { return hdrFramebuffer_.id(); }
     GLuint ldrFramebuffer() const { return ldrFramebuffer_.id(); }
     // surface radiance + distance with the G-buffer's depth attached.
@@ -60,7 +78,7 @@ public:
     void copySeabed() const;
     const gl::Texture& seabedDepth() const { return seabedDepth_; }
     const gl::Texture& seabedRadiance() const { return seabedRadiance_; }
-    // Copies this frame's hdr and surface distance into history().
+    // Copies this frame's hdr, surface distance and sky T and S into history().
     void keepHistory() const;
 
 private:
@@ -70,6 +88,9 @@ private:
     gl::Texture surfaceDistance_{GL_TEXTURE_2D};
     gl::Texture hdr_{GL_TEXTURE_2D};
     gl::Texture ldr_{GL_TEXTURE_2D};
+    gl::Texture skyInscatter_{GL_TEXTURE_2D};
+    gl::Texture skyTransmittance_{GL_TEXTURE_2D};
+    SparseSky sparseSky_;
     gl::Framebuffer surfaceFramebuffer_;
     gl::Framebuffer hdrFramebuffer_;
     gl::Framebuffer ldrFramebuffer_;

@@ -24,6 +24,19 @@ gl::ShaderSources withAtmosphere(const gl::ShaderSources& s, const atmosphere::T
 constexpr double kJumpFractionOfAltitude = 0.25;
 constexpr double kJumpMinimumM = 10.0;
 constexpr double kJumpTurnCos = 0.866;  // 30 degrees
+// A sun that turned farther than this in one frame has jumped too (a time-of-day drag); a
+// slower one (a path through dusk) keeps the history, which the temporal march clamps.
+constexpr double kSunJumpCos = 0.99985;  // 1 degree
+
+// Every parameter that the history depends on, as a preset would save them: all but the sun's
+// position (compared as a direction, kSunJumpCos) and the exposure (applied after the history).
+std::string historyKey(const Scene& scene) {
+    Scene keyed = scene;
+    keyed.sun.latitude_deg = 0.0;
+    keyed.sun.longitude_deg = 0.0;
+    keyed.render.exposure = 1.0;
+    return presetToToml(keyed, "", "");
+}
 
 }  // namespace
 
@@ -31,6 +44,7 @@ const char* frameResourceName(FrameResource r) {
     switch (r) {
         case R::GBuffer: return "G-buffer";
         case R::SurfaceRadiance: return "surface radiance";
+        case R::SparseSky: return "sparse sky";
         case R::HdrRadiance: return "HDR radiance";
         case R::LdrImage: return "LDR image";
         case R::Window: return "window";
@@ -59,6 +73,10 @@ Renderer::Renderer(const std::filesystem::path& shaderRoot, const atmosphere::Ta
       surfaceLight_(withAtmosphere(sources_, atmosphereTables), "surface light", "render/surface_light.frag"),
       ocean_(sources_, atmosphereTables),
       sky_(sources_, atmosphereTables, gl::ProgramDesc{"sky", {"common/fullscreen.vert", "render/sky.frag"}}),
+      skySparse_(sources_, atmosphereTables,
+                 gl::ProgramDesc{"sky march", {"common/fullscreen.vert", "render/sky_sparse.frag"}}),
+      skyTemporal_(sources_, atmosphereTables,
+                   gl::ProgramDesc{"sky temporal", {"common/fullscreen.vert", "render/sky_temporal.frag"}}),
       tonemap_(sources_, "tonemap", "render/tonemap.frag"),
       passes_(makePasses()) {
     glNamedBufferStorage(frameUniforms_.id(), sizeof(FrameUniforms), nullptr, GL_DYNAMIC_STORAGE_BIT);
@@ -105,7 +123,9 @@ std::vector<Renderer::Pass> Renderer::makePasses() {
                           ocean_.draw(s.atmosphere.elek_3d_table);
                       },
                       [this] { return ocean_.program().built(); }});
-    passes.push_back({{"sky", {R::SurfaceRadiance}, {R::HdrRadiance}}, always,
+    auto fullRate = [this](const Scene&) { return !lastPrepare_.reducedRate; };
+    auto reducedRate = [this](const Scene&) { return lastPrepare_.reducedRate; };
+    passes.push_back({{"sky", {R::SurfaceRadiance}, {R::HdrRadiance}}, fullRate,
                       [this](const Scene& s) {
                           glBindFramebuffer(GL_FRAMEBUFFER, targets_.hdrFramebuffer());
                           glBindTextureUnit(binding::UNIT_SURFACE_RADIANCE, targets_.surfaceRadiance().id());
@@ -115,6 +135,35 @@ std::vector<Renderer::Pass> Renderer::makePasses() {
                           glDrawArrays(GL_TRIANGLES, 0, 3);
                       },
                       [this] { return sky_.built(); }});
+    passes.push_back({{"sky march", {R::SurfaceRadiance}, {R::SparseSky}}, reducedRate,
+                      [this](const Scene& s) {
+                          const SparseSky& sparse = targets_.sparseSky();
+                          glBindFramebuffer(GL_FRAMEBUFFER, sparse.framebuffer.id());
+                          glViewport(0, 0, sparse.size.x, sparse.size.y);
+                          glBindTextureUnit(binding::UNIT_SURFACE_DISTANCE, targets_.surfaceDistance().id());
+                          glBindVertexArray(emptyVertexArray_.id());
+                          glUseProgram(skySparse_.get(s.atmosphere.elek_3d_table).id());
+                          glDrawArrays(GL_TRIANGLES, 0, 3);
+                          glViewport(0, 0, targets_.size().x, targets_.size().y);
+                      },
+                      [this] { return skySparse_.built(); }});
+    passes.push_back({{"sky temporal", {R::SurfaceRadiance, R::SparseSky}, {R::HdrRadiance}}, reducedRate,
+                      [this](const Scene& s) {
+                          glBindFramebuffer(GL_FRAMEBUFFER, targets_.hdrFramebuffer());
+                          const SparseSky& sparse = targets_.sparseSky();
+                          const FrameHistory& history = targets_.history();
+                          glBindTextureUnit(binding::UNIT_SURFACE_RADIANCE, targets_.surfaceRadiance().id());
+                          glBindTextureUnit(binding::UNIT_SURFACE_DISTANCE, targets_.surfaceDistance().id());
+                          glBindTextureUnit(binding::UNIT_SPARSE_INSCATTER, sparse.inscatter.id());
+                          glBindTextureUnit(binding::UNIT_SPARSE_TRANSMITTANCE, sparse.transmittance.id());
+                          glBindTextureUnit(binding::UNIT_HISTORY_SKY_INSCATTER, history.skyInscatter.id());
+                          glBindTextureUnit(binding::UNIT_HISTORY_SKY_TRANSMITTANCE, history.skyTransmittance.id());
+                          glBindTextureUnit(binding::UNIT_HISTORY_SURFACE_DISTANCE, history.surfaceDistance.id());
+                          glBindVertexArray(emptyVertexArray_.id());
+                          glUseProgram(skyTemporal_.get(s.atmosphere.elek_3d_table).id());
+                          glDrawArrays(GL_TRIANGLES, 0, 3);
+                      },
+                      [this] { return skyTemporal_.built(); }});
     passes.push_back({{"tonemap", {R::HdrRadiance}, {R::LdrImage}}, always,
                       [this](const Scene&) {
                           glBindFramebuffer(GL_FRAMEBUFFER, targets_.ldrFramebuffer());
@@ -146,6 +195,8 @@ bool Renderer::historyUsable(const Scene& scene, const Camera& camera, bool resi
     if (moved > std::max(kJumpMinimumM, kJumpFractionOfAltitude * altitude)) return false;
     if (glm::dot(camera.forward(), before.forward()) < kJumpTurnCos) return false;
     if (camera.fovY_rad != before.fovY_rad) return false;
+    if (previousUnderWater_ != (cameraDepthBelowSeaM(scene, camera) > 0.0)) return false;
+    if (glm::dot(scene.sunDirection(), previousSun_) < kSunJumpCos) return false;
     return sceneKey_ == previousSceneKey_;
 }
 
@@ -172,8 +223,11 @@ void Renderer::prepare(const Scene& scene, const Camera& camera, glm::ivec2 size
     // Filter across cube faces as the CPU's sampleContinents does.
     glEnable(GL_TEXTURE_CUBE_MAP_SEAMLESS);
 
-    sceneKey_ = presetToToml(scene, "", "");  // every parameter, as a preset would save it
+    sceneKey_ = historyKey(scene);
     report.historyValid = historyUsable(scene, camera, resized);
+    const bool inAir = cameraDepthBelowSeaM(scene, camera) <= 0.0;
+    report.reducedRate = scene.render.temporal && scene.clouds.enabled && inAir &&
+                         (report.historyValid || !fullRateOnReset_);
     const FrameUniforms uniforms = makeFrameUniforms(scene, camera, size, frameIndex_,
                                                      report.historyValid ? previous_ : std::nullopt);
     glNamedBufferSubData(frameUniforms_.id(), 0, sizeof uniforms, &uniforms);
@@ -214,7 +268,9 @@ void Renderer::render(const Scene& scene, const Camera& camera, glm::ivec2 size,
     }
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     targets_.keepHistory();
-    previous_ = PreviousFrame{camera, size};
+    previous_ = PreviousFrame{camera, size, scene.time_s};
+    previousUnderWater_ = cameraDepthBelowSeaM(scene, camera) > 0.0;
+    previousSun_ = scene.sunDirection();
     previousSceneKey_ = sceneKey_;
     ++frameIndex_;
     present_ = nullptr;

@@ -22,16 +22,28 @@
 //                                                       in-scattering, the sky, the sun disc; the
 //                                                       water body under water (render/sky.frag),
 //                                                       through the unified march of clouds and air
-//                                                       (clouds/cloud_march.glsl; Michelic Eq. 17-20).
+//                                                       (clouds/cloud_march.glsl; Michelic Eq. 17-20);
+//                                                       every pixel (full rate), or instead:
+//   sky march      surface distance, atmosphere         sparse sky: T and S at one pixel of each 4x4
+//                                                       block (render/sky_sparse.frag; reduced rate)
+//   sky temporal   sparse sky, surface radiance +       HDR radiance, from the sparse samples and the
+//                  distance, history                    reprojected history (render/sky_temporal.frag),
+//                                                       T and S beside it for the next frame's history
 //   tonemap        HDR radiance, exposure               LDR (display-ready sRGB)
 //   ui             LDR                                  the window (explorer only: blit + panels)
 //
 // Each pass is a record {name, reads, writes, draw}: the debug group, the profiler scope and
 // the order check (every read written earlier in the frame; checked when the list is built,
 // and on every frame in debug builds) come from it, and so does the hot-reload list.
-// After the passes the HDR radiance and surface distance are kept as the frame history,
-// with the camera (double) they were rendered from; the history is dropped on a resize, a
-// jump of the camera, or a change of the scene's parameters.
+// After the passes the HDR radiance, surface distance and the sky's T and S are kept as the
+// frame history, with the camera (double) they were rendered from; the history is dropped on
+// a resize, a jump of the camera, a change of the scene's parameters (the sun may move a
+// little), or a dive across the sea surface.
+//
+// The reduced rate (scene render.temporal, with clouds) runs where there is a history; a
+// frame without one is marched at full rate (a still, the first frame of a sequence), or, for
+// the explorer (setFullRateOnReset(false)), reconstructed from its sparse samples alone so
+// that dragging a slider costs no more than a reduced-rate frame.
 //
 // `planet render` reads HDR or LDR back instead of presenting.
 #pragma once
@@ -62,7 +74,7 @@ namespace planet {
 
 // What a pass reads and writes, for the order check. The baked resources, the blocks and
 // the atmosphere tables are made by prepare() and are not listed.
-enum class FrameResource { GBuffer, SurfaceRadiance, HdrRadiance, LdrImage, Window };
+enum class FrameResource { GBuffer, SurfaceRadiance, SparseSky, HdrRadiance, LdrImage, Window };
 const char* frameResourceName(FrameResource r);
 
 struct PassDeclaration {
@@ -81,6 +93,7 @@ struct PrepareReport {
     bool continentsUpdated = false;      // the continents map was loaded or baked, and uploaded
     bool cloudsUpdated = false;          // the cloud volume or weather map was made and uploaded
     bool historyValid = false;           // the previous frame may be reprojected
+    bool reducedRate = false;            // the sky was marched at the reduced rate (sky march + sky temporal)
 };
 
 class Renderer {
@@ -117,6 +130,10 @@ public:
     const clouds::CloudResources& clouds() const { return clouds_; }
     // Count the sky pass's cloud march steps from the next frame on (planet bench).
     void setCloudStatistics(bool on) { clouds_.setStatistics(on); }
+    // What a reduced-rate frame without history does: march at full rate (true, the default:
+    // stills and sequences start exact) or reconstruct from its sparse samples alone (the
+    // explorer: a reset costs no more than any other frame, and converges in 16 frames).
+    void setFullRateOnReset(bool on) { fullRateOnReset_ = on; }
     const PrepareReport& lastPrepare() const { return lastPrepare_; }
     int frameIndex() const { return frameIndex_; }
     std::vector<PassDeclaration> passDeclarations() const;
@@ -146,6 +163,8 @@ private:
     FullscreenPass surfaceLight_;
     OceanPass ocean_;
     AtmosphereProgram sky_;
+    AtmosphereProgram skySparse_;
+    AtmosphereProgram skyTemporal_;
     FullscreenPass tonemap_;
     gl::Buffer frameUniforms_;
     gl::VertexArray emptyVertexArray_;
@@ -155,7 +174,10 @@ private:
     std::function<void()> present_;  // this frame's ui, while render() runs
 
     int frameIndex_ = 0;
+    bool fullRateOnReset_ = true;
     std::optional<PreviousFrame> previous_;  // the frame the history holds
+    bool previousUnderWater_ = false;        // its camera was under the sea (no sky T, S in the history)
+    glm::dvec3 previousSun_{0.0};            // its sun direction
     std::string previousSceneKey_;           // its parameters (presetToToml)
     std::string sceneKey_;                   // this frame's
     PrepareReport lastPrepare_;

@@ -42,6 +42,10 @@ struct RenderParams {
     // Tone mapping: display = 1 - exp(-exposure * radiance), then sRGB (Bruneton's
     // demo operator). Dimensionless, [0.001, 1000].
     double exposure = 10.0;
+    // March clouds and air at a reduced rate (one pixel of each 4x4 block a frame) and
+    // reproject the rest from the frame history (render/sky_temporal.frag); off: every pixel
+    // every frame (reference frames). A frame without history is marched at full rate.
+    bool temporal = true;
 };
 
 struct Scene {

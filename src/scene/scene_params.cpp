@@ -61,6 +61,10 @@ std::vector<ParamSpec> buildTable() {
         [](Scene& s) { return ParamRef{&s.sun.angular_radius_rad}; });
     add("render", "exposure", "", 1e-3, 1e3, "Exposure applied before tone mapping.",
         [](Scene& s) { return ParamRef{&s.render.exposure}; });
+    add("render", "temporal", "", 0.0, 1.0,
+        "March clouds and air in one pixel of each 4x4 block a frame and reproject the rest from the previous "
+        "frames (about 1/10 of the cost); off: every pixel every frame, for reference frames.",
+        [](Scene& s) { return ParamRef{&s.render.temporal}; });
     return t;
 }
 

@@ -1,0 +1,67 @@
+// What the sky passes share (render/sky.frag, sky_sparse.frag, sky_temporal.frag): the march
+// of one view ray through the air and the clouds, the water body under the sea, and the
+// composite of the surface behind. Include after common/frame_uniforms.glsl,
+// atmosphere/interface.glsl, clouds/cloud_march.glsl and ocean/water.glsl.
+
+// The march's step counts over the frame, when clouds.statistics asks (planet bench).
+layout(std430, binding = BUFFER_CLOUD_STATISTICS) buffer CloudStatistics {
+    uint marchSteps;    // small steps (in or near clouds)
+    uint skippedSteps;  // large steps through empty space (the zero-density border's)
+    uint pixels;        // pixels marched through air
+} statistics;
+
+// Interleaved gradient noise (Jimenez 2014): a march start that differs in every pixel of a
+// 3x3 block, so the steps' banding turns into fine, evenly spread noise.
+float interleavedGradientNoise(ivec2 pixel) {
+    vec2 p = vec2(pixel) + 0.5;
+    return fract(52.9829189 * fract(dot(p, vec2(0.06711056, 0.00583715))));
+}
+
+// Where the clouds' opacity along a ray passes this, they are what the pixel shows: it is
+// reprojected from their distance and moves with the wind.
+const float CLOUDY_OPACITY = 0.3;
+
+// What lies between the camera and the surface point `distanceM` along `dir` (or space, when
+// 0): T and S of Elek Eq. 19-20, and where to reproject it from.
+struct AirMarch {
+    vec3 transmittance;
+    vec3 inscatter;
+    float reprojectionKm;  // the clouds' opacity-weighted distance where they dominate, else the
+                           // surface's; 0: nothing but air to space (reproject as a direction)
+    float cloudOpacity;    // 1 - the clouds' transmittance along the ray
+};
+
+AirMarch marchAir(vec3 dir, float distanceM, float jitter) {
+    ViewMarch m = MarchView(cameraFromPlanetCentreKm(), dir, distanceM / M_PER_KM, frame.sunDirection, MarchQualityOf(jitter));
+    if (clouds.statistics != 0) {
+        atomicAdd(statistics.marchSteps, uint(m.steps));
+        atomicAdd(statistics.skippedSteps, uint(m.skipped));
+        atomicAdd(statistics.pixels, 1u);
+    }
+    AirMarch a;
+    a.transmittance = m.transmittance;
+    a.inscatter = m.inscatter;
+    a.reprojectionKm = m.cloudOpacity > CLOUDY_OPACITY ? m.cloudDistance : distanceM / M_PER_KM;
+    a.cloudOpacity = m.cloudOpacity;
+    return a;
+}
+
+// Under water: the water body between the camera and the first surface (the sea floor, or
+// the sea surface seen from below), lit by the sun and sky through the water above the
+// camera. Nothing drawn: water all the way.
+vec3 throughWater(vec3 surface, float distance) {
+    vec3 up = frame.cameraUp;
+    vec3 seaSurface = cameraFromPlanetCentreKm() + up * (frame.cameraDepthBelowSea / M_PER_KM);
+    vec3 skyIrradiance;
+    vec3 sunIrradiance = SunAndSkyIrradiance(seaSurface, up, frame.sunDirection, skyIrradiance);
+    vec3 light = (sunIrradiance + skyIrradiance) * waterTransmittanceAlong(frame.cameraDepthBelowSea);
+    vec3 transmittance = waterTransmittanceAlong(distance > 0.0 ? distance : 1.0e30);
+    return transmittance * surface + (1.0 - transmittance) * deepWaterRadiance(light);
+}
+
+// In air: L = T R_G + S at a surface point, S + T x the sun's disc where the ray goes to
+// space (Elek Eq. 19-20; Sperlhofer Eq. 2-16).
+vec3 throughAir(vec3 dir, vec3 surface, float distance, vec3 transmittance, vec3 inscatter) {
+    if (distance <= 0.0) return inscatter + transmittance * SunDiscRadiance(dir, frame.sunDirection);
+    return transmittance * surface + inscatter;
+}

@@ -1,0 +1,249 @@
+// The temporal reconstruction (pass "sky temporal"): the full frame's T and S (what lies
+// between the camera and the surface, render/sky.frag) from this frame's reduced-rate samples
+// (render/sky_sparse.frag: one pixel of each 4x4 block) and the previous frame's result,
+// then the composite L = T R_G + S (or S + T x sun disc) at every pixel.
+//
+// For each pixel:
+//  - this frame's samples of the 3x3 blocks around it, each weighted by its distance in the
+//    image (a tent four pixels wide: bilinear between samples) and by how alike its surface
+//    distance is (sky only from sky, a near hill only from that hill: no halo of sky around a
+//    mountain, no clouds bleeding over a hill): the spatial estimate, and the range (box) of
+//    the samples that see the same surface, widened by its own size (the samples are four
+//    pixels apart: what lies between them may reach past their range);
+//  - the history: the pixel's point (the clouds' opacity-weighted distance where they
+//    dominate, moved back by the wind; else the surface point; else the direction) projected
+//    into the previous frame (its camera relative to this one formed in double:
+//    frame.cameraFromPrevious), read with Catmull-Rom where the 4x4 texels around show the
+//    same surface, bilinear over those that do elsewhere, and rejected where none does (a
+//    disocclusion);
+//  - when anything moved (the camera, the clock: frame.stillSincePrevious 0), the history is
+//    clamped to the box (a cloud cannot be dragged where this frame's samples say there is
+//    none, a sky cannot stay blue where they say it is black) and the traced pixel takes its
+//    new sample; when nothing moved, nothing is clamped and the traced pixel adds its sample to
+//    a running mean of up to 16 (each visit with another jitter), so a still frame converges.
+//  - the other pixels keep the history, or the spatial estimate where there is none.
+// The history is the frame's only state; it is dropped on a jump, a resize or a parameter
+// change (frame.historyValid 0), and then this frame is the spatial estimate alone.
+#include "common/frame_uniforms.glsl"
+#include "atmosphere/interface.glsl"
+#include "clouds/cloud_march.glsl"
+#include "ocean/water.glsl"
+#include "render/sky_air.glsl"
+#include "render/sparse_pattern.glsl"
+
+in vec2 vNdc;
+layout(binding = UNIT_SURFACE_RADIANCE) uniform sampler2D surfaceRadiance;
+layout(binding = UNIT_SURFACE_DISTANCE) uniform sampler2D surfaceDistance;
+layout(binding = UNIT_SPARSE_INSCATTER) uniform sampler2D sparseInscatter;
+layout(binding = UNIT_SPARSE_TRANSMITTANCE) uniform sampler2D sparseTransmittance;
+layout(binding = UNIT_HISTORY_SKY_INSCATTER) uniform sampler2D historyInscatter;
+layout(binding = UNIT_HISTORY_SKY_TRANSMITTANCE) uniform sampler2D historyTransmittance;
+layout(binding = UNIT_HISTORY_SURFACE_DISTANCE) uniform sampler2D historySurfaceDistance;
+
+layout(location = 0) out vec4 outRadiance;
+layout(location = 1) out vec4 outSkyInscatter;      // S, samples in the history
+layout(location = 2) out vec4 outSkyTransmittance;  // T, reprojection distance km
+
+const float MAX_HISTORY_SAMPLES = 15.0;  // a still pixel's running mean: up to 16 samples
+const float BOX_MARGIN = 0.25;           // the box widened by this share of its size on each side
+// Where the history moved by 1 to 8 pixels in a frame it leans on the spatial estimate, up to
+// half of it: a fast pixel's history has been resampled and clamped many times over.
+const float FAST_BLEND = 0.5;
+const float FAST_FROM_PX = 1.0;
+const float FAST_TO_PX = 8.0;
+
+// How alike two surface distances (m, 0: no surface) are for sharing a sample: 0 for sky
+// against surface, 1 for sky against sky, and for two surfaces a Gaussian in the logarithm of
+// their ratio (1/2: a factor of 1.65; flat ground seen at a grazing angle changes by tens of
+// per cent over a few pixels and stays one surface, a hill against the valley behind it does
+// not).
+float distanceSimilarity(float a, float b) {
+    if ((a > 0.0) != (b > 0.0)) return 0.0;
+    if (a <= 0.0) return 1.0;
+    float x = log(a / b) / 0.5;
+    return exp(-x * x);
+}
+
+struct SkySample {
+    vec3 inscatter;
+    vec3 transmittance;
+};
+
+// The history at `position` (pixels, centres at +0.5) where the previous camera saw its
+// surface at `expected` m (0: sky): Catmull-Rom over 4x4 texels where all of them show that
+// surface (sharp: a bilinear read each frame would blur what the history holds over the 16
+// frames until a pixel is traced again), else bilinear over the texels that do. `weight` is
+// how much of the footprint matched (0: a disocclusion, no history).
+void readHistory(vec2 position, float expected, out SkySample history, out float samples, out float weight) {
+    history = SkySample(vec3(0.0), vec3(0.0));
+    samples = 0.0;
+    weight = 0.0;
+    vec2 base = floor(position - 0.5);
+    vec2 f = position - 0.5 - base;
+    ivec2 size = ivec2(frame.viewportSize);
+    vec4 cx = vec4(f.x * (-0.5 + f.x * (1.0 - 0.5 * f.x)), 1.0 + f.x * f.x * (-2.5 + 1.5 * f.x),
+                   f.x * (0.5 + f.x * (2.0 - 1.5 * f.x)), f.x * f.x * (-0.5 + 0.5 * f.x));
+    vec4 cy = vec4(f.y * (-0.5 + f.y * (1.0 - 0.5 * f.y)), 1.0 + f.y * f.y * (-2.5 + 1.5 * f.y),
+                   f.y * (0.5 + f.y * (2.0 - 1.5 * f.y)), f.y * f.y * (-0.5 + 0.5 * f.y));
+    bool sharp = true;
+    SkySample cubic = SkySample(vec3(0.0), vec3(0.0));
+    float cubicSamples = 0.0;
+    for (int j = 0; j < 4; ++j) {
+        for (int i = 0; i < 4; ++i) {
+            ivec2 tap = ivec2(base) + ivec2(i - 1, j - 1);
+            bool inside = all(greaterThanEqual(tap, ivec2(0))) && all(lessThan(tap, size));
+            float alike = inside ? distanceSimilarity(expected, texelFetch(historySurfaceDistance, tap, 0).r) : 0.0;
+            if (alike < 0.5) {
+                sharp = false;
+                if (i == 0 || i == 3 || j == 0 || j == 3) continue;
+            }
+            vec4 s = texelFetch(historyInscatter, tap, 0);
+            vec3 t = texelFetch(historyTransmittance, tap, 0).rgb;
+            float c = cx[i] * cy[j];
+            cubic.inscatter += c * s.rgb;
+            cubic.transmittance += c * t;
+            cubicSamples += c * s.a;
+            if (i == 1 || i == 2) {
+                if (j == 1 || j == 2) {
+                    float b = (i == 1 ? 1.0 - f.x : f.x) * (j == 1 ? 1.0 - f.y : f.y) * alike;
+                    history.inscatter += b * s.rgb;
+                    history.transmittance += b * t;
+                    samples += b * s.a;
+                    weight += b;
+                }
+            }
+        }
+    }
+    if (sharp) {
+        history = SkySample(max(cubic.inscatter, vec3(0.0)), clamp(cubic.transmittance, vec3(0.0), vec3(1.0)));
+        samples = cubicSamples;
+        weight = 1.0;
+    } else if (weight > 0.0) {
+        history.inscatter /= weight;
+        history.transmittance /= weight;
+        samples /= weight;
+    }
+}
+
+void main() {
+    ivec2 pixel = ivec2(gl_FragCoord.xy);
+    vec3 dir = worldRayFromNdc(vNdc);
+    vec3 surface = texelFetch(surfaceRadiance, pixel, 0).rgb;
+    float distance = texelFetch(surfaceDistance, pixel, 0).r;
+
+    // This frame's samples around the pixel.
+    ivec2 block = pixel / SPARSE_BLOCK;
+    ivec2 blocks = textureSize(sparseInscatter, 0);
+    SkySample spatial = SkySample(vec3(0.0), vec3(0.0));
+    float weightSum = 0.0;
+    SkySample best;
+    float bestWeight = -1.0;
+    float reprojectionKm = 0.0;
+    bool cloudy = false;  // the clouds dominate the pixel: it moves with the wind
+    bool traced = false;
+    SkySample fresh;
+    float boxSamples = 0.0;  // samples in the box
+    vec3 loS = vec3(1.0e30), hiS = vec3(-1.0e30), loT = vec3(1.0e30), hiT = vec3(-1.0e30);
+    for (int dy = -1; dy <= 1; ++dy) {
+        for (int dx = -1; dx <= 1; ++dx) {
+            ivec2 b = clamp(block + ivec2(dx, dy), ivec2(0), blocks - 1);
+            ivec2 q = sparseTracedPixel(b);
+            vec4 s = texelFetch(sparseInscatter, b, 0);
+            SkySample here = SkySample(s.rgb, texelFetch(sparseTransmittance, b, 0).rgb);
+            float alike = distanceSimilarity(distance, texelFetch(surfaceDistance, q, 0).r);
+            vec2 offset = abs(vec2(q - pixel)) / float(SPARSE_BLOCK);
+            float tent = max(1.0 - offset.x, 0.0) * max(1.0 - offset.y, 0.0);
+            // the best match: most alike, then nearest
+            float rank = alike - 1.0e-3 * (offset.x + offset.y);
+            if (rank > bestWeight) {
+                bestWeight = rank;
+                best = here;
+                reprojectionKm = s.a;
+                cloudy = texelFetch(sparseTransmittance, b, 0).a > CLOUDY_OPACITY;
+            }
+            if (q == pixel) {
+                traced = true;
+                fresh = here;
+            }
+            spatial.inscatter += tent * alike * here.inscatter;
+            spatial.transmittance += tent * alike * here.transmittance;
+            weightSum += tent * alike;
+            if (alike > 0.1) {
+                boxSamples += 1.0;
+                loS = min(loS, here.inscatter);
+                hiS = max(hiS, here.inscatter);
+                loT = min(loT, here.transmittance);
+                hiT = max(hiT, here.transmittance);
+            }
+        }
+    }
+    if (weightSum > 1.0e-3) {
+        spatial.inscatter /= weightSum;
+        spatial.transmittance /= weightSum;
+    } else {
+        spatial = best;
+    }
+    // The samples are four pixels apart: what lies between them may reach past their range.
+    vec3 marginS = BOX_MARGIN * (hiS - loS) + 0.01 * hiS, marginT = BOX_MARGIN * (hiT - loT) + 0.01 * hiT;
+    loS -= marginS;
+    hiS += marginS;
+    loT -= marginT;
+    hiT += marginT;
+    if (traced) {
+        reprojectionKm = texelFetch(sparseInscatter, block, 0).a;
+        cloudy = texelFetch(sparseTransmittance, block, 0).a > CLOUDY_OPACITY;
+    }
+
+    // The history at this pixel's point in the previous frame: a cloud moved with the wind.
+    SkySample history = SkySample(vec3(0.0), vec3(0.0));
+    float samples = 0.0;
+    float historyWeight = 0.0;
+    float motion = 0.0;  // pixels the point moved since the previous frame
+    if (frame.historyValid > 0.5) {
+        vec3 previousNdc;
+        if (reprojectionKm <= 0.0)
+            previousNdc = previousNdcFromDirection(dir);
+        else if (cloudy)
+            previousNdc = previousNdcFromWorld(dir * (reprojectionKm * M_PER_KM) - frame.cloudDriftSincePrevious);
+        else
+            previousNdc = previousNdcFromWorld(dir * (reprojectionKm * M_PER_KM));
+        vec2 position = (previousNdc.xy * 0.5 + 0.5) * frame.viewportSize;  // pixel centres at +0.5
+        motion = length(position - (vec2(pixel) + 0.5));
+        // the distance the previous camera had to this pixel's surface point
+        float expected = distance > 0.0 ? length(dir * distance + frame.cameraFromPrevious) : 0.0;
+        readHistory(position, expected, history, samples, historyWeight);
+    }
+    bool reprojected = historyWeight > 0.05;
+    SkySample result;
+    if (reprojected) {
+        float moving = 1.0 - frame.stillSincePrevious;
+        // Clamped where the point moved by more than a fraction of a pixel (a thin feature the
+        // samples miss, the limb's glow from orbit, would otherwise be clamped away in a frame
+        // where it barely moved), and by a box of three samples or more (one or two say little).
+        float clampAmount = moving * smoothstep(0.05, 0.5, motion) * smoothstep(1.5, 3.5, boxSamples);
+        history.inscatter = mix(history.inscatter, clamp(history.inscatter, loS, hiS), clampAmount);
+        history.transmittance = mix(history.transmittance, clamp(history.transmittance, loT, hiT), clampAmount);
+        samples = min(floor(samples + 0.5), mix(MAX_HISTORY_SAMPLES, 0.0, moving));
+        result = history;
+        float toSpatial = FAST_BLEND * smoothstep(FAST_FROM_PX, FAST_TO_PX, motion);
+        result.inscatter = mix(result.inscatter, spatial.inscatter, toSpatial);
+        result.transmittance = mix(result.transmittance, spatial.transmittance, toSpatial);
+        if (traced) {
+            float alpha = 1.0 / (samples + 1.0);
+            result.inscatter = mix(result.inscatter, fresh.inscatter, alpha);
+            result.transmittance = mix(result.transmittance, fresh.transmittance, alpha);
+            samples += 1.0;
+        }
+    } else if (traced) {
+        result = fresh;
+        samples = 1.0;
+    } else {
+        result = spatial;
+        samples = 0.0;
+    }
+
+    outRadiance = vec4(min(throughAir(dir, surface, distance, result.transmittance, result.inscatter),
+                           vec3(MAX_HDR_RADIANCE)), 1.0);
+    outSkyInscatter = vec4(result.inscatter, min(samples, MAX_HISTORY_SAMPLES));
+    outSkyTransmittance = vec4(result.transmittance, reprojectionKm);
+}

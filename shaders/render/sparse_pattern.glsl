@@ -1,0 +1,27 @@
+// The reduced-rate march's pattern (render/sky_sparse.frag traces, render/sky_temporal.frag
+// reconstructs): each frame traces one pixel of every 4x4 block of the frame, the same one in
+// every block, stepping through the block in a fixed permutation (Bayer's ordered-dither
+// order, so that any run of frames spreads its pixels over the block) and covering it in 16
+// frames. Include after common/frame_uniforms.glsl.
+const int SPARSE_BLOCK = 4;   // pixels per side of a block
+const int SPARSE_CYCLE = 16;  // frames until every pixel of a block has been traced
+
+ivec2 sparseOffset(int frameIndex) {
+    const int order[16] = int[16](0, 10, 2, 8, 5, 15, 7, 13, 1, 11, 3, 9, 4, 14, 6, 12);
+    int i = order[frameIndex % SPARSE_CYCLE];
+    return ivec2(i % SPARSE_BLOCK, i / SPARSE_BLOCK);
+}
+
+// The pixel block `block` traces this frame (clamped into the frame on its right and top
+// edges, where a block sticks out).
+ivec2 sparseTracedPixel(ivec2 block) {
+    return min(block * SPARSE_BLOCK + sparseOffset(frame.frameIndex), ivec2(frame.viewportSize) - 1);
+}
+
+// Where in each step the traced pixel samples, in [0, 1): interleaved gradient noise over
+// the pixels (render/sky_air.glsl), moved by the golden ratio at each visit of the pixel
+// (Roberts' R1 sequence), so the visits of one pixel spread evenly over the step.
+float sparseJitter(ivec2 pixel) {
+    int visit = frame.frameIndex / SPARSE_CYCLE;
+    return fract(interleavedGradientNoise(pixel) + 0.6180339887 * float(visit % 1024));
+}

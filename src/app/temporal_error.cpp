@@ -1,0 +1,39 @@
+#include "app/temporal_error.h"
+
+#include "render/readback.h"
+
+namespace planet {
+
+std::vector<TemporalFrameError> measureTemporalError(Renderer& temporal, Renderer& fullRate, Session& session,
+                                                     const CameraPath& path, int frameCount, int first, int last,
+                                                     glm::ivec2 size, TemporalWorstFrame* worst,
+                                                     const std::function<void(const TemporalFrameError&)>& progress) {
+    const double clockStart = session.scene.time_s;
+    std::vector<TemporalFrameError> errors;
+    for (int i = first; i < last; ++i) {
+        const double t = pathFrameTime(path.file(), i, frameCount);
+        applyPathSample(path, t, clockStart, session);
+        Scene reference = session.scene;
+        reference.render.temporal = false;
+        temporal.render(session.scene, session.camera, size);
+        fullRate.render(reference, session.camera, size);
+        ImageRGBAF a = readTextureRGBAF(temporal.targets().hdr(), size.x, size.y);
+        ImageRGBAF b = readTextureRGBAF(fullRate.targets().hdr(), size.x, size.y);
+        const ImageComparison c = compareImages(a, b);
+        TemporalFrameError e;
+        e.frame = i;
+        e.time_s = t - path.file().startTime();
+        e.meanRelative = c.meanRelativeError;
+        e.p99Relative = c.errorPercentile(99.0);
+        e.maxRelative = c.maxRelativeError;
+        e.reducedRate = temporal.lastPrepare().reducedRate;
+        errors.push_back(e);
+        if (worst && (worst->temporal.pixels.empty() || e.p99Relative > worst->error.p99Relative))
+            *worst = {e, std::move(a), std::move(b)};
+        if (progress) progress(e);
+    }
+    session.scene.time_s = clockStart;
+    return errors;
+}
+
+}  // namespace planet
