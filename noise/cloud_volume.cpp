@@ -311,6 +311,27 @@ CloudVolumeStats measureCloudVolume(const CloudVolume& volume) {
     return s;
 }
 
+std::vector<CloudVolume> cloudVolumeMips(const CloudVolume& volume, int levels) {
+    std::vector<CloudVolume> mips;
+    mips.reserve(static_cast<std::size_t>(std::max(levels, 1)));  // `above` points into it
+    const CloudVolume* above = &volume;
+    for (int level = 1; level < levels && above->size >= 2; ++level) {
+        CloudVolume mip;
+        mip.size = above->size / 2;
+        mip.voxels.resize(static_cast<std::size_t>(mip.size) * mip.size * mip.size);
+        for (int z = 0; z < mip.size; ++z)
+            for (int y = 0; y < mip.size; ++y)
+                for (int x = 0; x < mip.size; ++x) {
+                    double sum = 0.0;
+                    for (int k = 0; k < 8; ++k) sum += above->at(2 * x + (k & 1), 2 * y + ((k >> 1) & 1), 2 * z + (k >> 2));
+                    mip.voxels[mip.index(x, y, z)] = static_cast<float>(Imath::half(static_cast<float>(sum / 8.0)));
+                }
+        mips.push_back(std::move(mip));
+        above = &mips.back();
+    }
+    return mips;
+}
+
 std::vector<std::uint16_t> cloudVolumeHalf(const CloudVolume& volume) {
     std::vector<std::uint16_t> bits(volume.voxels.size());
     for (std::size_t i = 0; i < bits.size(); ++i) bits[i] = Imath::half(volume.voxels[i]).bits();

@@ -122,6 +122,15 @@ struct CloudVolume {
     }
 };
 
+// The volume's mip levels 1 .. levels - 1 (fewer where the volume runs out of voxels), as
+// glGenerateMipmap makes the GL texture's (a 2x2x2 box filter, each level from the one above,
+// rounded to half): what the march samples where a pixel spans voxels (cloud_density.glsl,
+// CloudVolumeLod), for the CPU reference of it.
+std::vector<CloudVolume> cloudVolumeMips(const CloudVolume& volume, int levels);
+// The levels the GL texture has (level 0 and three mips: a texel of the last spans 8 voxels,
+// where the far field has taken over).
+constexpr int kCloudVolumeMipLevels = 4;
+
 // Bakes the volume (see the file header) on all cores. Throws std::invalid_argument for a
 // parameter out of its range.
 CloudVolume bakeCloudVolume(const CloudVolumeParams& params, const BakeProgress& progress = {});

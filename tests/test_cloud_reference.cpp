@@ -160,15 +160,22 @@ protected:
 
 }  // namespace
 
-TEST_F(CloudReferenceGpu, GpuMarchMatchesTheCpuReferenceOnTheBakedVolume) {
-    const CpuData& d = cpuData();
-    const double largeStepKm = resources->largeStepKm(d.scene.clouds.tile_width_km);
-    EXPECT_DOUBLE_EQ(largeStepKmOf(d.scene.clouds), largeStepKm);  // the reference's copy of the rule
-    const CloudReference reference(d.atmosphere, d.tables, &d.volume, &d.weather);
-    const atmosphere::AtmosphereUniforms uniforms = atmosphere::makeAtmosphereUniforms(d.atmosphere);
-
+// The GPU probe and the CPU reference over the geometries' rays, under a high and a low sun,
+// with blocks for a pixel spanning `pixelAngle` rad (0: no footprint, the volume's level 0).
+struct MarchComparison {
     double worstRadiance = 0.0, meanRadiance = 0.0, worstTransmittance = 0.0;
     int cloudy = 0, skipping = 0, count = 0;
+    int changedByMips = 0;  // rays whose reference moves by over 0.2 % when read from level 0 alone
+};
+
+MarchComparison compareMarches(CloudProbe& probe, const atmosphere::GpuTables& tables, CloudResources& resources,
+                               double pixelAngle) {
+    const CpuData& d = cpuData();
+    const double largeStepKm = resources.largeStepKm(d.scene.clouds.tile_width_km);
+    const CloudReference reference(d.atmosphere, d.tables, &d.volume, &d.weather);
+    const CloudReference levelZero(d.atmosphere, d.tables, &d.volume, &d.weather, 1);
+    const atmosphere::AtmosphereUniforms uniforms = atmosphere::makeAtmosphereUniforms(d.atmosphere);
+    MarchComparison c;
     for (const double sunZenith : {30.0, 86.0}) {  // sun high, sun low (reddened, long ways through the layer)
         for (const Geometry& g : geometries()) {
             // Both get the ray as the GPU receives it (float): what is compared is the march.
@@ -177,8 +184,9 @@ TEST_F(CloudReferenceGpu, GpuMarchMatchesTheCpuReferenceOnTheBakedVolume) {
             ray.direction = glm::dvec3(glm::vec3(ray.direction));
             ray.sun = glm::dvec3(glm::vec3(ray.sun));
             ray.distanceKm = double(float(ray.distanceKm));
-            const CloudBlock block = blockFor(d.scene, ray, largeStepKm);
-            const CloudProbeResult gpu = probe->run(*tables, uniforms, block, resources.get(), {ray})[0];
+            CloudBlock block = blockFor(d.scene, ray, largeStepKm);
+            block.pixelAngle = static_cast<float>(pixelAngle);
+            const CloudProbeResult gpu = probe.run(tables, uniforms, block, &resources, {ray})[0];
             const CloudProbeResult cpu = reference.march(block, ray);
             const double er = radianceError(gpu.inscatter, cpu.inscatter, d.atmosphere.solar_irradiance);
             const double et = transmittanceError(gpu.transmittance, cpu.transmittance);
@@ -187,18 +195,28 @@ TEST_F(CloudReferenceGpu, GpuMarchMatchesTheCpuReferenceOnTheBakedVolume) {
                         sunZenith, g.altitudeKm, g.zenithDeg, g.azimuthDeg, gpu.steps, cpu.steps, gpu.skipped,
                         cpu.skipped, gpu.transmittance.y, cpu.transmittance.y, gpu.inscatter.y, cpu.inscatter.y,
                         100.0 * er, et);
-            worstRadiance = std::max(worstRadiance, er);
-            meanRadiance += er;
-            worstTransmittance = std::max(worstTransmittance, et);
-            cloudy += cpu.steps > 0 && cpu.transmittance.y < 0.5;
-            skipping += cpu.skipped > 0;
-            ++count;
+            c.worstRadiance = std::max(c.worstRadiance, er);
+            c.meanRadiance += er;
+            c.worstTransmittance = std::max(c.worstTransmittance, et);
+            c.cloudy += cpu.steps > 0 && cpu.transmittance.y < 0.5;
+            c.skipping += cpu.skipped > 0;
+            const CloudProbeResult flat = levelZero.march(block, ray);
+            c.changedByMips += radianceError(flat.inscatter, cpu.inscatter, d.atmosphere.solar_irradiance) > 0.002;
+            ++c.count;
         }
     }
-    meanRadiance /= count;
-    std::printf("%d rays (%d through thick cloud, %d with large steps): in-scattering %.3f%% at most, %.3f%% on "
-                "average; transmittance %.1e at most\n",
-                count, cloudy, skipping, 100.0 * worstRadiance, 100.0 * meanRadiance, worstTransmittance);
+    c.meanRadiance /= c.count;
+    std::printf("%d rays (%d through thick cloud, %d with large steps, %d changed by the mips): in-scattering %.3f%% "
+                "at most, %.3f%% on average; transmittance %.1e at most\n",
+                c.count, c.cloudy, c.skipping, c.changedByMips, 100.0 * c.worstRadiance, 100.0 * c.meanRadiance,
+                c.worstTransmittance);
+    return c;
+}
+
+TEST_F(CloudReferenceGpu, GpuMarchMatchesTheCpuReferenceOnTheBakedVolume) {
+    const CpuData& d = cpuData();
+    EXPECT_DOUBLE_EQ(largeStepKmOf(d.scene.clouds), resources->largeStepKm(d.scene.clouds.tile_width_km));  // the reference's copy of the rule
+    const MarchComparison c = compareMarches(*probe, *tables, *resources, 0.0);
     // Measured on Mesa llvmpipe: in-scattering 0.71 % at most, 0.11 % on average; transmittance
     // 3.5e-4. The worst rays see the sun through optically thick cloud (E = 40 / km), whose light
     // moves by percents when the samples move by the float rounding of a position at planet
@@ -209,11 +227,47 @@ TEST_F(CloudReferenceGpu, GpuMarchMatchesTheCpuReferenceOnTheBakedVolume) {
     // the clouds' transmittance towards the sun, or with 3 octaves instead of 4 fails by 25 % to
     // 17x; so do extinction 2 % high (6 % / 1.8 % / 7e-3), a reference sampling the volume half
     // a voxel off or the weather map mirrored (all three limits each).
-    EXPECT_LT(worstRadiance, 0.05);
-    EXPECT_LT(meanRadiance, 0.005);
-    EXPECT_LT(worstTransmittance, 2e-3);
-    EXPECT_GE(cloudy, 12);   // the comparison is about clouds, not clear air
-    EXPECT_GE(skipping, 8);  // and the large steps through empty space
+    EXPECT_LT(c.worstRadiance, 0.05);
+    EXPECT_LT(c.meanRadiance, 0.005);
+    EXPECT_LT(c.worstTransmittance, 2e-3);
+    EXPECT_GE(c.cloudy, 12);   // the comparison is about clouds, not clear air
+    EXPECT_GE(c.skipping, 8);  // and the large steps through empty space
+    EXPECT_EQ(c.changedByMips, 0);  // no footprint: level 0 everywhere
+}
+
+TEST_F(CloudReferenceGpu, WhereAPixelSpansVoxelsTheGpuReadsTheMipsAsTheReferenceDoes) {
+    // Blocks for a pixel of 12 mrad (60 degrees over 90 px, the tests' frames): a voxel (62.5 m)
+    // spans a pixel 5 km away, 8 voxels 42 km away, so the rays between read the volume's levels
+    // 0 to 3 (CloudVolumeLod), trilinear between levels. The GPU's mips (glGenerateTextureMipmap)
+    // against the CPU's (noise::cloudVolumeMips, a 2x2x2 box), within the bounds of the test
+    // above (measured: 0.71 % at most, 0.09 % on average, 3.5e-4); and the mips are read: a
+    // reference that reads level 0 alone moves by over 0.2 % on 5 of the 36 rays (measured).
+    const MarchComparison c = compareMarches(*probe, *tables, *resources, 1.2e-2);
+    EXPECT_LT(c.worstRadiance, 0.05);
+    EXPECT_LT(c.meanRadiance, 0.005);
+    EXPECT_LT(c.worstTransmittance, 2e-3);
+    EXPECT_GE(c.changedByMips, 3);
+}
+
+TEST(CloudVolumeMips, EachLevelIsTheMeanOfTheEightVoxelsAbove) {
+    // A 4^3 volume whose voxel (x, y, z) holds x + 10 y + 100 z (exact in half): level 1's
+    // voxel (i, j, k) is the mean of its 2x2x2 block, 2 i + 0.5 + 10 (2 j + 0.5) + 100 (2 k +
+    // 0.5); level 2 the mean of all, 1.5 + 15 + 150; and no level below one voxel.
+    noise::CloudVolume v;
+    v.size = 4;
+    v.voxels.resize(64);
+    for (int z = 0; z < 4; ++z)
+        for (int y = 0; y < 4; ++y)
+            for (int x = 0; x < 4; ++x) v.voxels[v.index(x, y, z)] = float(x + 10 * y + 100 * z);
+    const std::vector<noise::CloudVolume> mips = noise::cloudVolumeMips(v, noise::kCloudVolumeMipLevels);
+    ASSERT_EQ(mips.size(), 2u);
+    ASSERT_EQ(mips[0].size, 2);
+    for (int k = 0; k < 2; ++k)
+        for (int j = 0; j < 2; ++j)
+            for (int i = 0; i < 2; ++i)
+                EXPECT_FLOAT_EQ(mips[0].at(i, j, k), float((2 * i + 0.5) + 10 * (2 * j + 0.5) + 100 * (2 * k + 0.5)));
+    ASSERT_EQ(mips[1].size, 1);
+    EXPECT_FLOAT_EQ(mips[1].at(0, 0, 0), 166.5f);
 }
 
 TEST(CloudReference, HalvingTheStepConvergesOnRaysThroughClouds) {

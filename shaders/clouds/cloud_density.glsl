@@ -14,6 +14,15 @@ Number CloudFarBlend(Length footprintKm) {
     return smoothstep(2.0 * clouds.voxelKm, 8.0 * clouds.voxelKm, footprintKm);
 }
 
+// The volume's mip level for a pixel footprint of `footprintKm`: level 0 up to a voxel, one
+// more per doubling (a texel of level 3 spans the 8 voxels where the far field has taken over),
+// so a pixel that spans voxels reads their mean rather than one of them; 0 without the far
+// field (the volume as it is, for reference frames).
+Number CloudVolumeLod(Length footprintKm) {
+    if (clouds.voxelKm > 1.0e20) return 0.0;
+    return min(log2(max(footprintKm / clouds.voxelKm, 1.0)), 3.0);
+}
+
 // Density at `point` (Michelic Eq. 12-14), seen with a pixel footprint of `footprintKm`:
 // < 0 where the volume says the zero-density border is around (a large step is safe), else
 // >= 0. Where the footprint spans voxels, blended into the far field (cloud_model.glsl).
@@ -27,7 +36,7 @@ Number CloudDensityAt(vec3 point, Length footprintKm) {
     Number value = 0.0;
     if (far < 1.0) {
         vec3 c = (clouds.cameraTileOffset + (point - clouds.cameraFromCentre)) / clouds.tileWidth;
-        value = textureLod(cloudVolume, c, 0.0).x;
+        value = textureLod(cloudVolume, c, CloudVolumeLod(footprintKm)).x;
         if (value < 0.0 && far == 0.0) return value;  // nothing within the border: the weather cannot add cloud
     }
     vec4 weatherTexel = textureLod(weatherMap, point / r, 0.0);

@@ -64,6 +64,8 @@ float distanceSimilarity(float a, float b) {
     return exp(-x * x);
 }
 
+float luminance(vec3 c) { return dot(c, vec3(0.2126, 0.7152, 0.0722)); }
+
 struct SkySample {
     vec3 inscatter;
     vec3 transmittance;
@@ -143,6 +145,7 @@ void main() {
     bool traced = false;
     SkySample fresh;
     float boxSamples = 0.0;  // samples in the box
+    float disagreement = 0.0;  // their summed relative change since the previous frame
     vec3 loS = vec3(1.0e30), hiS = vec3(-1.0e30), loT = vec3(1.0e30), hiT = vec3(-1.0e30);
     for (int dy = -1; dy <= 1; ++dy) {
         for (int dx = -1; dx <= 1; ++dx) {
@@ -170,6 +173,13 @@ void main() {
             weightSum += tent * alike;
             if (alike > 0.1) {
                 boxSamples += 1.0;
+                // how far the sample has moved from what the history held at its pixel
+                if (frame.historyValid > 0.5) {
+                    vec3 before = texelFetch(historyInscatter, q, 0).rgb;
+                    float now = luminance(here.inscatter), then = luminance(before);
+                    disagreement += abs(now - then) / max(max(now, then), 1.0e-6) +
+                                    abs(luminance(here.transmittance) - luminance(texelFetch(historyTransmittance, q, 0).rgb));
+                }
                 loS = min(loS, here.inscatter);
                 hiS = max(hiS, here.inscatter);
                 loT = min(loT, here.transmittance);
@@ -217,10 +227,13 @@ void main() {
     SkySample result;
     if (reprojected) {
         float moving = 1.0 - frame.stillSincePrevious;
-        // Clamped where the point moved by more than a fraction of a pixel (a thin feature the
-        // samples miss, the limb's glow from orbit, would otherwise be clamped away in a frame
-        // where it barely moved), and by a box of three samples or more (one or two say little).
-        float clampAmount = moving * smoothstep(0.05, 0.5, motion) * smoothstep(1.5, 3.5, boxSamples);
+        // Clamped where the point moved by more than a fraction of a pixel, or where the samples
+        // around changed by more than their noise (the sky brightening as the camera climbs, a
+        // cloud's light as the sun moves: what a reprojection cannot follow); not where neither
+        // happened (a thin feature the samples miss, the limb's glow from orbit, would be clamped
+        // away), and only by a box of three samples or more (one or two say little).
+        float changed = smoothstep(0.03, 0.1, disagreement / max(boxSamples, 1.0));
+        float clampAmount = moving * max(smoothstep(0.05, 0.5, motion), changed) * smoothstep(1.5, 3.5, boxSamples);
         history.inscatter = mix(history.inscatter, clamp(history.inscatter, loS, hiS), clampAmount);
         history.transmittance = mix(history.transmittance, clamp(history.transmittance, loT, hiT), clampAmount);
         samples = min(floor(samples + 0.5), mix(MAX_HISTORY_SAMPLES, 0.0, moving));

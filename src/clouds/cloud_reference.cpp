@@ -41,10 +41,10 @@ CloudBlockDouble widen(const CloudBlock& b) {
 
 CloudMarchModel::CloudMarchModel(const AtmosphereParameters& atmosphere, const atmosphere::AtmosphereTables& tables,
                                  const CloudBlock& block, const noise::CloudVolume* volume,
-                                 const noise::CubeMap* weather)
+                                 const std::vector<noise::CloudVolume>* volumeMips, const noise::CubeMap* weather)
     : Model(tables.sizes),
       clouds(widen(block)),
-      cloudVolume{volume},
+      cloudVolume{volume, volumeMips},
       weatherMap{weather},
       transmittance_texture(tables.transmittance),
       scattering_texture(tables.scattering),
@@ -60,13 +60,9 @@ std::size_t wrap(std::int64_t i, int size) {
     return static_cast<std::size_t>(((i % n) + n) % n);
 }
 
-}  // namespace
-
 // GL 4.5 §8.14.2 for GL_LINEAR: u' = size u - 1/2, i0 = floor(u'), weight frac(u') on i0 + 1,
 // each index wrapped (GL_REPEAT); R16F reads as (r, 0, 0, 1).
-vec4 CloudMarchModel::textureLod(const VolumeSampler& sampler, vec3 uvw, Number) const {
-    if (!sampler.volume) return vec4(noise::kCloudEmpty, 0.0, 0.0, 1.0);
-    const noise::CloudVolume& v = *sampler.volume;
+double trilinear(const noise::CloudVolume& v, vec3 uvw) {
     const vec3 texel = uvw * double(v.size) - 0.5;
     const vec3 base = glm::floor(texel);
     const vec3 f = texel - base;
@@ -84,6 +80,21 @@ vec4 CloudMarchModel::textureLod(const VolumeSampler& sampler, vec3 uvw, Number)
                 const double w = (dx ? f.x : 1.0 - f.x) * (dy ? f.y : 1.0 - f.y) * (dz ? f.z : 1.0 - f.z);
                 value += w * v.voxels[(i[2][dz] * n + i[1][dy]) * n + i[0][dx]];
             }
+    return value;
+}
+
+}  // namespace
+
+// GL_LINEAR_MIPMAP_LINEAR (§8.14.3): the levels floor(lod) and the next, mixed by frac(lod),
+// lod clamped to the levels there are.
+vec4 CloudMarchModel::textureLod(const VolumeSampler& sampler, vec3 uvw, Number lod) const {
+    if (!sampler.volume) return vec4(noise::kCloudEmpty, 0.0, 0.0, 1.0);
+    const int top = sampler.mips ? static_cast<int>(sampler.mips->size()) : 0;
+    lod = glm::clamp(lod, 0.0, double(top));
+    const int level = std::min(static_cast<int>(lod), top);
+    auto at = [&](int l) { return trilinear(l == 0 ? *sampler.volume : (*sampler.mips)[l - 1], uvw); };
+    const double f = lod - level;
+    const double value = f > 0.0 && level < top ? glm::mix(at(level), at(level + 1), f) : at(level);
     return vec4(value, 0.0, 0.0, 1.0);
 }
 
@@ -116,11 +127,15 @@ double largeStepKmOf(const CloudParams& c) {
 
 CloudReference::CloudReference(const atmosphere::AtmosphereParameters& atmosphere,
                                const atmosphere::AtmosphereTables& tables, const noise::CloudVolume* volume,
-                               const noise::CubeMap* weather)
-    : atmosphere_(atmosphere), tables_(tables), volume_(volume), weather_(weather) {}
+                               const noise::CubeMap* weather, int mipLevels)
+    : atmosphere_(atmosphere),
+      tables_(tables),
+      volume_(volume),
+      volumeMips_(volume ? noise::cloudVolumeMips(*volume, mipLevels) : std::vector<noise::CloudVolume>{}),
+      weather_(weather) {}
 
 CloudProbeResult CloudReference::march(const CloudBlock& block, const CloudProbeRay& ray) const {
-    glsl::CloudMarchModel model(atmosphere_, tables_, block, volume_, weather_);
+    glsl::CloudMarchModel model(atmosphere_, tables_, block, volume_, &volumeMips_, weather_);
     // clouds/cloud_probe.comp's call.
     const glsl::CloudMarchModel::ViewMarch m =
         model.MarchView(ray.origin, ray.direction, ray.distanceKm, ray.sun, model.MarchQualityOf(0.5));

@@ -57,6 +57,7 @@ using glm::dot;
 using glm::length;
 using glm::mix;
 using glm::smoothstep;
+using glm::log2;
 
 // shaders/clouds/cloud_block.glsl's members the march reads, in double (same names).
 struct CloudBlockDouble {
@@ -78,6 +79,7 @@ CloudBlockDouble widen(const CloudBlock& block);
 // The two samplers (nullptr: CloudResources' placeholder texture).
 struct VolumeSampler {
     const noise::CloudVolume* volume = nullptr;
+    const std::vector<noise::CloudVolume>* mips = nullptr;  // levels 1, 2, ... (noise::cloudVolumeMips)
 };
 struct WeatherSampler {
     const noise::CubeMap* map = nullptr;
@@ -88,7 +90,8 @@ struct WeatherSampler {
 class CloudMarchModel : public atmosphere::glsl::Model {
 public:
     CloudMarchModel(const AtmosphereParameters& atmosphere, const atmosphere::AtmosphereTables& tables,
-                    const CloudBlock& block, const noise::CloudVolume* volume, const noise::CubeMap* weather);
+                    const CloudBlock& block, const noise::CloudVolume* volume,
+                    const std::vector<noise::CloudVolume>* volumeMips, const noise::CubeMap* weather);
 
     // clouds/cloud_block.glsl
     CloudBlockDouble clouds;
@@ -124,8 +127,11 @@ double largeStepKmOf(const CloudParams& clouds);
 // baked data: they must outlive it. `volume` and `weather` may be null for a constant layer.
 class CloudReference {
 public:
+    // `mipLevels` of the volume are read where a pixel spans voxels, as the GL texture has
+    // them (1: level 0 alone).
     CloudReference(const atmosphere::AtmosphereParameters& atmosphere, const atmosphere::AtmosphereTables& tables,
-                   const noise::CloudVolume* volume, const noise::CubeMap* weather);
+                   const noise::CloudVolume* volume, const noise::CubeMap* weather,
+                   int mipLevels = noise::kCloudVolumeMipLevels);
 
     // MarchView as cloud_probe.comp calls it, for one ray with `block` as the CloudBlock.
     CloudProbeResult march(const CloudBlock& block, const CloudProbeRay& ray) const;
@@ -137,6 +143,7 @@ private:
     atmosphere::AtmosphereParameters atmosphere_;
     const atmosphere::AtmosphereTables& tables_;
     const noise::CloudVolume* volume_;
+    std::vector<noise::CloudVolume> volumeMips_;  // the GL texture's mip levels 1, 2, 3
     const noise::CubeMap* weather_;
 };
 

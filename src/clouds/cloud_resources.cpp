@@ -40,16 +40,21 @@ void setFilters(const gl::Texture& t, GLenum wrap) {
 }
 
 // The volume as a GL texture: R16F (the cache's half floats as they are), GL_REPEAT on
-// every axis (Eq. 12's fract), trilinear.
+// every axis (Eq. 12's fract), trilinear between noise::kCloudVolumeMipLevels mip levels (read
+// where a pixel spans voxels: cloud_density.glsl, CloudVolumeLod).
 gl::Texture makeVolumeTexture(const noise::CloudVolume& volume) {
     gl::Texture t(GL_TEXTURE_3D);
     const int n = volume.size;
-    glTextureStorage3D(t.id(), 1, GL_R16F, n, n, n);
+    int levels = 1;
+    while (levels < noise::kCloudVolumeMipLevels && (n >> levels) >= 1) ++levels;
+    glTextureStorage3D(t.id(), levels, GL_R16F, n, n, n);
     const std::vector<std::uint16_t> half = noise::cloudVolumeHalf(volume);
     glPixelStorei(GL_UNPACK_ALIGNMENT, 2);
     glTextureSubImage3D(t.id(), 0, 0, 0, 0, n, n, n, GL_RED, GL_HALF_FLOAT, half.data());
     glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
     setFilters(t, GL_REPEAT);
+    glGenerateTextureMipmap(t.id());
+    glTextureParameteri(t.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
     t.label("cloud volume " + std::to_string(n) + "^3");
     return t;
 }
