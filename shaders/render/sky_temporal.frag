@@ -72,10 +72,10 @@ struct SkySample {
 };
 
 // The history at `position` (pixels, centres at +0.5) where the previous camera saw its
-// surface at `expected` m (0: sky): Catmull-Rom over 4x4 texels where all of them show that
-// surface (sharp: a bilinear read each frame would blur what the history holds over the 16
-// frames until a pixel is traced again), else bilinear over the texels that do. `weight` is
-// how much of the footprint matched (0: a disocclusion, no history).
+// surface at `expected` m (0: sky): Catmull-Rom over 4x4 texels where the 2x2 around the point
+// all show that surface (sharp: a bilinear read each frame would blur what the history holds
+// over the 16 frames until a pixel is traced again), else bilinear over those of the 2x2 that
+// do. `weight` is how much of the footprint matched (0: a disocclusion, no history).
 void readHistory(vec2 position, float expected, out SkySample history, out float samples, out float weight) {
     history = SkySample(vec3(0.0), vec3(0.0));
     samples = 0.0;
@@ -83,40 +83,37 @@ void readHistory(vec2 position, float expected, out SkySample history, out float
     vec2 base = floor(position - 0.5);
     vec2 f = position - 0.5 - base;
     ivec2 size = ivec2(frame.viewportSize);
-    vec4 cx = vec4(f.x * (-0.5 + f.x * (1.0 - 0.5 * f.x)), 1.0 + f.x * f.x * (-2.5 + 1.5 * f.x),
-                   f.x * (0.5 + f.x * (2.0 - 1.5 * f.x)), f.x * f.x * (-0.5 + 0.5 * f.x));
-    vec4 cy = vec4(f.y * (-0.5 + f.y * (1.0 - 0.5 * f.y)), 1.0 + f.y * f.y * (-2.5 + 1.5 * f.y),
-                   f.y * (0.5 + f.y * (2.0 - 1.5 * f.y)), f.y * f.y * (-0.5 + 0.5 * f.y));
     bool sharp = true;
-    SkySample cubic = SkySample(vec3(0.0), vec3(0.0));
-    float cubicSamples = 0.0;
-    for (int j = 0; j < 4; ++j) {
-        for (int i = 0; i < 4; ++i) {
-            ivec2 tap = ivec2(base) + ivec2(i - 1, j - 1);
-            bool inside = all(greaterThanEqual(tap, ivec2(0))) && all(lessThan(tap, size));
-            float alike = inside ? distanceSimilarity(expected, texelFetch(historySurfaceDistance, tap, 0).r) : 0.0;
-            if (alike < 0.5) {
-                sharp = false;
-                if (i == 0 || i == 3 || j == 0 || j == 3) continue;
-            }
-            vec4 s = texelFetch(historyInscatter, tap, 0);
-            vec3 t = texelFetch(historyTransmittance, tap, 0).rgb;
-            float c = cx[i] * cy[j];
-            cubic.inscatter += c * s.rgb;
-            cubic.transmittance += c * t;
-            cubicSamples += c * s.a;
-            if (i == 1 || i == 2) {
-                if (j == 1 || j == 2) {
-                    float b = (i == 1 ? 1.0 - f.x : f.x) * (j == 1 ? 1.0 - f.y : f.y) * alike;
-                    history.inscatter += b * s.rgb;
-                    history.transmittance += b * t;
-                    samples += b * s.a;
-                    weight += b;
-                }
+    for (int i = 0; i < 4; ++i) {  // the 2x2 around the point: bilinear, with the surface check
+        ivec2 tap = ivec2(base) + ivec2(i & 1, i >> 1);
+        bool inside = all(greaterThanEqual(tap, ivec2(0))) && all(lessThan(tap, size));
+        float alike = inside ? distanceSimilarity(expected, texelFetch(historySurfaceDistance, tap, 0).r) : 0.0;
+        sharp = sharp && alike >= 0.5;
+        if (alike <= 0.0) continue;
+        float b = ((i & 1) != 0 ? f.x : 1.0 - f.x) * ((i >> 1) != 0 ? f.y : 1.0 - f.y) * alike;
+        vec4 s = texelFetch(historyInscatter, tap, 0);
+        history.inscatter += b * s.rgb;
+        history.transmittance += b * texelFetch(historyTransmittance, tap, 0).rgb;
+        samples += b * s.a;
+        weight += b;
+    }
+    if (sharp) {  // Catmull-Rom over the 4x4, the outer ring clamped to the frame's edge
+        vec4 cx = vec4(f.x * (-0.5 + f.x * (1.0 - 0.5 * f.x)), 1.0 + f.x * f.x * (-2.5 + 1.5 * f.x),
+                       f.x * (0.5 + f.x * (2.0 - 1.5 * f.x)), f.x * f.x * (-0.5 + 0.5 * f.x));
+        vec4 cy = vec4(f.y * (-0.5 + f.y * (1.0 - 0.5 * f.y)), 1.0 + f.y * f.y * (-2.5 + 1.5 * f.y),
+                       f.y * (0.5 + f.y * (2.0 - 1.5 * f.y)), f.y * f.y * (-0.5 + 0.5 * f.y));
+        SkySample cubic = SkySample(vec3(0.0), vec3(0.0));
+        float cubicSamples = 0.0;
+        for (int j = 0; j < 4; ++j) {
+            for (int i = 0; i < 4; ++i) {
+                ivec2 tap = clamp(ivec2(base) + ivec2(i - 1, j - 1), ivec2(0), size - 1);
+                float c = cx[i] * cy[j];
+                vec4 s = texelFetch(historyInscatter, tap, 0);
+                cubic.inscatter += c * s.rgb;
+                cubic.transmittance += c * texelFetch(historyTransmittance, tap, 0).rgb;
+                cubicSamples += c * s.a;
             }
         }
-    }
-    if (sharp) {
         history = SkySample(max(cubic.inscatter, vec3(0.0)), clamp(cubic.transmittance, vec3(0.0), vec3(1.0)));
         samples = cubicSamples;
         weight = 1.0;
@@ -145,7 +142,7 @@ void main() {
     bool traced = false;
     SkySample fresh;
     float boxSamples = 0.0;  // samples in the box
-    float disagreement = 0.0;  // their summed relative change since the previous frame
+    float disagreement = 0.0;  // their summed relative change of S since the previous frame
     vec3 loS = vec3(1.0e30), hiS = vec3(-1.0e30), loT = vec3(1.0e30), hiT = vec3(-1.0e30);
     for (int dy = -1; dy <= 1; ++dy) {
         for (int dx = -1; dx <= 1; ++dx) {
@@ -175,10 +172,8 @@ void main() {
                 boxSamples += 1.0;
                 // how far the sample has moved from what the history held at its pixel
                 if (frame.historyValid > 0.5) {
-                    vec3 before = texelFetch(historyInscatter, q, 0).rgb;
-                    float now = luminance(here.inscatter), then = luminance(before);
-                    disagreement += abs(now - then) / max(max(now, then), 1.0e-6) +
-                                    abs(luminance(here.transmittance) - luminance(texelFetch(historyTransmittance, q, 0).rgb));
+                    float now = luminance(here.inscatter), then = luminance(texelFetch(historyInscatter, q, 0).rgb);
+                    disagreement += abs(now - then) / max(max(now, then), 1.0e-6);
                 }
                 loS = min(loS, here.inscatter);
                 hiS = max(hiS, here.inscatter);
