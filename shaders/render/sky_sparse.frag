@@ -16,10 +16,11 @@ layout(location = 0) out vec4 outInscatter;      // S, reprojection distance km
 layout(location = 1) out vec4 outTransmittance;  // T, the clouds' opacity
 
 void main() {
-    ivec2 pixel = sparseTracedPixel(ivec2(gl_FragCoord.xy));
+    ivec2 block = ivec2(gl_FragCoord.xy);
+    ivec2 pixel = sparseTracedPixel(block);
     vec2 ndc = (vec2(pixel) + 0.5) * frame.inverseViewportSize * 2.0 - 1.0;
     float distance = texelFetch(surfaceDistance, pixel, 0).r;
-    AirMarch a = marchAir(worldRayFromNdc(ndc), distance, sparseJitter(pixel));
+    AirMarch a = marchAir(worldRayFromNdc(ndc), distance, sparseJitter(block));
     outInscatter = vec4(min(a.inscatter, vec3(MAX_HDR_RADIANCE)), a.reprojectionKm);
     outTransmittance = vec4(a.transmittance, a.cloudOpacity);
 }

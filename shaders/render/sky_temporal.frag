@@ -17,10 +17,11 @@
 //    same surface, bilinear over those that do elsewhere, and rejected where none does (a
 //    disocclusion);
 //  - when anything moved (the camera, the clock: frame.stillSincePrevious 0), the history is
-//    clamped to the box (a cloud cannot be dragged where this frame's samples say there is
-//    none, a sky cannot stay blue where they say it is black) and the traced pixel takes its
-//    new sample; when nothing moved, nothing is clamped and the traced pixel adds its sample to
-//    a running mean of up to 16 (each visit with another jitter), so a still frame converges.
+//    clamped to the box where the point moved or the samples around changed (a cloud cannot be
+//    dragged where this frame's samples say there is none, a sky cannot stay blue where they say
+//    it is black), a moving pixel takes half of the spatial estimate, and the traced pixel takes
+//    its new sample; when nothing moved, nothing is clamped and the traced pixel adds its sample
+//    to a running mean of up to 16 (each visit with another jitter), so a still frame converges.
 //  - the other pixels keep the history, or the spatial estimate where there is none.
 // The history is the frame's only state; it is dropped on a jump, a resize or a parameter
 // change (frame.historyValid 0), and then this frame is the spatial estimate alone.
@@ -46,11 +47,12 @@ layout(location = 2) out vec4 outSkyTransmittance;  // T, reprojection distance 
 
 const float MAX_HISTORY_SAMPLES = 15.0;  // a still pixel's running mean: up to 16 samples
 const float BOX_MARGIN = 0.25;           // the box widened by this share of its size on each side
-// Where the history moved by 1 to 8 pixels in a frame it leans on the spatial estimate, up to
-// half of it: a fast pixel's history has been resampled and clamped many times over.
-const float FAST_BLEND = 0.5;
-const float FAST_FROM_PX = 1.0;
-const float FAST_TO_PX = 8.0;
+// Where the point moved by more than half a pixel, half of the spatial estimate goes into the
+// history each frame: a moving pixel's history has been resampled and clamped many times over
+// until its next visit, and a cloud's edge left behind by a box that spans cloud and sky fades
+// in a few frames instead of sixteen (measured along the twilight path, frames 200-250 at
+// 320x180: mean error 15.5 % without, 9.9 % with; a quarter: 10.7 %, three quarters: 9.8 %).
+const float SPATIAL_SHARE_MOVING = 0.5;
 
 // How alike two surface distances (m, 0: no surface) are for sharing a sample: 0 for sky
 // against surface, 1 for sky against sky, and for two surfaces a Gaussian in the logarithm of
@@ -233,7 +235,7 @@ void main() {
         history.transmittance = mix(history.transmittance, clamp(history.transmittance, loT, hiT), clampAmount);
         samples = min(floor(samples + 0.5), mix(MAX_HISTORY_SAMPLES, 0.0, moving));
         result = history;
-        float toSpatial = FAST_BLEND * smoothstep(FAST_FROM_PX, FAST_TO_PX, motion);
+        float toSpatial = SPATIAL_SHARE_MOVING * moving * smoothstep(0.05, 0.5, motion);
         result.inscatter = mix(result.inscatter, spatial.inscatter, toSpatial);
         result.transmittance = mix(result.transmittance, spatial.transmittance, toSpatial);
         if (traced) {

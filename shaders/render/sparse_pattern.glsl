@@ -18,10 +18,11 @@ ivec2 sparseTracedPixel(ivec2 block) {
     return min(block * SPARSE_BLOCK + sparseOffset(frame.frameIndex), ivec2(frame.viewportSize) - 1);
 }
 
-// Where in each step the traced pixel samples, in [0, 1): interleaved gradient noise over
-// the pixels (render/sky_air.glsl), moved by the golden ratio at each visit of the pixel
-// (Roberts' R1 sequence), so the visits of one pixel spread evenly over the step.
-float sparseJitter(ivec2 pixel) {
-    int visit = frame.frameIndex / SPARSE_CYCLE;
-    return fract(interleavedGradientNoise(pixel) + 0.6180339887 * float(visit % 1024));
+// Where in each step the traced pixel of `block` samples, in [0, 1): interleaved gradient
+// noise over the blocks (render/sky_air.glsl; on the block lattice, where its pattern is the
+// intended one: evaluated at the traced pixels, four apart, it aliases into diagonal bands that
+// show in dense cloud), moved by the golden ratio every frame (Roberts' R1), so the 16 pixels
+// of a block, traced in 16 frames, sample 16 well-spread depths, and each pixel's visits differ.
+float sparseJitter(ivec2 block) {
+    return fract(interleavedGradientNoise(block) + 0.6180339887 * float(frame.frameIndex % 4096));
 }
