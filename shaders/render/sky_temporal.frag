@@ -137,6 +137,8 @@ void main() {
     ivec2 blocks = textureSize(sparseInscatter, 0);
     SkySample spatial = SkySample(vec3(0.0), vec3(0.0));
     float weightSum = 0.0;
+    SkySample broad = SkySample(vec3(0.0), vec3(0.0));
+    float broadSum = 0.0;
     SkySample best;
     float bestWeight = -1.0;
     float reprojectionKm = 0.0;
@@ -170,6 +172,10 @@ void main() {
             spatial.inscatter += tent * alike * here.inscatter;
             spatial.transmittance += tent * alike * here.transmittance;
             weightSum += tent * alike;
+            float wide = max(1.0 - 0.5 * offset.x, 0.0) * max(1.0 - 0.5 * offset.y, 0.0) * alike;  // a tent 8 px wide
+            broad.inscatter += wide * here.inscatter;
+            broad.transmittance += wide * here.transmittance;
+            broadSum += wide;
             if (alike > 0.1) {
                 boxSamples += 1.0;
                 // how far the sample has moved from what the history held at its pixel
@@ -187,7 +193,10 @@ void main() {
     if (weightSum > 1.0e-3) {
         spatial.inscatter /= weightSum;
         spatial.transmittance /= weightSum;
-    } else {
+    } else if (broadSum > 1.0e-3) {  // no alike sample within four pixels: those within eight
+        spatial.inscatter = broad.inscatter / broadSum;
+        spatial.transmittance = broad.transmittance / broadSum;
+    } else {  // none alike at all (a thin surface between the samples): the nearest best match
         spatial = best;
     }
     // The samples are four pixels apart: what lies between them may reach past their range.
