@@ -8,6 +8,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 #include <string>
 
 #include <stb_image.h>
@@ -42,6 +43,22 @@ heading_deg = 90
 pitch_deg = 20
 fov_deg = 40
 )";
+
+// A path file's text: keyframes of time, latitude, longitude, altitude, heading, pitch, sun
+// elevation and sun azimuth, in the units of assets/paths (camera_path.h).
+struct Key {
+    double time_s, latitude_deg, longitude_deg, altitude_m, heading_deg, pitch_deg, sun_elevation_deg, sun_azimuth_deg;
+};
+std::string pathToml(const std::string& description, double fps, const std::vector<Key>& keys) {
+    std::ostringstream text;
+    text << "description = \"" << description << "\"\nfps = " << fps << "\n";
+    for (const Key& k : keys)
+        text << "[[keyframe]]\ntime_s = " << k.time_s << "\nlatitude_deg = " << k.latitude_deg
+             << "\nlongitude_deg = " << k.longitude_deg << "\naltitude_m = " << k.altitude_m
+             << "\nheading_deg = " << k.heading_deg << "\npitch_deg = " << k.pitch_deg
+             << "\nsun_elevation_deg = " << k.sun_elevation_deg << "\nsun_azimuth_deg = " << k.sun_azimuth_deg << "\n";
+    return text.str();
+}
 
 // A climb from 2 m to 400 km across five keyframes, turning, with a sun.
 CameraPathFile climb() {
@@ -260,27 +277,8 @@ protected:
 };
 
 TEST_F(RenderPathTest, RendersNumberedFramesOfAMovingCamera) {
-    std::ofstream(dir / "tiny.toml") << R"(description = "tiny"
-fps = 1
-[[keyframe]]
-time_s = 0
-latitude_deg = 20
-longitude_deg = 10
-altitude_m = 400000
-heading_deg = 90
-pitch_deg = -20
-sun_elevation_deg = 60
-sun_azimuth_deg = 180
-[[keyframe]]
-time_s = 10
-latitude_deg = 20
-longitude_deg = 10
-altitude_m = 400000
-heading_deg = 150
-pitch_deg = -50
-sun_elevation_deg = 60
-sun_azimuth_deg = 180
-)";
+    std::ofstream(dir / "tiny.toml") << pathToml("tiny", 1, {{0, 20, 10, 400000, 90, -20, 60, 180},
+                                                           {10, 20, 10, 400000, 150, -50, 60, 180}});
     const auto r = test::runCommand(
         planet("render --path tiny.toml --frames 3 --size 32x18 --tables reduced --out seq/f_%04d.png "
                "--out seq/f_%02d.exr"));
@@ -326,27 +324,8 @@ TEST_F(RenderPathTest, TheExplorerPlaysAPathAsRenderRendersIt) {
     // `explore --path` shows one path frame per window frame: with the panels hidden, its
     // third window frame is render --path's frame 2, pixel for pixel (the same camera, sun,
     // clock and frame history). Needs a window: Xvfb.
-    std::ofstream(dir / "turn.toml") << R"(description = "turn"
-fps = 4
-[[keyframe]]
-time_s = 0
-latitude_deg = 20
-longitude_deg = 10
-altitude_m = 400000
-heading_deg = 90
-pitch_deg = -20
-sun_elevation_deg = 40
-sun_azimuth_deg = 180
-[[keyframe]]
-time_s = 2
-latitude_deg = 22
-longitude_deg = 12
-altitude_m = 300000
-heading_deg = 150
-pitch_deg = -40
-sun_elevation_deg = 50
-sun_azimuth_deg = 190
-)";
+    std::ofstream(dir / "turn.toml") << pathToml("turn", 4, {{0, 20, 10, 400000, 90, -20, 40, 180},
+                                                           {2, 22, 12, 300000, 150, -40, 50, 190}});
     const auto render = test::runCommand(planet("render --path turn.toml --size 160x90 --out f_%d.png"));
     ASSERT_EQ(render.exitCode, 0) << render.output;
     const auto r = test::runCommand("cd '" + dir.string() + "' && XDG_CONFIG_HOME='" + (dir / "config").string() +

@@ -23,7 +23,7 @@ layout(binding = UNIT_SURFACE_DISTANCE) uniform sampler2D surfaceDistance;
 
 layout(location = 0) out vec4 outRadiance;
 layout(location = 1) out vec4 outSkyInscatter;      // S, samples in the history (1: this one)
-layout(location = 2) out vec4 outSkyTransmittance;  // T, reprojection distance km
+layout(location = 2) out vec4 outSkyTransmittance;  // T, 1
 
 void main() {
     ivec2 pixel = ivec2(gl_FragCoord.xy);
@@ -39,7 +39,7 @@ void main() {
         AirMarch a = marchAir(dir, distance, interleavedGradientNoise(pixel));
         radiance = throughAir(dir, surface, distance, a.transmittance, a.inscatter);
         outSkyInscatter = vec4(min(a.inscatter, vec3(MAX_HDR_RADIANCE)), 1.0);
-        outSkyTransmittance = vec4(a.transmittance, a.reprojectionKm);
+        outSkyTransmittance = vec4(a.transmittance, 1.0);
     }
     outRadiance = vec4(min(radiance, vec3(MAX_HDR_RADIANCE)), 1.0);
 }

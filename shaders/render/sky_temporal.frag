@@ -43,7 +43,7 @@ layout(binding = UNIT_HISTORY_SURFACE_DISTANCE) uniform sampler2D historySurface
 
 layout(location = 0) out vec4 outRadiance;
 layout(location = 1) out vec4 outSkyInscatter;      // S, samples in the history
-layout(location = 2) out vec4 outSkyTransmittance;  // T, reprojection distance km
+layout(location = 2) out vec4 outSkyTransmittance;  // T, 1
 
 const float MAX_HISTORY_SAMPLES = 15.0;  // a still pixel's running mean: up to 16 samples
 const float BOX_MARGIN = 0.25;           // the box widened by this share of its size on each side
@@ -153,17 +153,19 @@ void main() {
             ivec2 b = clamp(block + ivec2(dx, dy), ivec2(0), blocks - 1);
             ivec2 q = sparseTracedPixel(b);
             vec4 s = texelFetch(sparseInscatter, b, 0);
-            SkySample here = SkySample(s.rgb, texelFetch(sparseTransmittance, b, 0).rgb);
+            vec4 t = texelFetch(sparseTransmittance, b, 0);
+            SkySample here = SkySample(s.rgb, t.rgb);
             float alike = distanceSimilarity(distance, texelFetch(surfaceDistance, q, 0).r);
             vec2 offset = abs(vec2(q - pixel)) / float(SPARSE_BLOCK);
             float tent = max(1.0 - offset.x, 0.0) * max(1.0 - offset.y, 0.0);
-            // the best match: most alike, then nearest
+            // the best match: most alike, then nearest (the traced pixel itself, where it is one:
+            // its reprojection distance is the pixel's own)
             float rank = alike - 1.0e-3 * (offset.x + offset.y);
             if (rank > bestWeight) {
                 bestWeight = rank;
                 best = here;
                 reprojectionKm = s.a;
-                cloudy = texelFetch(sparseTransmittance, b, 0).a > CLOUDY_OPACITY;
+                cloudy = t.a > CLOUDY_OPACITY;
             }
             if (q == pixel) {
                 traced = true;
@@ -205,10 +207,6 @@ void main() {
     hiS += marginS;
     loT -= marginT;
     hiT += marginT;
-    if (traced) {
-        reprojectionKm = texelFetch(sparseInscatter, block, 0).a;
-        cloudy = texelFetch(sparseTransmittance, block, 0).a > CLOUDY_OPACITY;
-    }
 
     // The history at this pixel's point in the previous frame: a cloud moved with the wind.
     SkySample history = SkySample(vec3(0.0), vec3(0.0));
@@ -264,5 +262,5 @@ void main() {
     outRadiance = vec4(min(throughAir(dir, surface, distance, result.transmittance, result.inscatter),
                            vec3(MAX_HDR_RADIANCE)), 1.0);
     outSkyInscatter = vec4(result.inscatter, min(samples, MAX_HISTORY_SAMPLES));
-    outSkyTransmittance = vec4(result.transmittance, reprojectionKm);
+    outSkyTransmittance = vec4(result.transmittance, 1.0);
 }

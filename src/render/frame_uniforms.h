@@ -54,7 +54,8 @@ static_assert(offsetof(FrameUniforms, planetCenterFromCamera) == 320 && offsetof
 struct PreviousFrame {
     Camera camera;
     glm::ivec2 size{0, 0};
-    double time_s = 0.0;  // the scene's clock
+    double time_s = 0.0;              // the scene's clock
+    glm::dvec3 sunDirection{0.0};     // the scene's sun
 };
 
 // Per-frame uniforms for a scene seen by a camera at a frame size, formed in double and

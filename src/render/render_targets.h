@@ -10,7 +10,7 @@
 //             ocean, which reads them while drawing over them
 //   hdr       RGBA16F linear radiance arriving at the camera (what `render --out x.exr` writes),
 //             with the sky passes' T and S beside it (skyInscatter: S, samples in the temporal
-//             history; skyTransmittance: T, reprojection distance km; render/sky_temporal.frag)
+//             history; skyTransmittance: T; render/sky_temporal.frag)
 //   sparse    a quarter of the size on each side (rounded up): the reduced-rate march's
 //             samples, one pixel of each 4x4 block (render/sky_sparse.frag)
 //   ldr       RGBA8 tone-mapped sRGB bytes (what the window shows and PNGs hold)
@@ -39,14 +39,14 @@ struct FrameHistory {
     gl::Texture radiance{GL_TEXTURE_2D};         // RGBA16F, the previous frame's hdr
     gl::Texture surfaceDistance{GL_TEXTURE_2D};  // R32F, the previous frame's surface distance
     gl::Texture skyInscatter{GL_TEXTURE_2D};     // RGBA16F, its sky S and sample count
-    gl::Texture skyTransmittance{GL_TEXTURE_2D}; // RGBA16F, its sky T and reprojection distance
+    gl::Texture skyTransmittance{GL_TEXTURE_2D}; // RGBA16F, its sky T
 };
 
 // The reduced-rate march's samples (a quarter of the frame's size on each side).
 struct SparseSky {
     glm::ivec2 size{0, 0};
     gl::Texture inscatter{GL_TEXTURE_2D};      // RGBA16F: S, reprojection distance km
-    gl::Texture transmittance{GL_TEXTURE_2D};  // RGBA16F: T
+    gl::Texture transmittance{GL_TEXTURE_2D};  // RGBA16F: T, the clouds' opacity
     gl::Framebuffer framebuffer;
 };
 

@@ -195,8 +195,9 @@ bool Renderer::historyUsable(const Scene& scene, const Camera& camera, bool resi
     if (moved > std::max(kJumpMinimumM, kJumpFractionOfAltitude * altitude)) return false;
     if (glm::dot(camera.forward(), before.forward()) < kJumpTurnCos) return false;
     if (camera.fovY_rad != before.fovY_rad) return false;
-    if (previousUnderWater_ != (cameraDepthBelowSeaM(scene, camera) > 0.0)) return false;
-    if (glm::dot(scene.sunDirection(), previousSun_) < kSunJumpCos) return false;
+    // Across the sea surface the history holds the water body, not the sky's T and S.
+    if ((cameraDepthBelowSeaM(scene, before) > 0.0) != (cameraDepthBelowSeaM(scene, camera) > 0.0)) return false;
+    if (glm::dot(scene.sunDirection(), previous_->sunDirection) < kSunJumpCos) return false;
     return sceneKey_ == previousSceneKey_;
 }
 
@@ -268,9 +269,7 @@ void Renderer::render(const Scene& scene, const Camera& camera, glm::ivec2 size,
     }
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     targets_.keepHistory();
-    previous_ = PreviousFrame{camera, size, scene.time_s};
-    previousUnderWater_ = cameraDepthBelowSeaM(scene, camera) > 0.0;
-    previousSun_ = scene.sunDirection();
+    previous_ = PreviousFrame{camera, size, scene.time_s, scene.sunDirection()};
     previousSceneKey_ = sceneKey_;
     ++frameIndex_;
     present_ = nullptr;

@@ -176,8 +176,6 @@ private:
     int frameIndex_ = 0;
     bool fullRateOnReset_ = true;
     std::optional<PreviousFrame> previous_;  // the frame the history holds
-    bool previousUnderWater_ = false;        // its camera was under the sea (no sky T, S in the history)
-    glm::dvec3 previousSun_{0.0};            // its sun direction
     std::string previousSceneKey_;           // its parameters (presetToToml)
     std::string sceneKey_;                   // this frame's
     PrepareReport lastPrepare_;
