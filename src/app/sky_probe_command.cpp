@@ -35,7 +35,6 @@
 // The whole input is checked before any work: a malformed row stops the command
 // naming its line, and nothing is written.
 #include <algorithm>
-#include <charconv>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -47,6 +46,7 @@
 
 #include "app/commands.h"
 #include "app/session.h"
+#include "app/sky_probe_cases.h"
 #include "atmosphere/parameters.h"
 #include "atmosphere/precompute_gpu.h"
 #include "atmosphere/reference_tables.h"
@@ -72,93 +72,14 @@ using namespace atmosphere;
 
 namespace {
 
-constexpr const char* kInputColumns[4] = {"altitude_m", "sun_zenith_deg", "view_zenith_deg", "view_azimuth_deg"};
 constexpr const char* kOutputColumns = "radiance_r,radiance_g,radiance_b,transmittance_r,transmittance_g,transmittance_b";
 constexpr int kRowsPerDispatch = 1 << 16;  // GPU rows per chunk (progress and watchdog granularity)
 constexpr std::size_t kProgressRows = 100000;  // report progress for inputs at least this long
-
-struct ProbeRow {
-    std::string text[4];   // the input fields as written, echoed to the output
-    double altitudeM, sunZenithDeg, viewZenithDeg, viewAzimuthDeg;
-};
 
 struct ProbeResult {
     glm::dvec3 radiance;       // W m^-2 sr^-1 nm^-1
     glm::dvec3 transmittance;
 };
-
-std::string trim(std::string_view s) {
-    const std::size_t a = s.find_first_not_of(" \t\r");
-    if (a == std::string_view::npos) return {};
-    const std::size_t b = s.find_last_not_of(" \t\r");
-    return std::string(s.substr(a, b - a + 1));
-}
-
-std::vector<std::string> splitFields(const std::string& line) {
-    std::vector<std::string> fields;
-    std::size_t start = 0;
-    while (true) {
-        const std::size_t comma = line.find(',', start);
-        fields.push_back(trim(std::string_view(line).substr(start, comma == std::string::npos ? std::string::npos
-                                                                                              : comma - start)));
-        if (comma == std::string::npos) return fields;
-        start = comma + 1;
-    }
-}
-
-// The CSV, checked row by row; throws InputError naming file, line and column.
-std::vector<ProbeRow> readCases(const std::string& file) {
-    const std::string text = readFile(file);
-    std::istringstream in(text);
-    std::string line;
-    int lineNo = 0;
-    std::string expectedHeader;
-    for (const char* c : kInputColumns) expectedHeader += std::string(expectedHeader.empty() ? "" : ",") + c;
-
-    bool sawHeader = false;
-    std::vector<ProbeRow> rows;
-    struct Range {
-        double lo, hi;
-        const char* unit;
-    };
-    const Range ranges[4] = {{0.0, 1e9, "m"}, {0.0, 180.0, "deg"}, {0.0, 180.0, "deg"}, {-360.0, 360.0, "deg"}};
-    while (std::getline(in, line)) {
-        ++lineNo;
-        if (trim(line).empty()) continue;
-        const std::vector<std::string> fields = splitFields(line);
-        if (!sawHeader) {
-            std::string header;
-            for (const std::string& f : fields) header += (header.empty() ? "" : ",") + f;
-            if (header != expectedHeader)
-                throw InputError(file, lineNo, "", "expected the header '" + expectedHeader + "', found '" + trim(line) + "'");
-            sawHeader = true;
-            continue;
-        }
-        if (fields.size() != 4)
-            throw InputError(file, lineNo, "",
-                             "expected 4 columns (" + expectedHeader + "), found " + std::to_string(fields.size()));
-        ProbeRow row{};
-        double* values[4] = {&row.altitudeM, &row.sunZenithDeg, &row.viewZenithDeg, &row.viewAzimuthDeg};
-        for (int c = 0; c < 4; ++c) {
-            const std::string& f = fields[static_cast<std::size_t>(c)];
-            double v = 0.0;
-            const auto [end, ec] = std::from_chars(f.data(), f.data() + f.size(), v);
-            if (f.empty() || ec != std::errc() || end != f.data() + f.size() || !std::isfinite(v))
-                throw InputError(file, lineNo, kInputColumns[c], "'" + f + "' is not a number");
-            if (!(v >= ranges[c].lo && v <= ranges[c].hi)) {
-                char message[160];
-                std::snprintf(message, sizeof message, "value %s is out of range [%g, %g] %s", f.c_str(), ranges[c].lo,
-                              ranges[c].hi, ranges[c].unit);
-                throw InputError(file, lineNo, kInputColumns[c], message);
-            }
-            *values[c] = v;
-            row.text[c] = f;
-        }
-        rows.push_back(std::move(row));
-    }
-    if (!sawHeader) throw InputError(file, 0, "", "empty file: expected the header '" + expectedHeader + "'");
-    return rows;
-}
 
 // The row's geometry in the local frame (see the file header), km and unit vectors.
 struct Rays {
@@ -390,7 +311,7 @@ std::string csvNumber(double v) {
 int runSkyProbe(const SkyProbeOptions& options) {
     if (options.in.empty()) throw InputError("--in: give the input CSV");
     if (options.out.empty()) throw InputError("--out: give the output CSV");
-    const std::vector<ProbeRow> rows = readCases(options.in);
+    const std::vector<ProbeRow> rows = readProbeCases(options.in);
     checkOutputsWritable({options.out});
     const DataPaths paths = findDataPaths(options.common.root);
     const Session session = loadSession(paths, options.common.preset, options.common.view);
@@ -407,7 +328,7 @@ int runSkyProbe(const SkyProbeOptions& options) {
         options.reference ? probeOnCpu(rows, scene, options) : probeOnGpu(rows, scene, options, paths);
 
     std::string csv;
-    for (const char* c : kInputColumns) csv += std::string(c) + ",";
+    for (const char* c : kProbeInputColumns) csv += std::string(c) + ",";
     csv += std::string(kOutputColumns) + "\n";
     for (std::size_t i = 0; i < rows.size(); ++i) {
         for (const std::string& field : rows[i].text) csv += field + ",";
