@@ -91,6 +91,18 @@ TEST_F(AtmosphereCli, PrecomputeTimesStepsAndCachesTables) {
     EXPECT_TRUE(contains(rebuilt.output, "total")) << rebuilt.output;
     const auto again = runCommand(planet("precompute --tables reduced --cache c"));
     EXPECT_TRUE(contains(again.output, "cache hit")) << again.output;
+
+    // A folder where a file should be (this was std::bad_alloc, in every later run): the entry
+    // is refused naming it and rebuilt in its place.
+    fs::remove(cached / "key.txt");
+    fs::create_directories(cached / "key.txt");
+    const auto healed = runCommand(planet("precompute --tables reduced --cache c"));
+    ASSERT_EQ(healed.exitCode, 0) << healed.output;
+    EXPECT_TRUE(contains(healed.output, "key.txt") && contains(healed.output, "folder")) << healed.output;
+    EXPECT_TRUE(fs::is_regular_file(cached / "key.txt"));
+    // The tables need no continents: nothing baked beside the cache, or in the default place.
+    EXPECT_FALSE(fs::exists(dir / "continents"));
+    EXPECT_FALSE(fs::exists(dir / "cache" / "continents"));
 }
 
 TEST_F(AtmosphereCli, SkyProbeGpuMatchesCpuReference) {

@@ -6,6 +6,7 @@
 // test_continents.cpp). Tier (d) of STYLE habit 9.
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -215,6 +216,38 @@ TEST_F(CacheEntry, AStaleTemporaryFolderIsNotTakenForAnEntry) {
     EXPECT_EQ(refusal(), "");
     EXPECT_FALSE(fs::exists(own));
     EXPECT_FALSE(fs::exists(entry / "junk.exr"));
+}
+
+TEST_F(CacheEntry, AFolderWhereAFileShouldBeIsRefusedAndHealedByTheNextWrite) {
+    // A folder opens as a stream on Linux with a size of 2^63: this was std::bad_alloc, and
+    // every later run stopped on it.
+    for (const std::string file : {"key.txt", "rgba.exr"}) {
+        write();
+        fs::remove(entry / file);
+        fs::create_directories(entry / file / "inside");
+        EXPECT_TRUE(contains(refusal(), file) && contains(refusal(), "folder")) << refusal();
+        write();  // what loadOrMake does after a refusal
+        EXPECT_EQ(refusal(), "") << file;
+        EXPECT_TRUE(fs::is_regular_file(entry / file));
+    }
+}
+
+TEST_F(CacheEntry, WritingAnEntryClearsWhatDeadWritersLeft) {
+    fs::create_directories(root);
+    // A process id that is not running (beyond Linux's pid_max), another that is (ours, as a
+    // neighbour writer would be), and a running one's folder older than a day.
+    const fs::path dead = root / "aaaa.tmp99999999", deadOld = root / "bbbb.old99999999";
+    const fs::path live = root / ("cccc.tmp" + std::to_string(::getppid()));
+    const fs::path ancient = root / ("dddd.tmp" + std::to_string(::getppid()));
+    for (const fs::path& p : {dead, deadOld, live, ancient}) fs::create_directories(p / "x");
+    writeFileAtomic(dead / "half.exr", "half");
+    fs::last_write_time(ancient, fs::file_time_type::clock::now() - std::chrono::hours(25));
+    write();
+    EXPECT_FALSE(fs::exists(dead));
+    EXPECT_FALSE(fs::exists(deadOld));
+    EXPECT_TRUE(fs::exists(live));  // it may be writing now
+    EXPECT_FALSE(fs::exists(ancient));  // its process id came back for another program
+    EXPECT_EQ(refusal(), "");
 }
 
 TEST_F(CacheEntry, AFailedWriteLeavesNothingBehind) {

@@ -93,6 +93,51 @@ TEST_F(CliTest, BadArgumentsFailWithAMessageAndWriteNothing) {
     EXPECT_FALSE(fs::exists(dir / "a.png"));
 }
 
+TEST_F(CliTest, ParserErrorsHaveThePrefixAndExitStatusOfEveryOtherError) {
+    // CLI11's own exit codes were 104-114, without "planet: error:".
+    const char* cases[][2] = {
+        {"render --time nan --out a.png", "--time"},
+        {"render --tables huge --out a.png", "--tables"},
+        {"render --bogus --out a.png", "--bogus"},
+        {"render --exposure '' --out a.png", "--exposure"},
+        {"bake --size 15", "--size"},
+        {"bake --seed -1", "--seed"},
+        {"bake --preview a.jpg", ".png"},
+        {"bench --plot a.jpg", ".png"},
+        {"explore --screenshot a.jpg", ".png"},
+    };
+    for (const auto& [args, message] : cases) {
+        const auto r = runCommand(planet(args));
+        EXPECT_EQ(r.exitCode, 1) << args;
+        EXPECT_TRUE(r.output.starts_with("planet: error: ")) << args << ":\n" << r.output;
+        EXPECT_TRUE(contains(r.output, message)) << args << ":\n" << r.output;
+    }
+    for (const auto& entry : fs::directory_iterator(dir))
+        EXPECT_EQ(entry.path().filename(), "cache") << "written: " << entry.path();  // the shared cloud cache's link
+    EXPECT_EQ(runCommand(planet("render --help")).exitCode, 0);
+}
+
+TEST_F(CliTest, AFolderGivenForAFileIsNamedAsSuchAndNothingIsLeftBeside) {
+    fs::create_directories(dir / "out.png");
+    fs::create_directories(dir / "preset.toml");
+    fs::create_directories(dir / "cases.csv");
+    const char* cases[][2] = {
+        {"render --size 16x9 --out out.png", "'out.png': it is a folder"},
+        {"render --size 16x9 --preset preset.toml --out a.png", "'preset.toml': it is a folder"},
+        {"render --size 16x9 --path preset.toml --out f_%02d.png", "'preset.toml': it is a folder"},
+        {"sky-probe --in cases.csv --out a.csv", "cases.csv': it is a folder"},
+    };
+    for (const auto& [args, message] : cases) {
+        const auto r = runCommand(planet(args));
+        EXPECT_EQ(r.exitCode, 1) << args;
+        EXPECT_TRUE(contains(r.output, message)) << args << ":\n" << r.output;
+    }
+    std::vector<std::string> left;
+    for (const auto& entry : fs::directory_iterator(dir)) left.push_back(entry.path().filename().string());
+    std::sort(left.begin(), left.end());
+    EXPECT_EQ(left, (std::vector<std::string>{"cache", "cases.csv", "out.png", "preset.toml"}));  // no write-test probe
+}
+
 TEST_F(CliTest, BadPresetNamesFileLineAndField) {
     std::ofstream(dir / "bad.toml") << "name = \"bad\"\n[planet]\nradius_km = -5.0\n";
     const auto r = runCommand(planet("render --preset bad.toml --size 32x18 --out a.png"));

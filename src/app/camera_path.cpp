@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "util/file_util.h"
 #include "app/place_keys.h"
 #include "scene/scene.h"
 
@@ -170,7 +171,12 @@ CameraPathFile loadCameraPath(const std::filesystem::path& path, std::vector<std
 fs::path resolveCameraPath(const std::string& nameOrPath, const fs::path& pathsDir) {
     std::error_code ec;
     const fs::path direct(nameOrPath);
-    if (!nameOrPath.empty() && fs::is_regular_file(direct, ec)) return direct;
+    if (!nameOrPath.empty() && fs::exists(direct, ec)) {
+        // Given as a path: say why it cannot be read rather than that no such name exists.
+        if (const std::string why = whyNotReadableFile(direct); !why.empty())
+            throw InputError("", 0, "", "camera path '" + nameOrPath + "': " + why);
+        return direct;
+    }
     const fs::path named = pathsDir / (nameOrPath + ".toml");
     if (fs::is_regular_file(named, ec)) return named;
     std::vector<std::string> names;

@@ -1,6 +1,7 @@
 // planet: command-line front end (CLI11). See README.md for every command.
 #include <CLI/CLI.hpp>
 
+#include <cctype>
 #include <cmath>
 #include <cstdlib>
 #include <iostream>
@@ -8,6 +9,31 @@
 #include "app/commands.h"
 
 namespace {
+
+// A finite number in [lo, hi]. CLI::Range lets NaN through (every comparison with it is false),
+// and an empty argument would leave the option unset without a word.
+CLI::Validator finiteIn(double lo, double hi, const std::string& what) {
+    return CLI::Validator(
+        [lo, hi, what](std::string& text) -> std::string {
+            char* end = nullptr;
+            const double v = std::strtod(text.c_str(), &end);
+            if (text.empty() || end == text.c_str() || *end != '\0' || !std::isfinite(v) || v < lo || v > hi)
+                return "must be " + what + ", not '" + text + "'";
+            return {};
+        },
+        "NUMBER");
+}
+
+// An output that is written as PNG must be named so: PNG bytes under a .jpg name mislead.
+const CLI::Validator kPngFile(
+    [](std::string& text) -> std::string {
+        const std::size_t dot = text.find_last_of('.');
+        std::string extension = dot == std::string::npos ? "" : text.substr(dot);
+        for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+        if (extension != ".png") return "'" + text + "': only PNG is written here, name it .png";
+        return {};
+    },
+    "FILE.png");
 
 void addCommon(CLI::App& cmd, planet::CommonOptions& o) {
     cmd.add_option("--root", o.root, "Data folder holding shaders/ and assets/ (default: PLANET_ROOT or the source tree)");
@@ -21,16 +47,7 @@ void addCommon(CLI::App& cmd, planet::CommonOptions& o) {
         ->check(CLI::IsMember({"auto", "full", "reduced"}))
         ->capture_default_str();
     cmd.add_option("--time", o.time, "Clock of the first frame, s (the ocean's waves move with it)")
-        ->check(CLI::Validator(
-            [](std::string& text) -> std::string {
-                // CLI::Range lets NaN through (every comparison with it is false).
-                char* end = nullptr;
-                const double v = std::strtod(text.c_str(), &end);
-                if (end == text.c_str() || *end != '\0' || !std::isfinite(v) || std::abs(v) > 1e9)
-                    return "must be a finite number of seconds in [-1e9, 1e9], not '" + text + "'";
-                return {};
-            },
-            "SECONDS"))
+        ->check(finiteIn(-1e9, 1e9, "a finite number of seconds in [-1e9, 1e9]").name("SECONDS"))
         ->capture_default_str();
     cmd.add_flag("--no-temporal", o.noTemporal,
                  "March clouds and air in every pixel every frame (the preset's render.temporal off): reference frames");
@@ -49,7 +66,8 @@ int main(int argc, char** argv) {
                                                          "parameters, see per-pass frame time (the default)");
     addCommon(*exploreCmd, explore.common);
     exploreCmd->add_option("--frames", explore.frames, "Quit after this many frames (0: run until closed)");
-    exploreCmd->add_option("--screenshot", explore.screenshot, "Write a PNG of the window, panels included, at the end");
+    exploreCmd->add_option("--screenshot", explore.screenshot, "Write a PNG of the window, panels included, at the end")
+        ->check(kPngFile);
     exploreCmd->add_flag("--no-panels", explore.noPanels, "Start with the panels hidden (F1 toggles them)");
     exploreCmd->add_option("--path", explore.path,
                            "Play a camera path (name under assets/paths or a file), one path frame (1 / fps) per "
@@ -64,7 +82,8 @@ int main(int argc, char** argv) {
     renderCmd->add_option("--out,-o", render.outputs,
                           "Output file(s): .png = tone-mapped sRGB, .exr = linear HDR radiance (half RGBA)")
         ->required();
-    renderCmd->add_option("--exposure", render.exposure, "Override the preset's exposure");
+    renderCmd->add_option("--exposure", render.exposure, "Override the preset's exposure, [0.001, 1000]")
+        ->check(finiteIn(1e-3, 1e3, "a number in [0.001, 1000]"));
     renderCmd->add_option("--path", render.path,
                           "Camera path (name under assets/paths/ or a .toml file): render its frames in sequence to "
                           "numbered files, each --out a printf pattern such as seq/f_%04d.png (--view is ignored)");
@@ -92,7 +111,7 @@ int main(int argc, char** argv) {
                          "--suite temporal: this many frames evenly over the path (default: duration x fps + 1)");
     benchCmd->add_option("--warmup", bench.warmup, "Unrecorded frames per view before recording")->capture_default_str();
     benchCmd->add_option("--csv", bench.csv, "CSV output (empty: none)")->capture_default_str();
-    benchCmd->add_option("--plot", bench.plot, "Plot PNG output (empty: none)")->capture_default_str();
+    benchCmd->add_option("--plot", bench.plot, "Plot PNG output (empty: none)")->check(kPngFile)->capture_default_str();
 
     planet::PrecomputeOptions precompute;
     CLI::App* precomputeCmd = app.add_subcommand(
@@ -140,7 +159,8 @@ int main(int argc, char** argv) {
     bakeCmd->add_option("--size", bake.size, "Cube face size in texels, [16, 2048] (default: the preset's "
                                              "terrain.continent_map_size)")
         ->check(CLI::Range(16, 2048));
-    bakeCmd->add_option("--seed", bake.seed, "Noise seed (default: the preset's terrain.seed)");
+    bakeCmd->add_option("--seed", bake.seed, "Noise seed, [0, 1000000] (default: the preset's terrain.seed)")
+        ->check(CLI::Range(0, 1000000));
     bakeCmd->add_option("--sea-fraction", bake.seaFraction,
                         "Fraction of the surface under water, [0, 1] (default: the preset's terrain.sea_fraction)")
         ->check(CLI::Range(0.0, 1.0));
@@ -148,14 +168,16 @@ int main(int argc, char** argv) {
     bakeCmd->add_option("--cache", bake.cache,
                         "Cache root; the map goes to DIR/<key>/ (default: cache/continents, or "
                         "continents beside $PLANET_CACHE)");
-    bakeCmd->add_option("--preview", bake.preview, "Write an equirectangular preview PNG of the continents (1024x512)");
+    bakeCmd->add_option("--preview", bake.preview, "Write an equirectangular preview PNG of the continents (1024x512)")
+        ->check(kPngFile);
     bakeCmd->add_option("--what", bake.what, "What to bake: continents, clouds (volume and weather map) or all")
         ->check(CLI::IsMember({"all", "continents", "clouds"}))
         ->capture_default_str();
     bakeCmd->add_option("--cloud-cache", bake.cloudCache,
                         "The clouds' cache root (default: cache/clouds, or clouds beside $PLANET_CACHE)");
     bakeCmd->add_option("--weather-preview", bake.weatherPreview,
-                        "Write an equirectangular preview PNG of the weather map (1024x512): coverage, tinted by type");
+                        "Write an equirectangular preview PNG of the weather map (1024x512): coverage, tinted by type")
+        ->check(kPngFile);
 
     planet::CompareOptions compare;
     CLI::App* compareCmd = app.add_subcommand(
@@ -174,7 +196,15 @@ int main(int argc, char** argv) {
                            "Fail when the mean luminances differ by more than this fraction of B's");
 
     app.require_subcommand(0, 1);
-    CLI11_PARSE(app, argc, argv);
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::Success& e) {  // --help, --version
+        return app.exit(e);
+    } catch (const CLI::ParseError& e) {
+        // The same prefix and exit status as every other error (README "Errors").
+        std::cerr << "planet: error: " << e.what() << " (see planet --help, or planet COMMAND --help)\n";
+        return 1;
+    }
 
     try {
         if (renderCmd->parsed()) return planet::runRender(render);

@@ -104,7 +104,7 @@ AtmosphereTables loadOrPrecomputeTables(const Scene& scene, const TableSizes& si
 int runPrecompute(const PrecomputeOptions& options) {
     const CommonOptions& common = options.common;
     const DataPaths paths = findDataPaths(common.root);
-    const Session session = loadSession(paths, common.preset, common.view);
+    const NamedPreset preset = loadNamedPreset(paths, common.preset);  // no view, no ground: no continents
 
     gl::DebugMessages messages;  // outlives the context that reports into it
     std::optional<gl::HeadlessContext> context;
@@ -113,13 +113,13 @@ int runPrecompute(const PrecomputeOptions& options) {
         gl::installDebugOutput(&messages, common.glDebug);
     }
     const TableSizes sizes = commandTableSizes(common.tables, context.has_value());
-    std::cout << "planet precompute: preset " << session.presetName << ", tables " << common.tables << " ("
+    std::cout << "planet precompute: preset " << preset.name << ", tables " << common.tables << " ("
               << describeSizes(sizes) << ")\n";
-    const AtmosphereTables tables = loadOrPrecomputeTables(session.scene, sizes, options.cache, paths.shaders(),
+    const AtmosphereTables tables = loadOrPrecomputeTables(preset.scene, sizes, options.cache, paths.shaders(),
                                                            options.reference, options.force, std::cout);
     // Elek's 3D parametrization (no nu, phase deferred), built from these tables
     // on the CPU: its memory and its sky radiance error against the 4D lookups.
-    const AtmosphereParameters params = makeAtmosphereParameters(session.scene);
+    const AtmosphereParameters params = makeAtmosphereParameters(preset.scene);
     std::cout << "Elek 3D table vs 4D:\n"
               << describeElekComparison(compareElekWith4D(params, tables, computeElekTables(params, tables)));
     std::cout.flush();

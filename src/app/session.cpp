@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <fcntl.h>
 #include <unistd.h>
 #include <regex>
 
@@ -42,32 +43,50 @@ void applyView(const View& view, Session& session) {
     if (!fix.empty()) logWarning("view '" + view.name + "': " + fix);
 }
 
+NamedPreset loadNamedPreset(const DataPaths& paths, const std::string& preset) {
+    NamedPreset named;
+    named.path = resolvePreset(preset, paths.assets());
+    PresetLoad load = loadPreset(named.path);
+    for (const std::string& w : load.warnings) logWarning(w);
+    named.scene = load.scene;
+    named.name = named.path.stem().string();
+    return named;
+}
+
 Session loadSession(const DataPaths& paths, const std::string& preset, const std::string& viewName,
                     bool noTemporal) {
     Session s;
-    s.presetPath = resolvePreset(preset, paths.assets());
-    PresetLoad load = loadPreset(s.presetPath);
-    for (const std::string& w : load.warnings) logWarning(w);
-    if (noTemporal) load.scene.render.temporal = false;
-    s.scene = load.scene;
-    s.presetScene = load.scene;
-    s.presetName = s.presetPath.stem().string();
-    s.views = loadViews(paths.views());
-    applyView(findView(s.views, viewName), s);
+    NamedPreset named = loadNamedPreset(paths, preset);
+    if (noTemporal) named.scene.render.temporal = false;
+    s.scene = named.scene;
+    s.presetScene = named.scene;
+    s.presetName = named.name;
+    s.presetPath = named.path;
+    // A broken view file stops the command only when it is the one asked for.
+    std::vector<std::string> warnings;
+    std::vector<BrokenView> broken;
+    s.views = loadViews(paths.views(), &warnings, &broken);
+    const View& view = findView(s.views, viewName, broken);
+    for (const std::string& w : warnings) logWarning(w);
+    applyView(view, s);
     return s;
 }
 
 void checkOutputsWritable(const std::vector<std::string>& outputs) {
     for (const std::string& out : outputs) {
         const fs::path path = fs::absolute(out);
+        auto fail = [&](const std::string& why) { throw InputError("cannot write '" + out + "': " + why); };
         std::error_code ec;
-        fs::create_directories(path.parent_path(), ec);
-        const fs::path probe = path.parent_path() / (".planet-write-test-" + std::to_string(::getpid()));
-        FILE* f = std::fopen(probe.c_str(), "wb");
-        if (!f || fs::is_directory(path))
-            throw InputError("cannot write '" + out + "': " +
-                             (fs::is_directory(path) ? std::string("it is a folder") : std::strerror(errno)));
-        std::fclose(f);
+        if (fs::is_directory(path, ec)) fail("it is a folder");
+        const fs::path folder = path.parent_path();
+        fs::create_directories(folder, ec);
+        if (ec) fail("cannot create its folder '" + folder.string() + "': " + ec.message());
+        // A file created and removed at once: what the file system says (a read-only mount, a
+        // folder only root may write, /proc) rather than what the permission bits promise.
+        const fs::path probe = folder / (".planet-write-test-" + std::to_string(::getpid()));
+        const int fd = ::open(probe.c_str(), O_WRONLY | O_CREAT | O_EXCL, 0600);
+        if (fd < 0) fail(std::strerror(errno));
+        ::close(fd);
         fs::remove(probe, ec);
     }
 }

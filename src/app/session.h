@@ -47,8 +47,19 @@ struct Session {
     terrain::HeightField ground{continents};
 };
 
+// A preset alone, found by name or path, its warnings logged: what the commands that need
+// neither a view nor the ground (precompute, sky-probe) start from, so they bake no continents.
+struct NamedPreset {
+    Scene scene;
+    std::string name;  // the file's stem
+    std::filesystem::path path;
+};
+NamedPreset loadNamedPreset(const DataPaths& paths, const std::string& preset);
+
 // Loads the preset (warnings go to the log) and the view bookmarks, picks the
 // view, places the sun and the camera. Throws InputError naming file, line, field.
+// A view file that does not load is an error only when it is the view asked for;
+// any other is left out of Session::views with a warning in the log (loadViews).
 // `noTemporal` (--no-temporal) switches the preset's render.temporal off.
 Session loadSession(const DataPaths& paths, const std::string& preset, const std::string& viewName,
                     bool noTemporal = false);

@@ -314,13 +314,13 @@ int runSkyProbe(const SkyProbeOptions& options) {
     const std::vector<ProbeRow> rows = readProbeCases(options.in);
     checkOutputsWritable({options.out});
     const DataPaths paths = findDataPaths(options.common.root);
-    const Session session = loadSession(paths, options.common.preset, options.common.view);
-    const glm::dvec3 irradiance = session.scene.sun.irradiance;
+    const NamedPreset preset = loadNamedPreset(paths, options.common.preset);  // rays in a local frame: no view
+    const glm::dvec3 irradiance = preset.scene.sun.irradiance;
     if (!(irradiance.r > 0.0 && irradiance.g > 0.0 && irradiance.b > 0.0))
         throw InputError("sky-probe divides by the solar irradiance: the preset's sun.irradiance must be > 0 in "
                          "every channel");
 
-    Scene scene = session.scene;
+    Scene scene = preset.scene;
     scene.time_s = options.common.time;  // the clouds' wind drift
 
     const auto start = std::chrono::steady_clock::now();

@@ -27,6 +27,8 @@ template <class... Fs>
 struct Overloaded : Fs... {
     using Fs::operator()...;
 };
+template <class... Fs>
+Overloaded(Fs...) -> Overloaded<Fs...>;  // clang 14 deduces no aggregate's arguments without it
 
 // Top-level keys a preset may hold besides the parameter sections.
 const std::vector<std::string>& headerKeys() {
@@ -231,7 +233,12 @@ std::vector<std::string> availablePresets(const std::filesystem::path& assetsDir
 std::filesystem::path resolvePreset(const std::string& nameOrPath, const std::filesystem::path& assetsDir) {
     std::error_code ec;
     const fs::path direct(nameOrPath);
-    if (!nameOrPath.empty() && fs::is_regular_file(direct, ec)) return direct;
+    if (!nameOrPath.empty() && fs::exists(direct, ec)) {
+        // Given as a path: say why it cannot be read rather than that no such name exists.
+        if (const std::string why = whyNotReadableFile(direct); !why.empty())
+            throw InputError("", 0, "", "preset '" + nameOrPath + "': " + why);
+        return direct;
+    }
     const fs::path named = assetsDir / "presets" / (nameOrPath + ".toml");
     if (fs::is_regular_file(named, ec)) return named;
     throw InputError("", 0, "",

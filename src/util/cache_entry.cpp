@@ -10,8 +10,12 @@
 #include <ImfStringAttribute.h>
 #include <half.h>
 
+#include <cerrno>
+#include <chrono>
 #include <cmath>
 #include <cstring>
+#include <regex>
+#include <signal.h>
 #include <sstream>
 #include <unistd.h>
 
@@ -179,12 +183,31 @@ std::string decodeExr(const std::string& bytes, const CacheImage& image, const C
 
 }  // namespace
 
+void removeStaleTemporaries(const std::filesystem::path& root, std::chrono::hours maxAge) {
+    namespace fs = std::filesystem;
+    static const std::regex temporary(R"(.+\.(tmp|old)([0-9]+))");
+    std::error_code ec;
+    for (const fs::directory_entry& entry : fs::directory_iterator(root, ec)) {
+        std::smatch m;
+        const std::string name = entry.path().filename().string();
+        if (!std::regex_match(name, m, temporary)) continue;
+        // A writer still running keeps its folder; a PID that came back for another program is
+        // caught by the age.
+        const long pid = std::stol(m[2].str().substr(0, 9));
+        const bool writerGone = pid != ::getpid() && ::kill(static_cast<pid_t>(pid), 0) != 0 && errno == ESRCH;
+        std::error_code timeError;
+        const auto age = fs::file_time_type::clock::now() - entry.last_write_time(timeError);
+        if (writerGone || (!timeError && age > maxAge)) fs::remove_all(entry.path(), ec);
+    }
+}
+
 void writeCacheEntry(const std::filesystem::path& dir, const CacheFormat& format, const std::string& key,
                      const CacheFields& fields, const std::vector<CacheImage>& images, const CacheFields& attributes) {
     namespace fs = std::filesystem;
     const fs::path target = dir.lexically_normal();
     const fs::path tmp = target.string() + ".tmp" + std::to_string(::getpid());
     std::error_code ec;
+    if (target.has_parent_path()) removeStaleTemporaries(target.parent_path());
     fs::remove_all(tmp, ec);
     CacheFields headerAttributes{{format.keyAttribute, key}};
     headerAttributes.insert(headerAttributes.end(), attributes.begin(), attributes.end());

@@ -81,6 +81,11 @@ std::map<std::string, std::string> parseKeyFile(const std::string& text);
 // kept (it is as good). Throws FileError naming `what`; `tmp` is removed on failure.
 void replaceFolder(const std::filesystem::path& tmp, const std::filesystem::path& target, const std::string& what);
 
+// Removes what interrupted writers left in a cache root: the folders (and files)
+// "<name>.tmp<pid>" and "<name>.old<pid>" of a process that no longer runs, or older than
+// maxAge whoever wrote them. Called before every write of an entry.
+void removeStaleTemporaries(const std::filesystem::path& root, std::chrono::hours maxAge = std::chrono::hours(24));
+
 // ------------------------------------------------------------------ entries
 
 // key.txt's "name value" lines, in the order they are written.

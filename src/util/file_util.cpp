@@ -8,7 +8,21 @@
 
 namespace planet {
 
+std::string whyNotReadableFile(const std::filesystem::path& path) {
+    std::error_code ec;
+    const std::filesystem::file_status status = std::filesystem::status(path, ec);
+    if (!std::filesystem::exists(status)) return ec ? ec.message() : std::strerror(ENOENT);
+    if (std::filesystem::is_directory(status)) return "it is a folder, not a file";
+    if (!std::filesystem::is_regular_file(status)) return "it is not a regular file";
+    if (::access(path.c_str(), R_OK) != 0) return std::strerror(errno);
+    return {};
+}
+
 std::string readFile(const std::filesystem::path& path) {
+    // A folder opens as a stream on Linux and reports a size of 2^63: refuse anything but a
+    // readable file (or a link to one) before reading.
+    if (const std::string why = whyNotReadableFile(path); !why.empty())
+        throw FileError("cannot read '" + path.string() + "': " + why);
     std::ifstream in(path, std::ios::binary | std::ios::ate);
     if (!in) throw FileError("cannot open '" + path.string() + "': " + std::strerror(errno));
     // One read of the whole file: streaming through an ostringstream took 0.36 s for the

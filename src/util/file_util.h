@@ -20,6 +20,10 @@ struct FileError : std::runtime_error {
 // Reads a whole file; throws FileError naming the path when it cannot.
 std::string readFile(const std::filesystem::path& path);
 
+// Why `path` cannot be read as a file ("is a folder, not a file", "Permission denied", "No such
+// file or directory", ...), or "" when it can.
+std::string whyNotReadableFile(const std::filesystem::path& path);
+
 // Writes bytes to path atomically (temp file + rename). Creates missing parent
 // folders. Throws FileError naming the path on failure and leaves any existing
 // file at path untouched.
