@@ -204,6 +204,30 @@ TEST_F(OceanRender, SubmergedCameraGivesWaterNotNan) {
     EXPECT_LT(belowMean, 0.5 * aboveMean);
 }
 
+TEST_F(OceanRender, TenKilometresUnderTheSeaItIsDark) {
+    // The sea raised 10 km over the beach: the camera, 2 m above the sand, is 10 km down. The
+    // sand there was lit as if in air (a bright floor with a sharp horizon, as bright as from
+    // 100 m up); the light reaching it has crossed 10 km of water (exp(-0.035 / m x 10 km) in
+    // blue), so the frame is black but for rounding.
+    Session s = session("beach");
+    const auto meanLuminance = [&](const ImageRGBAF& hdr) {
+        double sum = 0.0;
+        for (std::size_t i = 0; i + 3 < hdr.pixels.size(); i += 4) sum += luminance(&hdr.pixels[i]);
+        return sum / (hdr.pixels.size() / 4);
+    };
+    const double inAir = meanLuminance(renderHdr(s));
+    s.scene.ocean.sea_level_m = 10000.0;
+    ASSERT_GT(cameraDepthBelowSeaM(s.scene, s.camera), 9000.0);
+    const ImageRGBAF deep = renderHdr(s);
+    ASSERT_TRUE(test::allFinite(deep));
+    std::printf("mean luminance in air %.4g, 10 km down %.4g\n", inAir, meanLuminance(deep));
+    EXPECT_LT(meanLuminance(deep), 1e-6 * inAir);
+    // 3 m down the sand is still lit, bluer than in air (red is gone after a few metres).
+    s.scene.ocean.sea_level_m = 5.0;
+    const ImageRGBAF shallow = renderHdr(s);
+    EXPECT_GT(meanLuminance(shallow), 0.05 * inAir);
+}
+
 TEST_F(OceanRender, WaveEditsShowInTheNextFrame) {
     Session s = openSea(20.0, -25.0, 25.0);
     const ImageRGBAF before = renderHdr(s);

@@ -12,6 +12,19 @@ const float WATER_F0 = 0.02;                    // normal-incidence reflectance,
 
 vec3 waterTransmittanceAlong(float pathM) { return exp(-WATER_EXTINCTION_PER_M * pathM); }
 
+// The light that reaches a point depthM below the sea surface, from the sun's and the sky's
+// irradiance just above it: the sun's beam along its refracted path (Snell, n = 1.333), the
+// sky's diffuse light along depth / 0.85 (the mean cosine of light refracted into water from a
+// uniform sky). The sea floor and anything else under water is lit by this, not by the light
+// in air: 10 km down it is dark.
+void lightUnderWater(float depthM, float cosSunZenith, inout vec3 sunIrradiance, inout vec3 skyIrradiance) {
+    if (depthM <= 0.0) return;
+    float sinRefracted = sqrt(max(0.0, 1.0 - cosSunZenith * cosSunZenith)) / 1.333;
+    float cosRefracted = sqrt(1.0 - sinRefracted * sinRefracted);  // >= 0.66
+    sunIrradiance *= waterTransmittanceAlong(depthM / cosRefracted);
+    skyIrradiance *= waterTransmittanceAlong(depthM / 0.85);
+}
+
 vec3 deepWaterRadiance(vec3 irradiance) { return DEEP_WATER_ALBEDO / PI * irradiance; }
 
 // Schlick's approximation of the Fresnel reflectance of water for incidence cosine c.

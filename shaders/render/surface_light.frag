@@ -3,11 +3,13 @@
 //
 //   R_G = albedo / pi * (sun through the atmosphere * visibility + sky irradiance)
 //                                                          (Elek Eq. 17, 20; Sperlhofer Eq. 2-13)
+// Below the sea surface both are first dimmed by the water above the point (ocean/water.glsl).
 // Also writes the distance along the view ray to the point, which the sky pass and the
 // ocean read. Pixels where nothing was drawn keep the cleared 0 (no surface).
 #include "common/frame_uniforms.glsl"
 #include "common/gbuffer.glsl"
 #include "atmosphere/interface.glsl"
+#include "ocean/water.glsl"
 
 in vec2 vNdc;
 layout(binding = UNIT_GBUFFER_NORMAL) uniform sampler2D gNormal;
@@ -31,6 +33,8 @@ void main() {
     vec3 albedo = texelFetch(gAlbedo, pixel, 0).rgb;
     vec3 skyIrradiance;
     vec3 sunIrradiance = SunAndSkyIrradiance(point, normal, frame.sunDirection, skyIrradiance);
+    vec3 up = normalize(point);
+    lightUnderWater(depthBelowSeaM(dir * rayDistance), dot(up, frame.sunDirection), sunIrradiance, skyIrradiance);
     outSurfaceRadiance = vec4(albedo / PI * (sunIrradiance + skyIrradiance), 1.0);
     outSurfaceDistance = rayDistance;
 }
