@@ -4,6 +4,7 @@
 #include <fstream>
 #include <thread>
 
+#include "gl/live_objects.h"
 #include "gl/program.h"
 #include "gl_test_support.h"
 
@@ -81,6 +82,32 @@ TEST_F(ProgramTest, HotReloadKeepsLastGoodProgramAndReportsError) {
     EXPECT_TRUE(hot.reloadIfChanged());
     EXPECT_TRUE(hot.error().empty());
     EXPECT_TRUE(glIsProgram(hot.id()));
+}
+
+TEST_F(ProgramTest, ADeletedSourceFileIsReportedOnceAndItsReturnReloads) {
+    // A deleted file changes no modification time: the poll saw nothing and said nothing.
+    gl::HotProgram hot(sources(), {"fill", {"fill.vert", "fill.frag"}});
+    const GLuint good = hot.id();
+    fs::remove(root / "common" / "colour.glsl");
+    EXPECT_FALSE(hot.reloadIfChanged());
+    EXPECT_EQ(hot.id(), good);
+    EXPECT_NE(hot.error().find("common/colour.glsl"), std::string::npos) << "error: " << hot.error();
+    EXPECT_FALSE(hot.reloadIfChanged());  // once, not every poll
+    write("common/colour.glsl", "vec3 colour() { return vec3(0.5); }\n");
+    EXPECT_TRUE(hot.reloadIfChanged());
+    EXPECT_TRUE(hot.error().empty()) << hot.error();
+}
+
+TEST_F(ProgramTest, ReloadingOftenDeletesWhatItReplaced) {
+    // Every forced rebuild replaces the program: the context holds one program and no shaders
+    // whatever the number of reloads (the soak measures memory; this counts GL objects).
+    gl::HotProgram hot(sources(), {"fill", {"fill.vert", "fill.frag"}});
+    glUseProgram(0);  // a current program outlives its deletion
+    const gl::LiveObjects before = gl::countLiveObjects(4096);
+    for (int i = 0; i < 20; ++i) EXPECT_TRUE(hot.reloadIfChanged(true));
+    EXPECT_EQ(gl::countLiveObjects(4096), before) << gl::describe(gl::countLiveObjects(4096));
+    EXPECT_GE(before.programs, 1);
+    EXPECT_EQ(before.shaders, 0);
 }
 
 TEST_F(ProgramTest, FirstBuildFailureThrows) {

@@ -16,6 +16,7 @@
 
 #include "app/commands.h"
 #include "app/session.h"
+#include "app/soak.h"
 #include "app/temporal_error.h"
 #include "gl/context.h"
 #include "gl/debug.h"
@@ -42,12 +43,20 @@ struct BenchRow {
     double cloudStepsPerPixel = -1, cloudSkippedShare = -1;
 };
 
-std::vector<View> benchViews(const std::vector<std::string>& inputs, const DataPaths& paths) {
+// The views to measure: the session's (assets/views, loaded and warned about once, by
+// loadSession) unless --views names files or folders. A broken file in a folder is
+// skipped with a warning; one named on its own is an error.
+std::vector<View> benchViews(const std::vector<std::string>& inputs, const Session& session) {
+    if (inputs.empty()) return session.views;
     std::vector<View> views;
-    const std::vector<std::string> sources = inputs.empty() ? std::vector<std::string>{paths.views().string()} : inputs;
-    for (const std::string& source : sources) {
+    for (const std::string& source : inputs) {
         if (fs::is_directory(source)) {
-            for (View& v : loadViews(source)) views.push_back(std::move(v));
+            std::vector<std::string> warnings;
+            std::vector<BrokenView> broken;
+            std::vector<View> loaded = loadViews(source, &warnings, &broken);
+            for (const std::string& w : warnings) logWarning(w);
+            if (loaded.empty()) throw broken.front().error;  // every file broken: the first one's error
+            for (View& v : loaded) views.push_back(std::move(v));
         } else {
             std::vector<std::string> warnings;
             views.push_back(loadView(source, &warnings));
@@ -292,7 +301,7 @@ int runBench(const BenchOptions& o) {
     checkOutputsWritable(outputs);
     const DataPaths paths = findDataPaths(o.common.root);
     Session session = loadSession(paths, o.common.preset, o.common.view, o.common.noTemporal);
-    const std::vector<View> views = benchViews(o.views, paths);
+    const std::vector<View> views = benchViews(o.views, session);
 
     gl::DebugMessages messages;  // outlives the context that reports into it
     gl::HeadlessContext context(o.common.glDebug);
@@ -302,6 +311,7 @@ int runBench(const BenchOptions& o) {
                 context.platform().c_str(), size.x, size.y, o.frames, o.warmup);
     Renderer frame(paths.shaders(), atmosphere::tableSizesFor(o.common.tables, renderer), session.continents);
 
+    if (o.suite == "soak") return benchSoak(frame, session, size, o.frames, o);
     if (o.suite == "temporal") {
         Renderer fullRate(paths.shaders(), atmosphere::tableSizesFor(o.common.tables, renderer), session.continents);
         benchTemporal(frame, fullRate, session, paths, size, o);

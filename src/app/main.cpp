@@ -101,8 +101,10 @@ int main(int argc, char** argv) {
                          "reduced and the full rate, then cloud step 0.2/0.1/0.05 km x 0/3/6/12 sun samples on the "
                          "first, with march steps per pixel and the share skipped through empty space; temporal: "
                          "every frame of --path with the temporal march against the full-rate march (errors per "
-                         "frame to the CSV, the worst frame's images beside it)")
-        ->check(CLI::IsMember({"views", "terrain", "ocean", "clouds", "temporal"}))
+                         "frame to the CSV, the worst frame's images beside it); soak: --frames frames (e.g. 10000) along a path "
+                         "through every view, an edit every 100 frames, resident memory and live GL objects "
+                         "sampled to the CSV (exit 1 when either grows)")
+        ->check(CLI::IsMember({"views", "terrain", "ocean", "clouds", "temporal", "soak"}))
         ->capture_default_str();
     benchCmd->add_option("--frames", bench.frames, "Recorded frames per view")->capture_default_str();
     benchCmd->add_option("--path", bench.path, "--suite temporal: the camera path (name under assets/paths or a file)")

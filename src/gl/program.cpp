@@ -65,33 +65,35 @@ Program buildProgram(const ShaderSources& sources, const ProgramDesc& desc) {
 
 HotProgram::HotProgram(const ShaderSources& sources, ProgramDesc desc)
     : sources_(sources), desc_(std::move(desc)), program_(buildProgram(sources_, desc_)), watched_(program_.files),
-      builtFrom_(newestTime()) {}
+      builtFrom_(stamp()) {}
 
-fs::file_time_type HotProgram::newestTime() const {
-    auto newest = fs::file_time_type::min();  // file_clock's epoch is in the future on libstdc++
+HotProgram::SourceStamp HotProgram::stamp() const {
+    SourceStamp s;
+    s.newest = fs::file_time_type::min();  // file_clock's epoch is in the future on libstdc++
     for (const std::string& f : watched_) {
         std::error_code ec;
         const auto t = fs::last_write_time(sources_.root / f, ec);
-        if (!ec && t > newest) newest = t;
+        if (ec)
+            ++s.missing;
+        else if (t > s.newest)
+            s.newest = t;
     }
-    return newest;
+    return s;
 }
 
 bool HotProgram::reloadIfChanged(bool force) {
-    const auto newest = newestTime();
-    if (!force && newest == builtFrom_) return false;
-    builtFrom_ = newest;  // a broken edit is reported once, not every poll
+    if (!force && stamp() == builtFrom_) return false;
     try {
         program_ = buildProgram(sources_, desc_);
         watched_ = program_.files;
-        builtFrom_ = newestTime();
+        builtFrom_ = stamp();
         error_.clear();
         return true;
     } catch (const ShaderError& e) {
         // Also watch files the broken edit brought in (a new include), so fixing them reloads.
         for (const std::string& f : e.files)
             if (std::find(watched_.begin(), watched_.end(), f) == watched_.end()) watched_.push_back(f);
-        builtFrom_ = newestTime();
+        builtFrom_ = stamp();  // a broken edit (or a deleted file) is reported once, not every poll
         error_ = e.what();
         return false;
     }

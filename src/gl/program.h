@@ -50,13 +50,20 @@ public:
     const std::string& name() const { return desc_.name; }
 
 private:
-    std::filesystem::file_time_type newestTime() const;
+    // What the watched files look like on disk: the newest change, and how many are gone (a
+    // deleted file changes no time, but must be noticed and reported).
+    struct SourceStamp {
+        std::filesystem::file_time_type newest{};
+        int missing = 0;
+        bool operator==(const SourceStamp&) const = default;
+    };
+    SourceStamp stamp() const;
 
     ShaderSources sources_;
     ProgramDesc desc_;
     Program program_;
     std::vector<std::string> watched_;  // files whose change triggers a rebuild
-    std::filesystem::file_time_type builtFrom_{};
+    SourceStamp builtFrom_{};
     std::string error_;
 };
 

@@ -1,5 +1,7 @@
 #include "gl/shader_source.h"
 
+#include "util/file_util.h"
+
 #include <algorithm>
 #include <fstream>
 #include <regex>
@@ -24,6 +26,8 @@ struct Expander {
     }
 
     static std::string readSource(const fs::path& path, const std::string& where) {
+        if (const std::string why = whyNotReadableFile(path); !why.empty())
+            throw ShaderError(where + "cannot open shader file '" + path.string() + "': " + why);
         std::ifstream in(path);
         if (!in) throw ShaderError(where + "cannot open shader file '" + path.string() + "'");
         std::ostringstream ss;
