@@ -46,23 +46,47 @@ View loadView(const std::filesystem::path& path, std::vector<std::string>* warni
     return parseView(readInputFile(path), path.string(), path.stem().string(), warnings);
 }
 
-std::vector<View> loadViews(const std::filesystem::path& dir, std::vector<std::string>* warnings) {
+std::vector<View> loadViews(const std::filesystem::path& dir, std::vector<std::string>* warnings,
+                            std::vector<BrokenView>* broken) {
     std::error_code ec;
     if (!fs::is_directory(dir, ec)) throw InputError(dir.string(), 0, "", "views folder not found");
-    std::vector<View> views;
+    std::vector<fs::path> files;
     for (const auto& entry : fs::directory_iterator(dir, ec))
-        if (entry.path().extension() == ".toml") views.push_back(loadView(entry.path(), warnings));
-    if (views.empty()) throw InputError(dir.string(), 0, "", "no view files (*.toml) in this folder");
-    std::sort(views.begin(), views.end(), [](const View& a, const View& b) { return a.name < b.name; });
+        if (entry.path().extension() == ".toml") files.push_back(entry.path());
+    if (files.empty()) throw InputError(dir.string(), 0, "", "no view files (*.toml) in this folder");
+    // By name: the views, their warnings and the broken ones in a stable order.
+    std::sort(files.begin(), files.end(),
+              [](const fs::path& a, const fs::path& b) { return a.stem().string() < b.stem().string(); });
+    std::vector<View> views;
+    std::vector<BrokenView> failed;
+    for (const fs::path& file : files) {
+        std::vector<std::string> fileWarnings;  // a skipped file's unknown keys are not worth a word
+        try {
+            views.push_back(loadView(file, &fileWarnings));
+        } catch (const InputError& e) {
+            failed.push_back({file.stem().string(), e});
+            fileWarnings = {std::string(e.what()) + " (view skipped)"};
+        }
+        if (warnings) warnings->insert(warnings->end(), fileWarnings.begin(), fileWarnings.end());
+    }
+    if (broken) *broken = std::move(failed);
     return views;
 }
 
-const View& findView(const std::vector<View>& views, const std::string& name) {
+const View& findView(const std::vector<View>& views, const std::string& name, const std::vector<BrokenView>& broken) {
     for (const View& view : views)
         if (view.name == name) return view;
+    for (const BrokenView& b : broken)
+        if (b.name == name) throw b.error;
     std::vector<std::string> names;
     for (const View& view : views) names.push_back(view.name);
-    throw InputError("", 0, "", "unknown view '" + name + "'; available views: " + joinNames(names));
+    std::string message = "unknown view '" + name + "'; available views: " + joinNames(names);
+    if (!broken.empty()) {
+        std::vector<std::string> skipped;
+        for (const BrokenView& b : broken) skipped.push_back(b.name);
+        message += "; skipped as broken: " + joinNames(skipped);
+    }
+    throw InputError("", 0, "", message);
 }
 
 glm::dvec3 directionFromHorizontal(double latDeg, double lonDeg, double elevationDeg, double azimuthDeg) {

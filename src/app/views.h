@@ -59,10 +59,29 @@ View parseView(std::string_view tomlText, const std::string& sourceName, const s
                std::vector<std::string>* warnings = nullptr);
 // Reads a view file; its name is the file stem. Throws InputError.
 View loadView(const std::filesystem::path& path, std::vector<std::string>* warnings = nullptr);
-// Every *.toml in dir, sorted by name. A missing folder or one without views is an InputError.
-std::vector<View> loadViews(const std::filesystem::path& dir, std::vector<std::string>* warnings = nullptr);
-// The view with this name; InputError listing the available names when there is none.
-const View& findView(const std::vector<View>& views, const std::string& name);
+
+// A view file of a folder that did not load: its name (the file stem) and why.
+struct BrokenView {
+    std::string name;
+    InputError error;  // as loadView threw it: file:line: field: message
+};
+
+// Every *.toml in dir that loads, sorted by name. One bad file does not stop the others
+// (a command that uses another view must not fail for it): it is left out, its error
+// goes to *broken (sorted by name) when that is given, and a warning
+//     "assets/views/x.toml:3: TOML syntax error: ... (view skipped)"
+// to *warnings in its place among the others (the unknown keys of the views that load,
+// file by file in name order). The result is
+// empty when every file is broken. A missing folder, or one without any *.toml, is an
+// InputError.
+std::vector<View> loadViews(const std::filesystem::path& dir, std::vector<std::string>* warnings = nullptr,
+                            std::vector<BrokenView>* broken = nullptr);
+// The view with this name. When views has none, a broken file of that name (from
+// loadViews) throws its own InputError (file:line: ...): the one view that was asked
+// for is the one whose error stops the command. Otherwise an InputError listing the
+// available names.
+const View& findView(const std::vector<View>& views, const std::string& name,
+                     const std::vector<BrokenView>& broken = {});
 
 // World-frame unit vector for elevation/azimuth (deg) seen from (lat, lon) (deg).
 glm::dvec3 directionFromHorizontal(double latDeg, double lonDeg, double elevationDeg, double azimuthDeg);
