@@ -1,6 +1,7 @@
 // Tests for view bookmarks (app/views.h): the shipped views, required and
-// paired keys, range errors, unknown-key warnings, lookup by name, and the
-// sun placement math against analytic local frames.
+// paired keys, range errors, unknown-key warnings, lookup by name, a broken
+// file among good ones (skipped unless asked for, also through the commands),
+// and the sun placement math against analytic local frames.
 #include <gtest/gtest.h>
 
 #include "test_util.h"
@@ -13,6 +14,8 @@
 #include <unistd.h>
 
 #include "app/views.h"
+#include "process.h"
+#include "util/file_util.h"
 #include "scene/toml_error.h"
 
 namespace planet {
@@ -25,6 +28,7 @@ const std::string kRequired = "latitude_deg = 10\nlongitude_deg = 20\naltitude_m
 
 using test::contains;
 using test::expectInputError;
+using test::runCommand;
 
 void expectNear(const glm::dvec3& a, const glm::dvec3& b, double tolerance) {
     EXPECT_NEAR(a.x, b.x, tolerance);
@@ -135,6 +139,96 @@ TEST(Views, FolderErrors) {
     EXPECT_EQ(views[1].name, "b");
     fs::remove_all(dir);
     EXPECT_THROW(loadViews(dir), InputError);
+}
+
+// One bad file among good ones: left out with a warning naming file:line, its own error
+// only when it is the view asked for.
+TEST(Views, ABrokenFileIsSkippedUnlessItIsTheOneAskedFor) {
+    const fs::path dir = fs::temp_directory_path() / ("planet_broken_views_" + std::to_string(::getpid()));
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    std::ofstream(dir / "a.toml") << kRequired << "headng_deg = 3\n";
+    std::ofstream(dir / "b.toml") << "latitude_deg = 1\nlongitude_deg = 2\naltitude_m = [\n";  // syntax, line 3
+    std::ofstream(dir / "c.toml") << "latitude_deg = 1\nlongitude_deg = 200\naltitude_m = 2\nbogus = 1\n";  // range, line 2
+    std::ofstream(dir / "d.toml") << kRequired;
+    std::vector<std::string> warnings;
+    std::vector<BrokenView> broken;
+    const std::vector<View> views = loadViews(dir, &warnings, &broken);
+    ASSERT_EQ(views.size(), 2u);
+    EXPECT_EQ(views[0].name, "a");
+    EXPECT_EQ(views[1].name, "d");
+    // In name order: a's unknown key, then b and c skipped (c's unknown key not worth a word).
+    ASSERT_EQ(warnings.size(), 3u) << joinNames(warnings);
+    EXPECT_TRUE(contains(warnings[0], (dir / "a.toml").string() + ":4: unknown key 'headng_deg'")) << warnings[0];
+    EXPECT_TRUE(warnings[1].starts_with((dir / "b.toml").string() + ":3: TOML syntax error")) << warnings[1];
+    EXPECT_TRUE(warnings[1].ends_with(" (view skipped)")) << warnings[1];
+    EXPECT_EQ(warnings[2], (dir / "c.toml").string() +
+                               ":2: longitude_deg: value 200 is out of range [-180, 180] deg (view skipped)");
+    ASSERT_EQ(broken.size(), 2u);
+    EXPECT_EQ(broken[0].name, "b");
+    EXPECT_EQ(broken[1].name, "c");
+
+    EXPECT_EQ(findView(views, "d", broken).name, "d");
+    const InputError b = expectInputError([&] { findView(views, "b", broken); });
+    EXPECT_EQ(b.file, (dir / "b.toml").string());
+    EXPECT_EQ(b.line, 3);
+    const InputError c = expectInputError([&] { findView(views, "c", broken); });
+    EXPECT_EQ(std::string(c.what()), (dir / "c.toml").string() + ":2: longitude_deg: value 200 is out of range [-180, 180] deg");
+    const InputError none = expectInputError([&] { findView(views, "e", broken); });
+    EXPECT_TRUE(contains(none.what(), "unknown view 'e'; available views: a, d; skipped as broken: b, c")) << none.what();
+
+    // Every file broken: no view, no exception; asking for one gives its error.
+    fs::remove(dir / "a.toml");
+    fs::remove(dir / "d.toml");
+    const std::vector<View> left = loadViews(dir, nullptr, &broken);
+    EXPECT_TRUE(left.empty());
+    EXPECT_EQ(expectInputError([&] { findView(left, "b", broken); }).line, 3);
+    fs::remove_all(dir);
+}
+
+class ViewsCli : public test::CliFixture {};
+
+// The bug of issue 12: one invalid file in assets/views made every command fail. Now only
+// the command that asks for it fails (with its file:line, writing nothing); the others warn
+// once and go on: render with another view, bench over the folder.
+TEST_F(ViewsCli, ABrokenViewFileFailsOnlyTheCommandThatAsksForIt) {
+    const fs::path root = dir / "root";
+    fs::create_directories(root / "assets" / "views");
+    fs::create_directory_symlink(fs::path(PLANET_SOURCE_DIR) / "shaders", root / "shaders");
+    fs::create_directory_symlink(kViews.parent_path() / "presets", root / "assets" / "presets");
+    for (const char* name : {"orbit", "space"}) fs::copy_file(kViews / (std::string(name) + ".toml"), root / "assets" / "views" / (std::string(name) + ".toml"));
+    const fs::path broken = root / "assets" / "views" / "broken.toml";
+    std::ofstream(broken) << "latitude_deg = 10\nlongitude_deg = 20\naltitude_m = \"high\"\n";
+    const std::string message = broken.string() + ":3: altitude_m: expected a number, got a string";
+    // Small and cheap: no clouds to bake, a small continents map.
+    std::ofstream(dir / "light.toml") << "[clouds]\nenabled = false\n[terrain]\ncontinent_map_size = 16\n";
+    const std::string common = "--root '" + root.string() + "' --preset light.toml --size 8x8 --tables reduced ";
+
+    const test::ProcessResult asked = runCommand(planet("render " + common + "--view broken --out out/a.png"));
+    EXPECT_EQ(asked.exitCode, 1) << asked.output;
+    EXPECT_EQ(asked.output, "planet: error: " + message + "\n");
+    EXPECT_FALSE(fs::exists(dir / "out" / "a.png"));
+
+    const test::ProcessResult other = runCommand(planet("render " + common + "--view space --out out/b.png"));
+    EXPECT_EQ(other.exitCode, 0) << other.output;
+    EXPECT_TRUE(fs::exists(dir / "out" / "b.png"));
+    const std::string warning = "[planet warning] " + message + " (view skipped)\n";
+    EXPECT_TRUE(contains(other.output, warning)) << other.output;
+    EXPECT_EQ(other.output.find(warning), other.output.rfind(warning)) << "warned more than once:\n" << other.output;
+
+    const test::ProcessResult bench = runCommand(
+        planet("bench " + common + "--views '" + (root / "assets" / "views").string() +
+               "' --frames 1 --warmup 0 --csv out/b.csv --plot out/b.png"));
+    EXPECT_EQ(bench.exitCode, 0) << bench.output;
+    EXPECT_TRUE(contains(bench.output, warning)) << bench.output;
+    EXPECT_EQ(bench.output.find(warning), bench.output.rfind(warning)) << "warned more than once:\n" << bench.output;
+    const std::string csv = readFile(dir / "out" / "b.csv");
+    EXPECT_TRUE(contains(csv, ",orbit,") && contains(csv, ",space,")) << csv;
+    EXPECT_FALSE(contains(csv, "broken")) << csv;
+    // Without --views: the session's folder, warned about once too.
+    const std::string benchDefault = runCommand(planet("bench " + common + "--frames 1 --warmup 0 --csv out/c.csv --plot out/c.png")).output;
+    EXPECT_EQ(benchDefault.find(warning), benchDefault.rfind(warning)) << benchDefault;
+    EXPECT_TRUE(contains(benchDefault, warning)) << benchDefault;
 }
 
 TEST(Views, FindViewListsAvailableNames) {

@@ -46,11 +46,14 @@ struct BenchRow {
 // The views to measure: the session's (assets/views, loaded and warned about once, by
 // loadSession) unless --views names files or folders. A broken file in a folder is
 // skipped with a warning; one named on its own is an error.
-std::vector<View> benchViews(const std::vector<std::string>& inputs, const Session& session) {
+std::vector<View> benchViews(const std::vector<std::string>& inputs, const DataPaths& paths, const Session& session) {
     if (inputs.empty()) return session.views;
     std::vector<View> views;
     for (const std::string& source : inputs) {
-        if (fs::is_directory(source)) {
+        std::error_code ec;
+        if (fs::equivalent(source, paths.views(), ec)) {  // the session's folder: read and warned about already
+            views.insert(views.end(), session.views.begin(), session.views.end());
+        } else if (fs::is_directory(source)) {
             std::vector<std::string> warnings;
             std::vector<BrokenView> broken;
             std::vector<View> loaded = loadViews(source, &warnings, &broken);
@@ -301,7 +304,7 @@ int runBench(const BenchOptions& o) {
     checkOutputsWritable(outputs);
     const DataPaths paths = findDataPaths(o.common.root);
     Session session = loadSession(paths, o.common.preset, o.common.view, o.common.noTemporal);
-    const std::vector<View> views = benchViews(o.views, session);
+    const std::vector<View> views = benchViews(o.views, paths, session);
 
     gl::DebugMessages messages;  // outlives the context that reports into it
     gl::HeadlessContext context(o.common.glDebug);
