@@ -390,6 +390,30 @@ TEST(Preset, RoundTripIsExact) {
     EXPECT_EQ(load.description, description);
 }
 
+// Found by the fuzzing (test_fuzz_assets.cpp): a sea with every wave removed (the explorer's
+// Waves panel, or `wave = []` in a preset) was written without its empty list and read back
+// with the generated waves.
+TEST(Preset, NoWavesAtAllRoundTrip) {
+    const PresetLoad calm = parsePreset("[ocean]\nwave = []\n", "calm.toml");
+    EXPECT_TRUE(calm.scene.waves.empty());
+    EXPECT_FALSE(Scene{}.ocean.wave_count == 0);  // the default generates waves: the list is the preset's own
+    Scene edited;
+    edited.waves.clear();
+    for (const Scene& s : {calm.scene, edited}) {
+        const std::string text = presetToToml(s, "", "");
+        EXPECT_TRUE(contains(text, "\nwave = []\n")) << text;
+        EXPECT_FALSE(contains(text, "[[ocean.wave]]")) << text;
+        const PresetLoad back = parsePreset(text, "back.toml");
+        EXPECT_TRUE(back.scene.waves.empty()) << back.scene.waves.size() << " waves read back";
+        EXPECT_TRUE(back.warnings.empty());
+    }
+    // A calm sea the parameters already give (wave_count = 0) needs no list.
+    Scene none;
+    none.ocean.wave_count = 0;
+    none.waves.clear();
+    EXPECT_FALSE(contains(presetToToml(none, "", ""), "wave = []"));
+}
+
 TEST(Preset, WrittenTextIsShortAndCommented) {
     Scene scene;
     scene.planet.albedo = {0.2, 0.24, 0.16};  // short decimals must stay short

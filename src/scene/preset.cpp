@@ -252,6 +252,8 @@ std::string presetToToml(const Scene& scene, const std::string& name, const std:
                        "# Absent keys take the built-in (Earth) defaults; unknown keys are ignored with a warning.\n";
     text += "name = " + tomlQuoted(name) + "\n";
     text += "description = " + tomlQuoted(description) + "\n";
+    // Waves the [ocean] parameters would not generate (edited, or read from a list) are listed.
+    const bool ownWaves = !sameWaves(scene.waves, ocean::generateWaves(scene.ocean));
     for (const std::string& section : sectionNames()) {
         text += "\n[" + section + "]\n";
         for (const ParamSpec& spec : sceneParams()) {
@@ -259,9 +261,12 @@ std::string presetToToml(const Scene& scene, const std::string& name, const std:
             const ParamRef ref = spec.field(copy);
             text += commentFor(spec, ref) + spec.key + " = " + valueText(ref) + "\n";
         }
+        // No waves at all (every wave removed) where the parameters generate some: an empty list,
+        // which only a key inside [ocean] can say ([[ocean.wave]] tables hold one wave each).
+        if (section == "ocean" && ownWaves && scene.waves.empty())
+            text += "# No waves (an empty list replaces the generated set).\nwave = []\n";
     }
-    // Waves the [ocean] parameters would not generate (edited, or read from a list) are listed.
-    if (!sameWaves(scene.waves, ocean::generateWaves(scene.ocean))) {
+    if (ownWaves && !scene.waves.empty()) {
         text += "\n# The individual waves (they replace the set the [ocean] parameters would generate).\n";
         text += waveListToToml(scene.waves);
     }

@@ -9,7 +9,8 @@
 //     phase_rad = 0.0            # optional
 //
 // A preset with such a list uses exactly those waves; one without generates them
-// from the [ocean] parameters (ocean/wave_spectrum.h).
+// from the [ocean] parameters (ocean/wave_spectrum.h). `wave = []` under [ocean] is
+// an empty list: no waves at all (what a preset saved with every wave removed holds).
 #pragma once
 
 #include <string>
