@@ -115,6 +115,8 @@ TEST_F(CliTest, ParserErrorsHaveThePrefixAndExitStatusOfEveryOtherError) {
     for (const auto& entry : fs::directory_iterator(dir))
         EXPECT_EQ(entry.path().filename(), "cache") << "written: " << entry.path();  // the shared cloud cache's link
     EXPECT_EQ(runCommand(planet("render --help")).exitCode, 0);
+    // An empty PNG output is "none", not a bad name.
+    EXPECT_FALSE(contains(runCommand(planet("bench --plot '' --frames 0")).output, "--plot")) << "empty --plot refused";
 }
 
 TEST_F(CliTest, AFolderGivenForAFileIsNamedAsSuchAndNothingIsLeftBeside) {

@@ -27,6 +27,7 @@ CLI::Validator finiteIn(double lo, double hi, const std::string& what) {
 // An output that is written as PNG must be named so: PNG bytes under a .jpg name mislead.
 const CLI::Validator kPngFile(
     [](std::string& text) -> std::string {
+        if (text.empty()) return {};  // none (bench --plot '')
         const std::size_t dot = text.find_last_of('.');
         std::string extension = dot == std::string::npos ? "" : text.substr(dot);
         for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
