@@ -12,6 +12,7 @@ packages=(
   libglm-dev libopenexr-dev libimgui-dev libstb-dev    # math, HDR images, UI, PNG
   libcli11-dev libtomlplusplus-dev                     # command line, presets
   libgtest-dev glslang-tools xvfb xauth                # tests: GoogleTest, offline GLSL check, window test
+  clang libclang-rt-14-dev llvm                        # tests: ASan/UBSan build, libFuzzer, readable reports
 )
 
 missing=()
