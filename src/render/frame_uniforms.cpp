@@ -20,7 +20,7 @@ glm::vec2 subPixelJitter(int frameIndex) {
 }
 
 double cameraDepthBelowSeaM(const Scene& scene, const Camera& camera) {
-    if (!scene.terrain.ocean) return -1.0;
+    if (!scene.terrain.ocean) return -1e30;  // no sea: everything, camera or ground, is above it
     return scene.planetRadiusM() + scene.ocean.sea_level_m - glm::length(camera.position);
 }
 

@@ -72,7 +72,7 @@ double halton(int index, int base);
 glm::vec2 subPixelJitter(int frameIndex);
 
 // Mean sea surface radius - camera distance, m (> 0 when the camera is under water;
-// negative on a dry world, which has no sea).
+// -1e30 on a dry world, which has no sea, so that no point is below it).
 double cameraDepthBelowSeaM(const Scene& scene, const Camera& camera);
 
 }  // namespace planet
