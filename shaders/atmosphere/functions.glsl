@@ -17,6 +17,17 @@
 
 const Number PI = 3.14159265358979323846;
 
+// TRANSMITTANCE_LOG_LOOKUP: how the transmittance table is read (see
+// TransmittanceTableLog). true in the precomputation (the passes define it before
+// including this file; C++: a Model member, true in computeReferenceTables), where
+// a table lookup's error is integrated into every other table; false at render
+// time, where one filtered fetch keeps the sky pass as fast as before.
+#ifndef __cplusplus
+#ifndef TRANSMITTANCE_LOG_LOOKUP
+#define TRANSMITTANCE_LOG_LOOKUP false
+#endif
+#endif
+
 // ---------------------------------------------------------------- geometry
 
 Number ClampCosine(Number mu) { return clamp(mu, Number(-1.0), Number(1.0)); }
@@ -55,36 +66,125 @@ Number GetLayerDensity(IN(DensityProfileLayer) layer, Length altitude) {
     return clamp(density, Number(0.0), Number(1.0));
 }
 
+// Altitudes below 0 (a grazing ray rounded under the ground) read the ground's
+// density: an exponential profile's layer 0 (width 0) holds no particles, and a
+// ray a float rounding below the horizon would otherwise lose its densest air.
 Number GetProfileDensity(IN(DensityProfile) profile, Length altitude) {
+    altitude = max(altitude, Length(0.0));
     return altitude < profile.layers[0].width ? GetLayerDensity(profile.layers[0], altitude)
                                               : GetLayerDensity(profile.layers[1], altitude);
 }
 
-// Integral of the density along the ray to the top boundary (trapezoidal rule).
+// ------------------------------------------------ quadrature along a ray
+//
+// The integrals along rays below sample their integrand at evenly spaced points.
+// Between two samples the integrand is taken as exp(l) s with l (a log) and s
+// both linear, and that product is integrated exactly: the exponential part
+// carries the densities' exponential fall with altitude and the transmittance
+// (exact for a vertical ray through an exponential profile, and for any ray
+// through a homogeneous medium however thick), the linear part the ozone's tent
+// and the sun's horizon factor. The trapezoidal rule it replaces assumed the
+// integrand linear over a step: a step of several scale heights or optical
+// depths then counted the bright end across the whole step (a ray 200 000 km
+// long through an 8 km scale height: 240 times the air there is). Logs are kept
+// as logs (LOG_ZERO for an exact zero), so a sample whose value underflows in
+// float still tells how fast the integrand falls.
+
+const Number LOG_ZERO = -1.0e4;
+
+Number SafeLog(Number x) { return x > 0.0 ? max(log(x), LOG_ZERO) : LOG_ZERO; }
+Spectrum SafeLogSpectrum(IN(Spectrum) x) { return Spectrum(SafeLog(x.x), SafeLog(x.y), SafeLog(x.z)); }
+
+// Mean over a step of exp(l(t)) s(t), l and s linear from (l_a, s_a) to (l_b, s_b):
+// from the larger end, with delta = |l_a - l_b|,
+//   exp(l_hi) (s_hi I0 + (s_lo - s_hi) I1), I0 = (1 - e^-delta) / delta,
+//   I1 = (1 - (1 + delta) e^-delta) / delta^2 (their series for a small delta).
+// Equal logs give the trapezoidal rule's (s_a + s_b) / 2.
+Number ExpLinearMean(Number l_a, Number l_b, Number s_a, Number s_b) {
+    bool a_high = l_a >= l_b;
+    Number l_hi = a_high ? l_a : l_b;
+    Number s_hi = a_high ? s_a : s_b;
+    Number s_lo = a_high ? s_b : s_a;
+    Number delta = abs(l_a - l_b);
+    Number i0;
+    Number i1;
+    if (delta < 0.1) {
+        i0 = 1.0 - delta * (1.0 / 2.0 - delta * (1.0 / 6.0 - delta * (1.0 / 24.0 - delta / 120.0)));
+        i1 = 0.5 - delta * (1.0 / 3.0 - delta * (1.0 / 8.0 - delta * (1.0 / 30.0 - delta / 144.0)));
+    } else {
+        Number e = exp(-delta);
+        i0 = (1.0 - e) / delta;
+        i1 = (1.0 - (1.0 + delta) * e) / (delta * delta);
+    }
+    return exp(l_hi) * (s_hi * i0 + (s_lo - s_hi) * i1);
+}
+
+Spectrum ExpLinearMeanSpectrum(IN(Spectrum) l_a, IN(Spectrum) l_b, IN(Spectrum) s_a, IN(Spectrum) s_b) {
+    return Spectrum(ExpLinearMean(l_a.x, l_b.x, s_a.x, s_b.x), ExpLinearMean(l_a.y, l_b.y, s_a.y, s_b.y),
+                    ExpLinearMean(l_a.z, l_b.z, s_a.z, s_b.z));
+}
+
+// A profile's density at an altitude as exp(log_density) * linear_density: an
+// exponential layer (Elek Eq. 8) in its log, whose float never underflows; any
+// other (ozone's tent) as it is.
+void GetProfileDensityParts(IN(DensityProfile) profile, Length altitude, OUT(Number) log_density,
+                            OUT(Number) linear_density) {
+    altitude = max(altitude, Length(0.0));  // as GetProfileDensity
+    DensityProfileLayer layer = altitude < profile.layers[0].width ? profile.layers[0] : profile.layers[1];
+    if (layer.exp_term > 0.0 && layer.linear_term == 0.0 && layer.constant_term == 0.0) {
+        log_density = min(log(layer.exp_term) + layer.exp_scale * altitude, Number(0.0));  // clamped to 1
+        linear_density = 1.0;
+    } else {
+        log_density = 0.0;
+        linear_density = GetLayerDensity(layer, altitude);
+    }
+}
+
+// Integral of the density along the ray to the top boundary.
 Length ComputeOpticalLengthToTopAtmosphereBoundary(IN(AtmosphereParameters) atmosphere,
                                                    IN(DensityProfile) profile, Length r, Number mu) {
     const int SAMPLE_COUNT = 500;
     Length dx = DistanceToTopAtmosphereBoundary(atmosphere, r, mu) / Number(SAMPLE_COUNT);
     Length result = 0.0;
-    for (int i = 0; i <= SAMPLE_COUNT; ++i) {
+    Number l_previous;
+    Number s_previous;
+    GetProfileDensityParts(profile, r - atmosphere.bottom_radius, l_previous, s_previous);
+    for (int i = 1; i <= SAMPLE_COUNT; ++i) {
         Length d_i = Number(i) * dx;
         Length r_i = sqrt(d_i * d_i + 2.0 * r * mu * d_i + r * r);
-        Number y_i = GetProfileDensity(profile, r_i - atmosphere.bottom_radius);
-        Number weight_i = i == 0 || i == SAMPLE_COUNT ? 0.5 : 1.0;
-        result += y_i * weight_i * dx;
+        Number l_i;
+        Number s_i;
+        GetProfileDensityParts(profile, r_i - atmosphere.bottom_radius, l_i, s_i);
+        result += ExpLinearMean(l_previous, l_i, s_previous, s_i) * dx;
+        l_previous = l_i;
+        s_previous = s_i;
     }
     return result;
 }
 
-// Transmittance to the top boundary: exp(-optical depth) (Elek Eq. 9, Sperlhofer Eq. 2-6, 2-7).
-Spectrum ComputeTransmittanceToTopAtmosphereBoundary(IN(AtmosphereParameters) atmosphere, Length r, Number mu) {
-    return exp(-(atmosphere.rayleigh_scattering *
-                     ComputeOpticalLengthToTopAtmosphereBoundary(atmosphere, atmosphere.rayleigh_density, r, mu) +
-                 atmosphere.mie_extinction *
-                     ComputeOpticalLengthToTopAtmosphereBoundary(atmosphere, atmosphere.mie_density, r, mu) +
-                 atmosphere.absorption_extinction *
-                     ComputeOpticalLengthToTopAtmosphereBoundary(atmosphere, atmosphere.absorption_density, r, mu)));
+// Optical depth to the top boundary, per channel (Elek Eq. 9, Sperlhofer Eq. 2-6, 2-7).
+Spectrum ComputeOpticalDepthToTopAtmosphereBoundary(IN(AtmosphereParameters) atmosphere, Length r, Number mu) {
+    return atmosphere.rayleigh_scattering *
+               ComputeOpticalLengthToTopAtmosphereBoundary(atmosphere, atmosphere.rayleigh_density, r, mu) +
+           atmosphere.mie_extinction *
+               ComputeOpticalLengthToTopAtmosphereBoundary(atmosphere, atmosphere.mie_density, r, mu) +
+           atmosphere.absorption_extinction *
+               ComputeOpticalLengthToTopAtmosphereBoundary(atmosphere, atmosphere.absorption_density, r, mu);
 }
+
+// Transmittance to the top boundary: exp(-optical depth).
+Spectrum ComputeTransmittanceToTopAtmosphereBoundary(IN(AtmosphereParameters) atmosphere, Length r, Number mu) {
+    return exp(-ComputeOpticalDepthToTopAtmosphereBoundary(atmosphere, r, mu));
+}
+
+// The transmittance table holds T^(1 / TRANSMITTANCE_TABLE_ROOT), the fourth root
+// of the transmittance (1 still means clear air, less means less light): a float
+// holds exp(-87) at the least, and the ray grazing the ground from the top of a
+// thick atmosphere (twice the optical depth of the horizontal ray from the ground)
+// passes that long before the rays a view can see become dark; the root keeps
+// optical depths up to 4 x 87 in range. The precomputation reads it in log space
+// (TRANSMITTANCE_LOG_LOOKUP), the frame with one filtered fetch to the fourth power.
+const Number TRANSMITTANCE_TABLE_ROOT = 4.0;
 
 // Texel centres map to the ends of [0, 1], so a function is sampled exactly at its domain's ends.
 Number GetTextureCoordFromUnitRange(Number x, int texture_size) {
@@ -99,8 +199,28 @@ Number GetUnitRangeFromTextureCoord(Number u, int texture_size) {
 // samples where the function changes fastest (near the horizon).
 vec2 GetTransmittanceTextureUvFromRMu(IN(AtmosphereParameters) atmosphere, Length r, Number mu) {
     Length H = sqrt((atmosphere.top_radius - atmosphere.bottom_radius) * (atmosphere.top_radius + atmosphere.bottom_radius));
-    Length rho = SafeSqrt(r * r - atmosphere.bottom_radius * atmosphere.bottom_radius);
+    Length rho = SafeSqrt((r - atmosphere.bottom_radius) * (r + atmosphere.bottom_radius));  // r - R exact near R
     Length d = DistanceToTopAtmosphereBoundary(atmosphere, r, mu);
+    Length d_min = atmosphere.top_radius - r;
+    Length d_max = rho + H;
+    Number x_mu = (d - d_min) / (d_max - d_min);
+    Number x_r = rho / H;
+    return vec2(GetTextureCoordFromUnitRange(x_mu, TRANSMITTANCE_TEXTURE_WIDTH),
+                GetTextureCoordFromUnitRange(x_r, TRANSMITTANCE_TEXTURE_HEIGHT));
+}
+
+// The same coordinates from rho^2 = r^2 - R^2 and r mu, for a point given by its
+// distance d along a ray: d (d + 2 r mu) + (r - R)(r + R) and r mu + d are exact
+// to the ray's own precision, where r_d itself, a float of planet size, is
+// rounded to half a metre, which moves the optical depth of a thick air layer
+// of 1 km scale height by a percent.
+vec2 GetTransmittanceTextureUvFromRho2RMu(IN(AtmosphereParameters) atmosphere, Area rho2, Length r_mu) {
+    Area H2 = (atmosphere.top_radius - atmosphere.bottom_radius) * (atmosphere.top_radius + atmosphere.bottom_radius);
+    Length H = sqrt(H2);
+    rho2 = clamp(rho2, Area(0.0), H2);
+    Length rho = sqrt(rho2);
+    Length r = sqrt(rho2 + atmosphere.bottom_radius * atmosphere.bottom_radius);
+    Length d = ClampDistance(-r_mu + SafeSqrt(r_mu * r_mu + (H2 - rho2)));
     Length d_min = atmosphere.top_radius - r;
     Length d_max = rho + H;
     Number x_mu = (d - d_min) / (d_max - d_min);
@@ -129,43 +249,133 @@ Spectrum ComputeTransmittanceToTopAtmosphereBoundaryTexture(IN(AtmosphereParamet
     Length r;
     Number mu;
     GetRMuFromTransmittanceTextureUv(atmosphere, frag_coord / TRANSMITTANCE_TEXTURE_SIZE, r, mu);
-    return ComputeTransmittanceToTopAtmosphereBoundary(atmosphere, r, mu);
+    return exp(-ComputeOpticalDepthToTopAtmosphereBoundary(atmosphere, r, mu) / TRANSMITTANCE_TABLE_ROOT);
+}
+
+// ln T from the transmittance table at uv, with GL_LINEAR's texels and weights
+// (GL_CLAMP_TO_EDGE) but interpolated in log space: the optical depth is what
+// varies smoothly between texels, T itself by orders of magnitude across one
+// texel near the horizon in thick air, where a linear blend of T is far off and
+// a float rounding of uv (r is a float of planet size) moves it by a large
+// fraction of itself. LOG_ZERO texels (exactly 0) stay far below any other.
+// Without TRANSMITTANCE_LOG_LOOKUP: the filtered fetch (linear in T^(1/4)).
+Spectrum TransmittanceTableLog(IN(TransmittanceTexture) transmittance_texture, IN(vec2) uv) {
+    if (!TRANSMITTANCE_LOG_LOOKUP)
+        return SafeLogSpectrum(Spectrum(texture(transmittance_texture, uv))) * TRANSMITTANCE_TABLE_ROOT;
+    Number x = uv.x * Number(TRANSMITTANCE_TEXTURE_WIDTH) - 0.5;
+    Number y = uv.y * Number(TRANSMITTANCE_TEXTURE_HEIGHT) - 0.5;
+    Number x_floor = floor(x);
+    Number y_floor = floor(y);
+    Number wx = x - x_floor;
+    Number wy = y - y_floor;
+    int x0 = clamp(int(x_floor), 0, TRANSMITTANCE_TEXTURE_WIDTH - 1);
+    int x1 = clamp(int(x_floor) + 1, 0, TRANSMITTANCE_TEXTURE_WIDTH - 1);
+    int y0 = clamp(int(y_floor), 0, TRANSMITTANCE_TEXTURE_HEIGHT - 1);
+    int y1 = clamp(int(y_floor) + 1, 0, TRANSMITTANCE_TEXTURE_HEIGHT - 1);
+    Spectrum l00 = SafeLogSpectrum(Spectrum(texelFetch(transmittance_texture, ivec2(x0, y0), 0)));
+    Spectrum l10 = SafeLogSpectrum(Spectrum(texelFetch(transmittance_texture, ivec2(x1, y0), 0)));
+    Spectrum l01 = SafeLogSpectrum(Spectrum(texelFetch(transmittance_texture, ivec2(x0, y1), 0)));
+    Spectrum l11 = SafeLogSpectrum(Spectrum(texelFetch(transmittance_texture, ivec2(x1, y1), 0)));
+    return mix(mix(l00, l10, wx), mix(l01, l11, wx), wy) * TRANSMITTANCE_TABLE_ROOT;
+}
+
+// ln of the transmittance to the top boundary, and the transmittance itself.
+Spectrum GetLogTransmittanceToTopAtmosphereBoundary(IN(AtmosphereParameters) atmosphere,
+                                                    IN(TransmittanceTexture) transmittance_texture, Length r,
+                                                    Number mu) {
+    return TransmittanceTableLog(transmittance_texture, GetTransmittanceTextureUvFromRMu(atmosphere, r, mu));
 }
 
 Spectrum GetTransmittanceToTopAtmosphereBoundary(IN(AtmosphereParameters) atmosphere,
                                                  IN(TransmittanceTexture) transmittance_texture, Length r,
                                                  Number mu) {
-    vec2 uv = GetTransmittanceTextureUvFromRMu(atmosphere, r, mu);
-    return Spectrum(texture(transmittance_texture, uv));
+    if (TRANSMITTANCE_LOG_LOOKUP)
+        return exp(GetLogTransmittanceToTopAtmosphereBoundary(atmosphere, transmittance_texture, r, mu));
+    Spectrum t = Spectrum(texture(transmittance_texture, GetTransmittanceTextureUvFromRMu(atmosphere, r, mu)));
+    t = t * t;
+    return t * t;  // the table's T^(1/4), to the fourth power
 }
 
-// Transmittance between the point at (r, mu) and the point at distance d along
-// the ray: a ratio of two table lookups (Elek Eq. 19, Sperlhofer Eq. 4-16),
-// taken on the side of the ray that does not cross the ground.
+// near / far, at most 1, per channel; 0 where far is 0 (0 / 0 would be NaN, which
+// glm's min keeps and GLSL's may not).
+Number TransmittanceRatioOf(Number near_value, Number far_value) {
+    return far_value > 0.0 ? min(near_value / far_value, Number(1.0)) : Number(0.0);
+}
+Spectrum TransmittanceRatio(IN(Spectrum) near_value, IN(Spectrum) far_value) {
+    return Spectrum(TransmittanceRatioOf(near_value.x, far_value.x), TransmittanceRatioOf(near_value.y, far_value.y),
+                    TransmittanceRatioOf(near_value.z, far_value.z));
+}
+
+// ln(near / far), at most 0, per channel: a difference of logs, so neither a
+// transmittance that underflows nor 0 / 0 can occur; LOG_ZERO where far is
+// (interpolated towards) an exact 0.
+Number LogTransmittanceRatioOf(Number near_log, Number far_log) {
+    return far_log < LOG_ZERO ? LOG_ZERO : min(near_log - far_log, Number(0.0));
+}
+Spectrum LogTransmittanceRatio(IN(Spectrum) near_log, IN(Spectrum) far_log) {
+    return Spectrum(LogTransmittanceRatioOf(near_log.x, far_log.x), LogTransmittanceRatioOf(near_log.y, far_log.y),
+                    LogTransmittanceRatioOf(near_log.z, far_log.z));
+}
+
+// ln of the transmittance between the point at (r, mu) and the point at distance
+// d along the ray: a ratio of two table lookups (Elek Eq. 19, Sperlhofer Eq.
+// 4-16), taken on the side of the ray that does not cross the ground.
+Spectrum GetLogTransmittance(IN(AtmosphereParameters) atmosphere, IN(TransmittanceTexture) transmittance_texture,
+                             Length r, Number mu, Length d, bool ray_r_mu_intersects_ground) {
+    // The far point by rho_d^2 and r_d mu_d (see GetTransmittanceTextureUvFromRho2RMu).
+    Area rho_d2 = d * (d + 2.0 * r * mu) + (r - atmosphere.bottom_radius) * (r + atmosphere.bottom_radius);
+    Length r_mu_d = r * mu + d;
+    if (ray_r_mu_intersects_ground) {
+        return LogTransmittanceRatio(
+            TransmittanceTableLog(transmittance_texture, GetTransmittanceTextureUvFromRho2RMu(atmosphere, rho_d2, -r_mu_d)),
+            GetLogTransmittanceToTopAtmosphereBoundary(atmosphere, transmittance_texture, r, -mu));
+    } else {
+        return LogTransmittanceRatio(
+            GetLogTransmittanceToTopAtmosphereBoundary(atmosphere, transmittance_texture, r, mu),
+            TransmittanceTableLog(transmittance_texture, GetTransmittanceTextureUvFromRho2RMu(atmosphere, rho_d2, r_mu_d)));
+    }
+}
+
 Spectrum GetTransmittance(IN(AtmosphereParameters) atmosphere, IN(TransmittanceTexture) transmittance_texture,
                           Length r, Number mu, Length d, bool ray_r_mu_intersects_ground) {
+    if (TRANSMITTANCE_LOG_LOOKUP)
+        return exp(GetLogTransmittance(atmosphere, transmittance_texture, r, mu, d, ray_r_mu_intersects_ground));
+    // At render time: the ratio of the table's fourth roots, to the fourth power.
     Length r_d = ClampRadius(atmosphere, sqrt(d * d + 2.0 * r * mu * d + r * r));
     Number mu_d = ClampCosine((r * mu + d) / r_d);
+    Spectrum q;
     if (ray_r_mu_intersects_ground) {
-        return min(GetTransmittanceToTopAtmosphereBoundary(atmosphere, transmittance_texture, r_d, -mu_d) /
-                       GetTransmittanceToTopAtmosphereBoundary(atmosphere, transmittance_texture, r, -mu),
-                   Spectrum(1.0));
+        q = TransmittanceRatio(
+            Spectrum(texture(transmittance_texture, GetTransmittanceTextureUvFromRMu(atmosphere, r_d, -mu_d))),
+            Spectrum(texture(transmittance_texture, GetTransmittanceTextureUvFromRMu(atmosphere, r, -mu))));
     } else {
-        return min(GetTransmittanceToTopAtmosphereBoundary(atmosphere, transmittance_texture, r, mu) /
-                       GetTransmittanceToTopAtmosphereBoundary(atmosphere, transmittance_texture, r_d, mu_d),
-                   Spectrum(1.0));
+        q = TransmittanceRatio(
+            Spectrum(texture(transmittance_texture, GetTransmittanceTextureUvFromRMu(atmosphere, r, mu))),
+            Spectrum(texture(transmittance_texture, GetTransmittanceTextureUvFromRMu(atmosphere, r_d, mu_d))));
     }
+    q = q * q;
+    return q * q;
 }
 
 // Transmittance to the sun, times the visible fraction of the sun disc above
 // the horizon (Elek Eq. 17).
+// The fraction of the sun's disc above the horizon seen from radius r (altitude
+// r - R given separately where it is known more precisely than r).
+Number SunAboveHorizonFractionAt(IN(AtmosphereParameters) atmosphere, Length r, Length altitude, Number mu_s) {
+    Number sin_theta_h = atmosphere.bottom_radius / r;
+    Number cos_theta_h = -sqrt(max(altitude * (altitude + 2.0 * atmosphere.bottom_radius), Area(0.0))) / r;
+    return smoothstep(-sin_theta_h * atmosphere.sun_angular_radius, sin_theta_h * atmosphere.sun_angular_radius,
+                      mu_s - cos_theta_h);
+}
+
+Number SunAboveHorizonFraction(IN(AtmosphereParameters) atmosphere, Length r, Number mu_s) {
+    return SunAboveHorizonFractionAt(atmosphere, r, r - atmosphere.bottom_radius, mu_s);
+}
+
 Spectrum GetTransmittanceToSun(IN(AtmosphereParameters) atmosphere, IN(TransmittanceTexture) transmittance_texture,
                                Length r, Number mu_s) {
-    Number sin_theta_h = atmosphere.bottom_radius / r;
-    Number cos_theta_h = -sqrt(max(1.0 - sin_theta_h * sin_theta_h, 0.0));
     return GetTransmittanceToTopAtmosphereBoundary(atmosphere, transmittance_texture, r, mu_s) *
-           smoothstep(-sin_theta_h * atmosphere.sun_angular_radius, sin_theta_h * atmosphere.sun_angular_radius,
-                      mu_s - cos_theta_h);
+           SunAboveHorizonFraction(atmosphere, r, mu_s);
 }
 
 // ------------------------------------------------------- single scattering
@@ -188,17 +398,37 @@ Number RenderRayleighPhaseFunction(IN(AtmosphereParameters) atmosphere, Number n
     return atmosphere.elek_rayleigh_phase > 0.5 ? 0.8 * (1.4 + 0.5 * nu) / (4.0 * PI) : RayleighPhaseFunction(nu);
 }
 
+// The single scattering integrand at distance d along the ray, in the parts the
+// quadrature takes (see ExpLinearMean): per channel, the log of the transmittance
+// from the ray's origin to the point and from the point to the sun, plus each
+// profile's log density (rayleigh_log, mie_log); and the linear factors, the sun's
+// fraction above the horizon times each profile's linear density.
 void ComputeSingleScatteringIntegrand(IN(AtmosphereParameters) atmosphere,
                                       IN(TransmittanceTexture) transmittance_texture, Length r, Number mu,
                                       Number mu_s, Number nu, Length d, bool ray_r_mu_intersects_ground,
-                                      OUT(Spectrum) rayleigh, OUT(Spectrum) mie) {
-    Length r_d = ClampRadius(atmosphere, sqrt(d * d + 2.0 * r * mu * d + r * r));
+                                      OUT(Spectrum) rayleigh_log, OUT(Spectrum) mie_log, OUT(Number) rayleigh_linear,
+                                      OUT(Number) mie_linear) {
+    // The point's altitude from r_d^2 - R^2 = d (d + 2 r mu) + (r - R)(r + R), not
+    // r_d - R: at the ground end of a ray r_d is a float of planet size (0.5 m
+    // steps), which a 10 m scale height or the sun's horizon factor would feel.
+    Area r_d2_minus_R2 = max(d * (d + 2.0 * r * mu) + (r - atmosphere.bottom_radius) * (r + atmosphere.bottom_radius),
+                             Area(0.0));
+    Length r_d = ClampRadius(atmosphere, sqrt(r_d2_minus_R2 + atmosphere.bottom_radius * atmosphere.bottom_radius));
+    Length altitude_d = r_d2_minus_R2 / (r_d + atmosphere.bottom_radius);
     Number mu_s_d = ClampCosine((r * mu_s + d * nu) / r_d);
-    Spectrum transmittance =
-        GetTransmittance(atmosphere, transmittance_texture, r, mu, d, ray_r_mu_intersects_ground) *
-        GetTransmittanceToSun(atmosphere, transmittance_texture, r_d, mu_s_d);
-    rayleigh = transmittance * GetProfileDensity(atmosphere.rayleigh_density, r_d - atmosphere.bottom_radius);
-    mie = transmittance * GetProfileDensity(atmosphere.mie_density, r_d - atmosphere.bottom_radius);
+    Spectrum log_transmittance =
+        GetLogTransmittance(atmosphere, transmittance_texture, r, mu, d, ray_r_mu_intersects_ground) +
+        TransmittanceTableLog(transmittance_texture,
+                              GetTransmittanceTextureUvFromRho2RMu(atmosphere, r_d2_minus_R2, r * mu_s + d * nu));
+    Number sun_fraction = SunAboveHorizonFractionAt(atmosphere, r_d, altitude_d, mu_s_d);
+    Number rayleigh_log_density;
+    Number mie_log_density;
+    GetProfileDensityParts(atmosphere.rayleigh_density, altitude_d, rayleigh_log_density, rayleigh_linear);
+    GetProfileDensityParts(atmosphere.mie_density, altitude_d, mie_log_density, mie_linear);
+    rayleigh_log = log_transmittance + Spectrum(rayleigh_log_density);
+    mie_log = log_transmittance + Spectrum(mie_log_density);
+    rayleigh_linear *= sun_fraction;
+    mie_linear *= sun_fraction;
 }
 
 Length DistanceToNearestAtmosphereBoundary(IN(AtmosphereParameters) atmosphere, Length r, Number mu,
@@ -220,15 +450,30 @@ void ComputeSingleScattering(IN(AtmosphereParameters) atmosphere, IN(Transmittan
         DistanceToNearestAtmosphereBoundary(atmosphere, r, mu, ray_r_mu_intersects_ground) / Number(SAMPLE_COUNT);
     Spectrum rayleigh_sum = Spectrum(0.0);
     Spectrum mie_sum = Spectrum(0.0);
-    for (int i = 0; i <= SAMPLE_COUNT; ++i) {
+    Spectrum rayleigh_log_previous;
+    Spectrum mie_log_previous;
+    Number rayleigh_linear_previous;
+    Number mie_linear_previous;
+    ComputeSingleScatteringIntegrand(atmosphere, transmittance_texture, r, mu, mu_s, nu, Length(0.0),
+                                     ray_r_mu_intersects_ground, rayleigh_log_previous, mie_log_previous,
+                                     rayleigh_linear_previous, mie_linear_previous);
+    for (int i = 1; i <= SAMPLE_COUNT; ++i) {
         Length d_i = Number(i) * dx;
-        Spectrum rayleigh_i;
-        Spectrum mie_i;
+        Spectrum rayleigh_log_i;
+        Spectrum mie_log_i;
+        Number rayleigh_linear_i;
+        Number mie_linear_i;
         ComputeSingleScatteringIntegrand(atmosphere, transmittance_texture, r, mu, mu_s, nu, d_i,
-                                         ray_r_mu_intersects_ground, rayleigh_i, mie_i);
-        Number weight_i = (i == 0 || i == SAMPLE_COUNT) ? 0.5 : 1.0;
-        rayleigh_sum += rayleigh_i * weight_i;
-        mie_sum += mie_i * weight_i;
+                                         ray_r_mu_intersects_ground, rayleigh_log_i, mie_log_i, rayleigh_linear_i,
+                                         mie_linear_i);
+        rayleigh_sum += ExpLinearMeanSpectrum(rayleigh_log_previous, rayleigh_log_i, Spectrum(rayleigh_linear_previous),
+                                              Spectrum(rayleigh_linear_i));
+        mie_sum += ExpLinearMeanSpectrum(mie_log_previous, mie_log_i, Spectrum(mie_linear_previous),
+                                         Spectrum(mie_linear_i));
+        rayleigh_log_previous = rayleigh_log_i;
+        mie_log_previous = mie_log_i;
+        rayleigh_linear_previous = rayleigh_linear_i;
+        mie_linear_previous = mie_linear_i;
     }
     rayleigh = rayleigh_sum * dx * atmosphere.solar_irradiance * atmosphere.rayleigh_scattering;
     mie = mie_sum * dx * atmosphere.solar_irradiance * atmosphere.mie_scattering;
@@ -241,18 +486,19 @@ void ComputeSingleScattering(IN(AtmosphereParameters) atmosphere, IN(Transmittan
 // and rays that do not, so the discontinuity at the horizon falls between
 // texels rather than inside one.
 
-vec4 GetScatteringTextureUvwzFromRMuMuSNu(IN(AtmosphereParameters) atmosphere, Length r, Number mu, Number mu_s,
-                                          Number nu, bool ray_r_mu_intersects_ground) {
+// The coordinates from r, rho^2 = r^2 - R^2 and r mu, which a point along a ray
+// knows more precisely than its r (see GetTransmittanceTextureUvFromRho2RMu).
+vec4 GetScatteringTextureUvwzFromRRho2RMu(IN(AtmosphereParameters) atmosphere, Length r, Area rho2, Length r_mu,
+                                          Number mu_s, Number nu, bool ray_r_mu_intersects_ground) {
     Length H = sqrt((atmosphere.top_radius - atmosphere.bottom_radius) * (atmosphere.top_radius + atmosphere.bottom_radius));
-    Length rho = SafeSqrt(r * r - atmosphere.bottom_radius * atmosphere.bottom_radius);
+    Length rho = SafeSqrt(rho2);
     Number u_r = GetTextureCoordFromUnitRange(rho / H, SCATTERING_TEXTURE_R_SIZE);
 
-    Length r_mu = r * mu;
-    Area discriminant = RaySphereDiscriminant(r, mu, atmosphere.bottom_radius);
+    Area discriminant = r_mu * r_mu - rho2;  // RaySphereDiscriminant(r, mu, bottom_radius)
     Number u_mu;
     if (ray_r_mu_intersects_ground) {
         Length d = -r_mu - SafeSqrt(discriminant);
-        Length d_min = r - atmosphere.bottom_radius;
+        Length d_min = max(rho2, Area(0.0)) / (r + atmosphere.bottom_radius);  // r - R
         Length d_max = rho;
         u_mu = 0.5 - 0.5 * GetTextureCoordFromUnitRange(d_max == d_min ? 0.0 : (d - d_min) / (d_max - d_min),
                                                         SCATTERING_TEXTURE_MU_SIZE / 2);
@@ -275,12 +521,24 @@ vec4 GetScatteringTextureUvwzFromRMuMuSNu(IN(AtmosphereParameters) atmosphere, L
     return vec4(u_nu, u_mu_s, u_mu, u_r);
 }
 
+vec4 GetScatteringTextureUvwzFromRMuMuSNu(IN(AtmosphereParameters) atmosphere, Length r, Number mu, Number mu_s,
+                                          Number nu, bool ray_r_mu_intersects_ground) {
+    return GetScatteringTextureUvwzFromRRho2RMu(atmosphere, r,
+                                                (r - atmosphere.bottom_radius) * (r + atmosphere.bottom_radius),
+                                                r * mu, mu_s, nu, ray_r_mu_intersects_ground);
+}
+
 void GetRMuMuSNuFromScatteringTextureUvwz(IN(AtmosphereParameters) atmosphere, IN(vec4) uvwz, OUT(Length) r,
                                           OUT(Number) mu, OUT(Number) mu_s, OUT(Number) nu,
                                           OUT(bool) ray_r_mu_intersects_ground) {
     Length H = sqrt((atmosphere.top_radius - atmosphere.bottom_radius) * (atmosphere.top_radius + atmosphere.bottom_radius));
     Length rho = H * GetUnitRangeFromTextureCoord(uvwz.w, SCATTERING_TEXTURE_R_SIZE);
     r = sqrt(rho * rho + atmosphere.bottom_radius * atmosphere.bottom_radius);
+    // rho again from the rounded r (r - R is exact): the texel moves by a rounding
+    // of r, but the ray tangent to the ground built from this pair then really
+    // touches the ground, where a float r of planet size would leave it up to a
+    // metre above, enough to move the horizon of a setting sun by a tenth of its disc.
+    rho = SafeSqrt((r - atmosphere.bottom_radius) * (r + atmosphere.bottom_radius));
 
     if (uvwz.z < 0.5) {
         Length d_min = r - atmosphere.bottom_radius;
@@ -338,15 +596,19 @@ void ComputeSingleScatteringTexture(IN(AtmosphereParameters) atmosphere,
 }
 
 // Looks up a scattering table, interpolating between the two nu slices.
-Spectrum GetScattering(IN(AtmosphereParameters) atmosphere, IN(ScatteringTexture) scattering_texture, Length r,
-                       Number mu, Number mu_s, Number nu, bool ray_r_mu_intersects_ground) {
-    vec4 uvwz = GetScatteringTextureUvwzFromRMuMuSNu(atmosphere, r, mu, mu_s, nu, ray_r_mu_intersects_ground);
+Spectrum GetScatteringAtUvwz(IN(ScatteringTexture) scattering_texture, IN(vec4) uvwz) {
     Number tex_coord_x = uvwz.x * Number(SCATTERING_TEXTURE_NU_SIZE - 1);
     Number tex_x = floor(tex_coord_x);
     Number lerp = tex_coord_x - tex_x;
     vec3 uvw0 = vec3((tex_x + uvwz.y) / Number(SCATTERING_TEXTURE_NU_SIZE), uvwz.z, uvwz.w);
     vec3 uvw1 = vec3((tex_x + 1.0 + uvwz.y) / Number(SCATTERING_TEXTURE_NU_SIZE), uvwz.z, uvwz.w);
     return Spectrum(texture(scattering_texture, uvw0) * (1.0 - lerp) + texture(scattering_texture, uvw1) * lerp);
+}
+
+Spectrum GetScattering(IN(AtmosphereParameters) atmosphere, IN(ScatteringTexture) scattering_texture, Length r,
+                       Number mu, Number mu_s, Number nu, bool ray_r_mu_intersects_ground) {
+    return GetScatteringAtUvwz(
+        scattering_texture, GetScatteringTextureUvwzFromRMuMuSNu(atmosphere, r, mu, mu_s, nu, ray_r_mu_intersects_ground));
 }
 
 // Radiance of a given scattering order arriving at (r, mu) with the phase
@@ -472,7 +734,16 @@ Spectrum ComputeScatteringDensity(IN(AtmosphereParameters) atmosphere, IN(Transm
     const int SAMPLE_COUNT = 16;
     const Number dphi = PI / Number(SAMPLE_COUNT);
     const Number dtheta = PI / Number(SAMPLE_COUNT);
-    Spectrum rayleigh_mie = Spectrum(0.0);
+    // The phase functions are integrated on the same grid as the light and each
+    // sum divided by the grid's integral of its phase function: the grid's cells
+    // (11 degrees) are as wide as a Mie forward peak (g = 0.8), whose sum over them
+    // is far from 1, and every order multiplied the error: a thick haze gave 1.3
+    // times the light it received. Normalized, the grid scatters exactly the light
+    // that arrives (an isotropic radiance comes out as it went in).
+    Spectrum rayleigh_sum = Spectrum(0.0);
+    Spectrum mie_sum = Spectrum(0.0);
+    Number rayleigh_norm = 0.0;
+    Number mie_norm = 0.0;
     Number rayleigh_density = GetProfileDensity(atmosphere.rayleigh_density, r - atmosphere.bottom_radius);
     Number mie_density = GetProfileDensity(atmosphere.mie_density, r - atmosphere.bottom_radius);
 
@@ -510,14 +781,16 @@ Spectrum ComputeScatteringDensity(IN(AtmosphereParameters) atmosphere, IN(Transm
             incident_radiance += transmittance_to_ground * ground_albedo * (1.0 / PI) * ground_irradiance;
 
             Number nu2 = dot(omega, omega_i);
-            rayleigh_mie += incident_radiance *
-                            (atmosphere.rayleigh_scattering * rayleigh_density * RayleighPhaseFunction(nu2) +
-                             atmosphere.mie_scattering * mie_density *
-                                 MiePhaseFunction(atmosphere.mie_phase_function_g, nu2)) *
-                            domega_i;
+            Number rayleigh_phase = RayleighPhaseFunction(nu2) * domega_i;
+            Number mie_phase = MiePhaseFunction(atmosphere.mie_phase_function_g, nu2) * domega_i;
+            rayleigh_sum += incident_radiance * rayleigh_phase;
+            mie_sum += incident_radiance * mie_phase;
+            rayleigh_norm += rayleigh_phase;
+            mie_norm += mie_phase;
         }
     }
-    return rayleigh_mie;
+    return atmosphere.rayleigh_scattering * rayleigh_density * (rayleigh_sum / rayleigh_norm) +
+           atmosphere.mie_scattering * mie_density * (mie_sum / mie_norm);
 }
 
 // One more order of scattering: the scattering density integrated along the
@@ -528,17 +801,31 @@ Spectrum ComputeMultipleScattering(IN(AtmosphereParameters) atmosphere, IN(Trans
     const int SAMPLE_COUNT = 50;
     Length dx =
         DistanceToNearestAtmosphereBoundary(atmosphere, r, mu, ray_r_mu_intersects_ground) / Number(SAMPLE_COUNT);
+    // The density J (a table, linear between samples) times the transmittance
+    // from the ray's origin (exponential between samples; see ExpLinearMean).
     Spectrum rayleigh_mie_sum = Spectrum(0.0);
+    Spectrum log_transmittance_previous = Spectrum(0.0);
+    Spectrum density_previous = Spectrum(0.0);
     for (int i = 0; i <= SAMPLE_COUNT; ++i) {
         Length d_i = Number(i) * dx;
-        Length r_i = ClampRadius(atmosphere, sqrt(d_i * d_i + 2.0 * r * mu * d_i + r * r));
-        Number mu_i = ClampCosine((r * mu + d_i) / r_i);
+        // The point by rho_i^2 and r_i mu_i, as GetLogTransmittance takes it.
+        Area H2 = (atmosphere.top_radius - atmosphere.bottom_radius) * (atmosphere.top_radius + atmosphere.bottom_radius);
+        Area rho_i2 = clamp(d_i * (d_i + 2.0 * r * mu) +
+                                (r - atmosphere.bottom_radius) * (r + atmosphere.bottom_radius),
+                            Area(0.0), H2);
+        Length r_i = sqrt(rho_i2 + atmosphere.bottom_radius * atmosphere.bottom_radius);
         Number mu_s_i = ClampCosine((r * mu_s + d_i * nu) / r_i);
-        Spectrum rayleigh_mie_i =
-            GetScattering(atmosphere, scattering_density_texture, r_i, mu_i, mu_s_i, nu, ray_r_mu_intersects_ground) *
-            GetTransmittance(atmosphere, transmittance_texture, r, mu, d_i, ray_r_mu_intersects_ground) * dx;
-        Number weight_i = (i == 0 || i == SAMPLE_COUNT) ? 0.5 : 1.0;
-        rayleigh_mie_sum += rayleigh_mie_i * weight_i;
+        Spectrum density_i = GetScatteringAtUvwz(
+            scattering_density_texture, GetScatteringTextureUvwzFromRRho2RMu(atmosphere, r_i, rho_i2, r * mu + d_i, mu_s_i,
+                                                                             nu, ray_r_mu_intersects_ground));
+        Spectrum log_transmittance_i =
+            GetLogTransmittance(atmosphere, transmittance_texture, r, mu, d_i, ray_r_mu_intersects_ground);
+        if (i > 0)
+            rayleigh_mie_sum += ExpLinearMeanSpectrum(log_transmittance_previous, log_transmittance_i,
+                                                      density_previous, density_i) *
+                                dx;
+        log_transmittance_previous = log_transmittance_i;
+        density_previous = density_i;
     }
     return rayleigh_mie_sum;
 }

@@ -15,20 +15,22 @@ void addAtmosphereParams(std::vector<ParamSpec>& table) {
         table.push_back(ParamSpec{"atmosphere", key, unit, lo, hi, help, std::move(field)});
     };
     add("top_radius_km", "km", 1.0, 2e5,
-        "Radius of the top of the atmosphere, from the planet centre; must exceed planet.radius_km.",
+        "Radius of the top of the atmosphere, from the planet centre; at least 1 km and 1e-4 of the radius above "
+        "planet.radius_km (the tables end where the air does).",
         [](Scene& s) { return ParamRef{&s.atmosphere.top_radius_km}; });
     add("rayleigh_scattering_per_m", "1/m", 0.0, 0.01,
         "Rayleigh (molecular) scattering coefficient at sea level (R, G, B at 680, 550, 440 nm).",
         [](Scene& s) { return ParamRef{&s.atmosphere.rayleigh_scattering_per_m}; });
-    add("rayleigh_scale_height_km", "km", 0.01, 1000.0,
-        "Altitude over which the Rayleigh density falls by a factor e.",
+    add("rayleigh_scale_height_km", "km", 0.2, 1000.0,
+        "Altitude over which the Rayleigh density falls by a factor e; at least 3e-5 of planet.radius_km.",
         [](Scene& s) { return ParamRef{&s.atmosphere.rayleigh_scale_height_km}; });
     add("mie_scattering_per_m", "1/m", 0.0, 0.01, "Mie (aerosol) scattering coefficient at sea level (R, G, B).",
         [](Scene& s) { return ParamRef{&s.atmosphere.mie_scattering_per_m}; });
     add("mie_extinction_per_m", "1/m", 0.0, 0.01,
         "Mie extinction (scattering + absorption) at sea level (R, G, B); at least mie_scattering_per_m.",
         [](Scene& s) { return ParamRef{&s.atmosphere.mie_extinction_per_m}; });
-    add("mie_scale_height_km", "km", 0.01, 1000.0, "Altitude over which the Mie density falls by a factor e.",
+    add("mie_scale_height_km", "km", 0.2, 1000.0,
+        "Altitude over which the Mie density falls by a factor e; at least 3e-5 of planet.radius_km.",
         [](Scene& s) { return ParamRef{&s.atmosphere.mie_scale_height_km}; });
     add("mie_g", "", -0.999, 0.999, "Mie phase asymmetry g (Cornette-Shanks); > 0 scatters forward.",
         [](Scene& s) { return ParamRef{&s.atmosphere.mie_g}; });

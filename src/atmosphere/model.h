@@ -24,6 +24,7 @@ using Area = double;
 using vec2 = glm::dvec2;
 using vec3 = glm::dvec3;
 using vec4 = glm::dvec4;
+using ivec2 = glm::ivec2;
 using Spectrum = glm::dvec3;
 using glm::clamp;
 using glm::cos;
@@ -41,6 +42,7 @@ using glm::sin;
 using glm::smoothstep;
 using glm::sqrt;
 using std::abs;
+using planet::atmosphere::texelFetch;
 using planet::atmosphere::texture;
 #define IN(x) const x&
 #define OUT(x) x&
@@ -48,8 +50,11 @@ using planet::atmosphere::texture;
 
 class Model {
 public:
-    explicit Model(const TableSizes& sizes)
-        : TRANSMITTANCE_TEXTURE_WIDTH(sizes.transmittance_width),
+    // precompute: read the transmittance table as the precomputation does
+    // (TRANSMITTANCE_LOG_LOOKUP in functions.glsl); false: as the frame does.
+    explicit Model(const TableSizes& sizes, bool precompute = false)
+        : TRANSMITTANCE_LOG_LOOKUP(precompute),
+          TRANSMITTANCE_TEXTURE_WIDTH(sizes.transmittance_width),
           TRANSMITTANCE_TEXTURE_HEIGHT(sizes.transmittance_height),
           SCATTERING_TEXTURE_R_SIZE(sizes.scattering_r),
           SCATTERING_TEXTURE_MU_SIZE(sizes.scattering_mu),
@@ -65,6 +70,7 @@ public:
     using ScatteringTexture = Table3D;
     using IrradianceTexture = Table2D;
 
+    const bool TRANSMITTANCE_LOG_LOOKUP;
     const int TRANSMITTANCE_TEXTURE_WIDTH;
     const int TRANSMITTANCE_TEXTURE_HEIGHT;
     const int SCATTERING_TEXTURE_R_SIZE;

@@ -67,7 +67,7 @@ private:
 ReferenceResult computeReferenceTables(const AtmosphereParameters& atmosphere, const TableSizes& sizes,
                                        int scatteringOrders, const ProgressFn& progress, int threads) {
     if (threads <= 0) threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
-    Model model(sizes);
+    Model model(sizes, /*precompute=*/true);
     ReferenceResult result;
     result.tables = AtmosphereTables(sizes);
     AtmosphereTables& out = result.tables;

@@ -32,7 +32,7 @@ namespace planet::atmosphere {
 
 // Bump whenever the model's code (shaders/atmosphere/*.glsl, the precompute
 // passes) changes what the tables hold: older cache entries then stop matching.
-constexpr int kModelVersion = 1;
+constexpr int kModelVersion = 2;  // 2: exponential quadrature along rays, the air's top cut where it ends
 
 // 16 lower-case hex digits of a 64-bit FNV-1a hash of the parameters (each
 // double field by field), the sizes, the orders and kModelVersion.

@@ -74,6 +74,8 @@ struct Table3D {
 // texels: what texture() returns for a GL_LINEAR, GL_CLAMP_TO_EDGE texture.
 glm::dvec4 texture(const Table2D& table, const glm::dvec2& uv);
 glm::dvec4 texture(const Table3D& table, const glm::dvec3& uvw);
+// One texel, as GLSL's texelFetch at level 0 (the coordinates must be in range).
+inline glm::dvec4 texelFetch(const Table2D& table, const glm::ivec2& xy, int /*lod*/) { return table.at(xy.x, xy.y); }
 
 // The full set of precomputed tables.
 struct AtmosphereTables {

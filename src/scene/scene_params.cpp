@@ -7,6 +7,7 @@
 #include <variant>
 
 #include "atmosphere/atmosphere_params_table.h"
+#include "atmosphere/parameters.h"
 #include "clouds/cloud_params_table.h"
 #include "ocean/ocean_params_table.h"
 #include "terrain/terrain_params_table.h"
@@ -121,6 +122,11 @@ std::vector<SceneProblem> validateScene(const Scene& scene) {
                                 " 1/m; extinction is scattering + absorption, so at least scattering"});
         break;  // one problem per rule: the first component that breaks it
     }
+    // Where the atmosphere tables hold (atmosphere/parameters.h): only for a scene whose
+    // ranges and the rules above pass, since the limits evaluate the model.
+    if (problems.empty())
+        for (const atmosphere::AtmosphereLimitProblem& p : atmosphere::checkAtmosphereLimits(scene))
+            problems.push_back({p.field, p.message});
     if (scene.terrain.grid_exponent != 2 && scene.terrain.grid_exponent != 4)
         problems.push_back({"terrain.grid_exponent", "must be 2 or 4 (Michelic Eq. 2), not " +
                                                          std::to_string(scene.terrain.grid_exponent)});

@@ -1,6 +1,7 @@
 // Atmosphere precomputation, step 2: direct sun irradiance on the ground
 // for every (mu_s, r) texel. Writes delta irradiance only: the accumulated
 // irradiance table holds sky light, the direct sun is added at render time.
+#define TRANSMITTANCE_LOG_LOOKUP true  // the precomputation reads the transmittance table in log space
 #include "atmosphere/definitions.glsl"
 #include "atmosphere/uniforms.glsl"
 #include "atmosphere/functions.glsl"

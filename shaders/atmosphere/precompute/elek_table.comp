@@ -2,6 +2,7 @@
 // §4.1.1, shaders/atmosphere/elek_table.glsl) from the finished 4D scattering
 // and single Mie tables, looked up at azimuth omega = 0. Phase-free, like the
 // 4D tables. Dispatched a group of r layers at a time, starting at layerOffset.
+#define TRANSMITTANCE_LOG_LOOKUP true  // the precomputation reads the transmittance table in log space
 #include "atmosphere/definitions.glsl"
 #include "atmosphere/uniforms.glsl"
 #include "atmosphere/functions.glsl"

@@ -1,6 +1,7 @@
 // Atmosphere precomputation, order k step b: sky irradiance on the ground
 // from the radiance of order k - 1 (Elek Eq. 16). Writes delta irradiance and
 // adds it to the accumulated irradiance table. scatteringOrder is k - 1.
+#define TRANSMITTANCE_LOG_LOOKUP true  // the precomputation reads the transmittance table in log space
 #include "atmosphere/definitions.glsl"
 #include "atmosphere/uniforms.glsl"
 #include "atmosphere/functions.glsl"

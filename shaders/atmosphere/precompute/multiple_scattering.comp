@@ -2,6 +2,7 @@
 // scattering density integrated along the view ray (Elek Eq. 13). Writes
 // delta multiple (phase included) and adds it, divided by the Rayleigh phase,
 // to the phase-free scattering table. Dispatched a group of r layers at a time.
+#define TRANSMITTANCE_LOG_LOOKUP true  // the precomputation reads the transmittance table in log space
 #include "atmosphere/definitions.glsl"
 #include "atmosphere/uniforms.glsl"
 #include "atmosphere/functions.glsl"

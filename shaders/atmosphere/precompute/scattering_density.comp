@@ -2,6 +2,7 @@
 // (Elek Eq. 12) from the radiance of order k - 1 (delta Rayleigh and Mie for
 // k = 2, delta multiple otherwise) and the ground's delta irradiance.
 // Writes delta scattering density. Dispatched a group of r layers at a time.
+#define TRANSMITTANCE_LOG_LOOKUP true  // the precomputation reads the transmittance table in log space
 #include "atmosphere/definitions.glsl"
 #include "atmosphere/uniforms.glsl"
 #include "atmosphere/functions.glsl"

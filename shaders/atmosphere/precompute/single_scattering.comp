@@ -3,6 +3,7 @@
 // delta Mie, the scattering table (rgb: Rayleigh, a: Mie red, Bruneton's
 // combined layout) and the single Mie table. Dispatched a group of r layers
 // at a time, starting at layerOffset.
+#define TRANSMITTANCE_LOG_LOOKUP true  // the precomputation reads the transmittance table in log space
 #include "atmosphere/definitions.glsl"
 #include "atmosphere/uniforms.glsl"
 #include "atmosphere/functions.glsl"

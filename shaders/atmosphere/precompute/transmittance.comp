@@ -2,6 +2,7 @@
 // (Elek Eq. 9) for every (r, mu) texel. Writes the transmittance table.
 // Driven by src/atmosphere/precompute_gpu.cpp, which follows
 // computeReferenceTables() (src/atmosphere/reference_tables.cpp) step by step.
+#define TRANSMITTANCE_LOG_LOOKUP true  // the precomputation reads the transmittance table in log space
 #include "atmosphere/definitions.glsl"
 #include "atmosphere/uniforms.glsl"
 #include "atmosphere/functions.glsl"
