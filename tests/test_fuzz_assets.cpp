@@ -216,7 +216,10 @@ struct FuzzCase {
 // The fields whose cross-field rules validateScene may blame (scene_params.h).
 bool isCrossFieldRule(const std::string& field) {
     for (const char* f : {"atmosphere.top_radius_km", "atmosphere.mie_extinction_per_m", "terrain.grid_exponent",
-                          "ocean.fade_end", "ocean.wave", "clouds.top_altitude_km"})
+                          "ocean.fade_end", "ocean.wave", "clouds.top_altitude_km",
+                          // where the atmosphere tables hold (atmosphere/parameters.h, checkAtmosphereLimits)
+                          "planet.radius_km", "atmosphere.rayleigh_scale_height_km", "atmosphere.mie_scale_height_km",
+                          "atmosphere.rayleigh_scattering_per_m", "atmosphere.ozone_absorption_per_m"})
         if (field == f) return true;
     return false;
 }

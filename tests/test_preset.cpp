@@ -208,11 +208,11 @@ TEST(Preset, TopRadiusBelowPlanetRadiusNamesTheLine) {
     EXPECT_EQ(big.line, 0);
     EXPECT_TRUE(contains(big.message, "6420")) << big.message;
     EXPECT_TRUE(contains(big.message, "7000")) << big.message;
-    // Just above is fine (without clouds: 0.5 km of air has no room for the default layer).
-    EXPECT_NO_THROW(parsePreset("[planet]\nradius_km = 7000\n[atmosphere]\ntop_radius_km = 7000.5\n[clouds]\nenabled = false\n",
+    // Just above is fine (without clouds: 1 km of air, the least the tables take, has no room for the default layer).
+    EXPECT_NO_THROW(parsePreset("[planet]\nradius_km = 7000\n[atmosphere]\ntop_radius_km = 7001\n[clouds]\nenabled = false\n",
                                 "ok.toml"));
     const InputError clouds =
-        expectInputError([] { parsePreset("[planet]\nradius_km = 7000\n[atmosphere]\ntop_radius_km = 7000.5\n", "c.toml"); });
+        expectInputError([] { parsePreset("[planet]\nradius_km = 7000\n[atmosphere]\ntop_radius_km = 7001\n", "c.toml"); });
     EXPECT_EQ(clouds.field, "clouds.top_altitude_km");
 }
 
@@ -270,19 +270,19 @@ Scene modifiedAtmosphere() {
     Scene s;
     s.planet.radius_km = 3389.5;
     AtmosphereParams& a = s.atmosphere;
-    a.top_radius_km = 3389.5 + 1.0 / 3.0;
-    a.rayleigh_scattering_per_m = {1.16e-6, 0.1 * 2.71e-5, 0.01};
+    a.top_radius_km = 3389.5 + 4.0 / 3.0;  // the tables take 1 km of air at the least
+    a.rayleigh_scattering_per_m = {1.16e-6, 0.1 * 2.71e-5, 1e-4};  // optical depth <= 60 (atmosphere/parameters.h)
     a.rayleigh_scale_height_km = 11.1;
     a.mie_scattering_per_m = {6.0e-6, 4.5e-6, 0.0};
     a.mie_extinction_per_m = {6.0e-6, std::nextafter(4.5e-6, 1.0), 1e-300};
-    a.mie_scale_height_km = 0.01;
+    a.mie_scale_height_km = 0.2;
     a.mie_g = -0.999;
     a.ozone_absorption_per_m = {0.0, 0.0, 0.0};
     a.ozone_peak_altitude_km = 0.0;
     a.ozone_width_km = 1000.0;
     a.ground_albedo = {0.3, 0.2, 0.1 + 0.02};
     a.scattering_orders = 7;
-    s.clouds.enabled = false;  // no room for them in a third of a km of air
+    s.clouds.enabled = false;  // no room for them in a km and a third of air
     a.min_sun_elevation_deg = -90.0;
     a.elek_rayleigh_phase = true;
     return s;
