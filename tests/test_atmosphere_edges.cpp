@@ -33,6 +33,7 @@
 #include "atmosphere/reference_tables.h"
 #include "gl_test_support.h"
 #include "scene/preset.h"
+#include "table_error.h"
 #include "test_util.h"
 
 using namespace planet;
@@ -42,40 +43,7 @@ namespace {
 
 std::filesystem::path shaderRoot() { return std::filesystem::path(PLANET_SOURCE_DIR) / "shaders"; }
 
-// As tests/test_atmosphere_gpu.cpp: the largest relative error over a table's
-// texels (all four channels), relative to max(|ref|, 1e-3 * the table's largest
-// |ref|), and the count of texels with a channel off by more than 1 %.
-struct TableError {
-    double maxRelative = 0.0;
-    std::size_t texelsOver1Percent = 0;
-    std::size_t worstTexel = 0;
-    double gpu = 0.0, ref = 0.0;
-};
-
-TableError compare(const std::vector<glm::dvec4>& gpu, const std::vector<glm::dvec4>& ref) {
-    EXPECT_EQ(gpu.size(), ref.size());
-    double largest = 0.0;
-    for (const glm::dvec4& v : ref)
-        for (int c = 0; c < 4; ++c) largest = std::max(largest, std::abs(v[c]));
-    const double floor = std::max(1e-3 * largest, 1e-30);
-    TableError e;
-    for (std::size_t i = 0; i < std::min(gpu.size(), ref.size()); ++i) {
-        bool over = false;
-        for (int c = 0; c < 4; ++c) {
-            double rel = std::abs(gpu[i][c] - ref[i][c]) / std::max(std::abs(ref[i][c]), floor);
-            if (!std::isfinite(gpu[i][c]) || !std::isfinite(ref[i][c])) rel = INFINITY;
-            over = over || rel > 0.01;
-            if (rel > e.maxRelative) {
-                e.maxRelative = rel;
-                e.worstTexel = i;
-                e.gpu = gpu[i][c];
-                e.ref = ref[i][c];
-            }
-        }
-        if (over) ++e.texelsOver1Percent;
-    }
-    return e;
-}
+using test::TableError;
 
 // A scene from preset text, as `planet --preset` reads it (ranges and cross-field rules).
 Scene scene(const std::string& toml) { return parsePreset(toml, "edge.toml").scene; }
@@ -159,7 +127,7 @@ TEST_P(AtmosphereEdges, GpuTablesMatchTheDoubleReferenceAndConserveEnergy) {
                         {"single Mie", gpu.singleMie.texels, ref.singleMie.texels, 0.015, true},
                         {"irradiance", gpu.irradiance.texels, ref.irradiance.texels, 0.01, false}};
     for (const Row& row : rows) {
-        const TableError e = compare(row.gpu, row.ref);
+        const TableError e = test::compareTables(row.gpu, row.ref);
         std::printf("  %-18s %-13s max relative error %.3e (texel %zu: gpu %.5e ref %.5e), %zu of %zu texels > 1%%\n",
                     edge.name, row.name, e.maxRelative, e.worstTexel, e.gpu, e.ref, e.texelsOver1Percent,
                     row.ref.size());

@@ -13,6 +13,7 @@
 #include "atmosphere/precompute_gpu.h"
 #include "atmosphere/reference_tables.h"
 #include "gl_test_support.h"
+#include "table_error.h"
 
 using namespace planet;
 using namespace planet::atmosphere;
@@ -25,41 +26,7 @@ AtmosphereParameters earth() { return makeAtmosphereParameters(Scene{}); }
 
 std::filesystem::path shaderRoot() { return std::filesystem::path(PLANET_SOURCE_DIR) / "shaders"; }
 
-// Largest relative error over a table's texels (all four channels), relative to
-// max(|ref|, floor) with floor = 1e-3 * the table's largest |ref|: texels that
-// are essentially zero (deep shadow, night side) count in absolute terms.
-struct TableError {
-    double maxRelative = 0.0;
-    std::size_t worstTexel = 0;
-    int worstChannel = 0;
-    double gpu = 0.0, ref = 0.0;
-    std::size_t texelsOver1Percent = 0;  // texels with any channel off by more than 1%
-};
-
-TableError compare(const std::vector<glm::dvec4>& gpu, const std::vector<glm::dvec4>& ref) {
-    EXPECT_EQ(gpu.size(), ref.size());
-    double largest = 0.0;
-    for (const glm::dvec4& v : ref)
-        for (int c = 0; c < 4; ++c) largest = std::max(largest, std::abs(v[c]));
-    const double floor = std::max(1e-3 * largest, 1e-30);
-    TableError e;
-    for (std::size_t i = 0; i < std::min(gpu.size(), ref.size()); ++i) {
-        bool over = false;
-        for (int c = 0; c < 4; ++c) {
-            const double rel = std::abs(gpu[i][c] - ref[i][c]) / std::max(std::abs(ref[i][c]), floor);
-            over = over || rel > 0.01;
-            if (rel > e.maxRelative) {
-                e.maxRelative = rel;
-                e.worstTexel = i;
-                e.worstChannel = c;
-                e.gpu = gpu[i][c];
-                e.ref = ref[i][c];
-            }
-        }
-        if (over) ++e.texelsOver1Percent;
-    }
-    return e;
-}
+using test::TableError;
 
 bool allFinite(const std::vector<glm::dvec4>& texels) {
     for (const glm::dvec4& v : texels)
@@ -131,7 +98,7 @@ TEST_F(AtmosphereGpu, MatchesCpuReferenceTexelByTexel) {
                         {"single Mie", gpu.singleMie.texels, ref.singleMie.texels, 0.015},
                         {"irradiance", gpu.irradiance.texels, ref.irradiance.texels, 0.01}};
     for (const Row& row : rows) {
-        const TableError e = compare(row.gpu, row.ref);
+        const TableError e = test::compareTables(row.gpu, row.ref);
         std::printf("  %-14s max relative error %.3e (texel %zu channel %d: gpu %.6e ref %.6e), %zu of %zu texels > 1%%\n",
                     row.name, e.maxRelative, e.worstTexel, e.worstChannel, e.gpu, e.ref, e.texelsOver1Percent,
                     row.ref.size());

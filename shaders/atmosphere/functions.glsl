@@ -197,16 +197,22 @@ Number GetUnitRangeFromTextureCoord(Number u, int texture_size) {
 // Transmittance table coordinates: r through rho (distance to the horizon),
 // mu through the distance to the top boundary, both mapped linearly, which puts
 // samples where the function changes fastest (near the horizon).
-vec2 GetTransmittanceTextureUvFromRMu(IN(AtmosphereParameters) atmosphere, Length r, Number mu) {
-    Length H = sqrt((atmosphere.top_radius - atmosphere.bottom_radius) * (atmosphere.top_radius + atmosphere.bottom_radius));
-    Length rho = SafeSqrt((r - atmosphere.bottom_radius) * (r + atmosphere.bottom_radius));  // r - R exact near R
-    Length d = DistanceToTopAtmosphereBoundary(atmosphere, r, mu);
+// The coordinates from r, rho (distance to the horizon), H (rho at the top) and d (distance to
+// the top boundary along the ray): both mapped linearly over their ranges.
+vec2 TransmittanceTextureUv(IN(AtmosphereParameters) atmosphere, Length r, Length rho, Length H, Length d) {
     Length d_min = atmosphere.top_radius - r;
     Length d_max = rho + H;
     Number x_mu = (d - d_min) / (d_max - d_min);
     Number x_r = rho / H;
     return vec2(GetTextureCoordFromUnitRange(x_mu, TRANSMITTANCE_TEXTURE_WIDTH),
                 GetTextureCoordFromUnitRange(x_r, TRANSMITTANCE_TEXTURE_HEIGHT));
+}
+
+vec2 GetTransmittanceTextureUvFromRMu(IN(AtmosphereParameters) atmosphere, Length r, Number mu) {
+    Length H = sqrt((atmosphere.top_radius - atmosphere.bottom_radius) * (atmosphere.top_radius + atmosphere.bottom_radius));
+    Length rho = SafeSqrt((r - atmosphere.bottom_radius) * (r + atmosphere.bottom_radius));  // r - R exact near R
+    Length d = DistanceToTopAtmosphereBoundary(atmosphere, r, mu);
+    return TransmittanceTextureUv(atmosphere, r, rho, H, d);
 }
 
 // The same coordinates from rho^2 = r^2 - R^2 and r mu, for a point given by its
@@ -221,12 +227,7 @@ vec2 GetTransmittanceTextureUvFromRho2RMu(IN(AtmosphereParameters) atmosphere, A
     Length rho = sqrt(rho2);
     Length r = sqrt(rho2 + atmosphere.bottom_radius * atmosphere.bottom_radius);
     Length d = ClampDistance(-r_mu + SafeSqrt(r_mu * r_mu + (H2 - rho2)));
-    Length d_min = atmosphere.top_radius - r;
-    Length d_max = rho + H;
-    Number x_mu = (d - d_min) / (d_max - d_min);
-    Number x_r = rho / H;
-    return vec2(GetTextureCoordFromUnitRange(x_mu, TRANSMITTANCE_TEXTURE_WIDTH),
-                GetTextureCoordFromUnitRange(x_r, TRANSMITTANCE_TEXTURE_HEIGHT));
+    return TransmittanceTextureUv(atmosphere, r, rho, H, d);
 }
 
 void GetRMuFromTransmittanceTextureUv(IN(AtmosphereParameters) atmosphere, IN(vec2) uv, OUT(Length) r,
