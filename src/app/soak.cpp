@@ -31,7 +31,7 @@ double residentMiB() {
 }
 
 // A path with a keyframe at every view, in the order the views were loaded, kEvery frames
-// apart at its natural rate, and back to the first.
+// apart at its natural rate, and back to the first (so at least two keyframes).
 CameraPath tourOfViews(const Session& session) {
     if (session.views.empty()) throw InputError("--suite soak: no views to fly through");
     CameraPathFile file;
@@ -51,7 +51,6 @@ CameraPath tourOfViews(const Session& session) {
         k.fov_deg = v.fov_deg;
         file.keyframes.push_back(k);
     }
-    if (file.keyframes.size() < 2) file.keyframes.push_back(file.keyframes.back());
     return CameraPath(file, session.scene.planetRadiusM(), [&session](const glm::dvec3& direction) {
         return terrain::surfaceHeightM(session.ground, direction);
     });
