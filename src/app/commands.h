@@ -35,7 +35,11 @@ struct RenderOptions {
     std::optional<double> exposure;
     std::string path;                  // camera path (name under assets/paths or a file): a sequence instead of a still
     std::optional<int> frames;         // with path: this many frames evenly in time (default: duration x fps + 1)
+    std::optional<int> samples;        // jittered frames averaged per image (default: kStillSamples, 1 with path)
 };
+
+// Jittered frames a still averages by default (render --samples; README "Anti-aliasing").
+constexpr int kStillSamples = 4;
 
 struct BenchOptions {
     CommonOptions common;
@@ -84,6 +88,7 @@ struct CompareOptions {
     std::string test;       // A.exr: the image judged
     std::string reference;  // B.exr: the reference (errors are relative to its luminance)
     std::string diff;       // difference image, .png (false colour) or .exr (linear); empty: none
+    int referenceScale = 1; // B is this many times A's size: box-averaged scale x scale down first
     // Limits, as fractions (0.005 = 0.5 %); unset: not checked.
     std::optional<double> maxMean;           // mean relative error
     std::optional<double> maxP99;            // 99th percentile of the relative error
@@ -100,12 +105,15 @@ int runBake(const BakeOptions& options);
 int runCompare(const CompareOptions& options);  // throws when a limit is exceeded or a pixel is NaN / Inf
 
 // Renders one still headlessly (shared by `render` and explore's no-display fallback).
+// `samples` jittered frames, each at full rate, averaged in linear HDR (1: one unjittered frame).
 void renderStill(const CommonOptions& common, const std::vector<std::string>& outputs,
-                 std::optional<double> exposure);
+                 std::optional<double> exposure, int samples = 1);
 // Renders a camera path's frames in sequence with one Renderer, to numbered files
 // (each output a printf pattern such as seq/f_%04d.png); progress on stderr.
+// With samples > 1 each frame is that many jittered full-rate frames averaged (no history).
 void renderPath(const CommonOptions& common, const std::vector<std::string>& outputs,
-                std::optional<double> exposure, const std::string& path, std::optional<int> frames);
+                std::optional<double> exposure, const std::string& path, std::optional<int> frames,
+                int samples = 1);
 
 struct Scene;
 namespace atmosphere {

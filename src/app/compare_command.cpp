@@ -29,7 +29,11 @@ void printComparison(const ImageComparison& c, const CompareOptions& o, std::ost
                   100.0 * c.floorFraction);
     out << "test       " << o.test << "  " << c.width << "x" << c.height << ", mean luminance "
         << c.meanLuminanceTest << "\n"
-        << "reference  " << o.reference << "  mean luminance " << c.meanLuminanceReference << "\n"
+        << "reference  " << o.reference
+        << (o.referenceScale != 1 ? "  averaged " + std::to_string(o.referenceScale) + "x" +
+                                        std::to_string(o.referenceScale) + " down"
+                                  : std::string())
+        << "  mean luminance " << c.meanLuminanceReference << "\n"
         << "mean luminance difference  " << percent(c.meanLuminanceDifference, true) << "\n"
         << "relative luminance error (" << floor << ")\n"
         << "  mean   " << percent(c.meanRelativeError) << "\n"
@@ -51,9 +55,10 @@ int runCompare(const CompareOptions& o) {
         if (ext != ".png" && ext != ".exr") throw InputError("--diff '" + o.diff + "': use .png or .exr");
     }
     const ImageRGBAF test = readExr(o.test);
-    const ImageRGBAF reference = readExr(o.reference);
+    ImageRGBAF reference = readExr(o.reference);
     ImageComparison c;
     try {
+        if (o.referenceScale != 1) reference = boxDownsample(reference, o.referenceScale);
         c = compareImages(test, reference);
     } catch (const std::invalid_argument& e) {
         throw InputError(o.test + " and " + o.reference + ": " + e.what());

@@ -90,6 +90,12 @@ int main(int argc, char** argv) {
                           "numbered files, each --out a printf pattern such as seq/f_%04d.png (--view is ignored)");
     renderCmd->add_option("--frames", render.frames,
                           "With --path: this many frames evenly over the whole path (default: duration x fps + 1)");
+    renderCmd->add_option("--samples", render.samples,
+                          "Anti-aliasing: average this many frames, each with the projection moved by a sub-pixel "
+                          "offset and marched at full rate, in linear HDR before tone mapping, [1, 256] (default " +
+                              std::to_string(planet::kStillSamples) +
+                              " for a still, 1 with --path; 1 = one unjittered frame, what the explorer shows)")
+        ->check(CLI::Range(1, 256));
 
     planet::BenchOptions bench;
     CLI::App* benchCmd = app.add_subcommand("bench", "Time each pass over scripted views; table, CSV and plot");
@@ -192,6 +198,11 @@ int main(int argc, char** argv) {
     compareCmd->add_option("--diff", compare.diff,
                            "Write the difference image: .png = false colour of the relative error (log scale), "
                            ".exr = linear A - B in RGB, the relative error in A");
+    compareCmd->add_option("--reference-scale", compare.referenceScale,
+                           "B is rendered at this many times A's size: average each KxK block of B first (the "
+                           "aliasing check, scripts/aliasing.sh: a supersampled reference)")
+        ->check(CLI::Range(1, 16))
+        ->capture_default_str();
     compareCmd->add_option("--max-mean", compare.maxMean, "Fail when the mean relative error exceeds this fraction");
     compareCmd->add_option("--max-p99", compare.maxP99, "Fail when its 99th percentile exceeds this fraction");
     compareCmd->add_option("--max-p999", compare.maxP999, "Fail when its 99.9th percentile exceeds this fraction");

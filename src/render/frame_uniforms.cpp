@@ -19,15 +19,33 @@ glm::vec2 subPixelJitter(int frameIndex) {
     return glm::vec2(static_cast<float>(halton(i, 2) - 0.5), static_cast<float>(halton(i, 3) - 0.5));
 }
 
+glm::dvec2 stillSampleJitter(int sample, int samples) {
+    if (samples <= 1) return glm::dvec2(0.0);
+    auto element = [](int i) { return glm::dvec2(halton(i + 1, 2), halton(i + 1, 3)); };
+    glm::dvec2 mean(0.0);
+    for (int i = 0; i < samples; ++i) mean += element(i) / static_cast<double>(samples);
+    return element(sample) - mean;
+}
+
+glm::dmat4 jitteredClipFromView(const Camera& camera, glm::ivec2 size, glm::dvec2 jitterPx) {
+    const double aspect = static_cast<double>(size.x) / static_cast<double>(size.y);
+    // NDC spans 2 across the viewport, so a pixel is 2 / size; x' = x + offset.x * w (and
+    // so for y) moves NDC by offset after the divide. glm is column-major: [column][row].
+    const glm::dvec2 offset = 2.0 * jitterPx / glm::dvec2(size);
+    glm::dmat4 jitteredFromClip(1.0);
+    jitteredFromClip[3][0] = offset.x;
+    jitteredFromClip[3][1] = offset.y;
+    return jitteredFromClip * camera.clipFromView(aspect);
+}
+
 double cameraDepthBelowSeaM(const Scene& scene, const Camera& camera) {
     if (!scene.terrain.ocean) return -1e30;  // no sea: everything, camera or ground, is above it
     return scene.planetRadiusM() + scene.ocean.sea_level_m - glm::length(camera.position);
 }
 
 FrameUniforms makeFrameUniforms(const Scene& scene, const Camera& camera, glm::ivec2 size, int frameIndex,
-                                const std::optional<PreviousFrame>& previous) {
-    const double aspect = static_cast<double>(size.x) / static_cast<double>(size.y);
-    const glm::dmat4 clipFromView = camera.clipFromView(aspect);
+                                const std::optional<PreviousFrame>& previous, glm::dvec2 jitterPx) {
+    const glm::dmat4 clipFromView = jitteredClipFromView(camera, size, jitterPx);
     const double radius = scene.planetRadiusM();
     // Everything below is formed in double and only then rounded to float, so
     // the GPU never subtracts two planet-sized numbers.
@@ -44,9 +62,9 @@ FrameUniforms makeFrameUniforms(const Scene& scene, const Camera& camera, glm::i
     u.worldFromView = glm::mat4(glm::dmat4(camera.worldFromView()));
     const Camera& before = previous ? previous->camera : camera;
     const glm::ivec2 beforeSize = previous ? previous->size : size;
-    const double beforeAspect = static_cast<double>(beforeSize.x) / static_cast<double>(beforeSize.y);
-    u.previousClipFromWorld =
-        glm::mat4(before.clipFromView(beforeAspect) * glm::dmat4(glm::transpose(before.worldFromView())));
+    const glm::dvec2 beforeJitter = previous ? previous->jitterPx : jitterPx;
+    u.previousClipFromWorld = glm::mat4(jitteredClipFromView(before, beforeSize, beforeJitter) *
+                                        glm::dmat4(glm::transpose(before.worldFromView())));
     u.planetCenterFromCamera = glm::vec3(centreFromCamera);
     u.planetRadius = static_cast<float>(radius);
     u.cameraUp = glm::vec3(up);
@@ -61,7 +79,7 @@ FrameUniforms makeFrameUniforms(const Scene& scene, const Camera& camera, glm::i
                                : 0.0f;
     u.viewportSize = glm::vec2(size);
     u.inverseViewportSize = 1.0f / glm::vec2(size);
-    u.jitter = subPixelJitter(frameIndex);
+    u.jitter = glm::vec2(jitterPx);
     u.nearPlane = static_cast<float>(camera.near_m);
     u.exposure = static_cast<float>(scene.render.exposure);
     u.frameIndex = frameIndex;

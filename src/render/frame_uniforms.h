@@ -5,6 +5,16 @@
 // camera-relative: the camera sits at the origin of a frame with world orientation; the
 // planet centre is given relative to the camera, and the previous frame's camera
 // relative to this one, both computed in double on the CPU. (STYLE habit 3.)
+//
+// Sub-pixel jitter: a frame may be rendered with its projection moved by a fraction of a
+// pixel (`jitterPx`, pixels). It is applied once here, in clip space, as
+//     clipFromView = translate(2 jitter / viewport) * unjittered clipFromView
+// and viewFromClip is its inverse, so every pass agrees: the terrain's and the sea's
+// rasterised geometry, the full-screen passes' rays (worldRayFromNdc through viewFromClip)
+// and depth reconstruction. A pixel centre's NDC then names the point at (centre - jitter)
+// of the unjittered frame. previousClipFromWorld carries the previous frame's jitter, so a
+// reprojected point lands on the history texel that sampled it. (Stills average several
+// jittered frames: src/app/render_command.cpp.)
 #pragma once
 
 #include <cstddef>
@@ -33,7 +43,7 @@ struct FrameUniforms {
     float historyValid;               // 1: the previous frame may be reprojected
     glm::vec2 viewportSize;           // pixels
     glm::vec2 inverseViewportSize;
-    glm::vec2 jitter;                 // pixels, Halton (2, 3) in [-0.5, 0.5]
+    glm::vec2 jitter;                 // pixels: the offset applied to clipFromView (0: unjittered)
     float nearPlane;                  // m
     float exposure;
     int frameIndex;
@@ -56,20 +66,31 @@ struct PreviousFrame {
     glm::ivec2 size{0, 0};
     double time_s = 0.0;              // the scene's clock
     glm::dvec3 sunDirection{0.0};     // the scene's sun
+    glm::dvec2 jitterPx{0.0};         // the sub-pixel offset its projection had, pixels
 };
+
+// A camera's clipFromView for a frame size, moved by a sub-pixel offset (pixels; +x right,
+// +y up): the image content moves by jitterPx.
+glm::dmat4 jitteredClipFromView(const Camera& camera, glm::ivec2 size, glm::dvec2 jitterPx);
 
 // Per-frame uniforms for a scene seen by a camera at a frame size, formed in double and
 // rounded to float once (camera-relative rendering). `previous`, when given, is the frame
 // the history holds: its camera becomes previousClipFromWorld and cameraFromPrevious, and
 // historyValid is 1; without it the previous terms are this frame's own and historyValid 0.
+// `jitterPx` moves this frame's projection by a sub-pixel offset (see above; 0: none).
 FrameUniforms makeFrameUniforms(const Scene& scene, const Camera& camera, glm::ivec2 size, int frameIndex,
-                                const std::optional<PreviousFrame>& previous);
+                                const std::optional<PreviousFrame>& previous, glm::dvec2 jitterPx = glm::dvec2(0.0));
 
 // Element `index` (from 1) of the Halton sequence in `base`, in [0, 1).
 double halton(int index, int base);
 // The sub-pixel jitter of frame `frameIndex`: Halton (2, 3) over a cycle of 16 frames,
 // centred, in pixels in [-0.5, 0.5).
 glm::vec2 subPixelJitter(int frameIndex);
+// The offset of sample `sample` of `samples` (>= 1) that a still averages: Halton (2, 3)
+// from element 1, moved so that the offsets of the `samples` average to exactly (0, 0)
+// (Halton's first elements are not centred: for 4 samples their mean is (-0.09, -0.11) px,
+// which would shift the whole image). One sample: (0, 0), the unjittered frame.
+glm::dvec2 stillSampleJitter(int sample, int samples);
 
 // Mean sea surface radius - camera distance, m (> 0 when the camera is under water;
 // -1e30 on a dry world, which has no sea, so that no point is below it).

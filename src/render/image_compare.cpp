@@ -135,4 +135,25 @@ void writeDifferenceImage(const ImageComparison& comparison, const ImageRGBAF& t
     writePng(image, path);
 }
 
+ImageRGBAF boxDownsample(const ImageRGBAF& image, int factor) {
+    checkImage(image, "downsampled");
+    if (factor < 1) throw std::invalid_argument("boxDownsample: the factor must be >= 1");
+    if (image.width % factor != 0 || image.height % factor != 0)
+        throw std::invalid_argument("boxDownsample: " + sizeText(image) + " is not a multiple of " +
+                                    std::to_string(factor) + " in both sides");
+    ImageRGBAF out{image.width / factor, image.height / factor, {}};
+    out.pixels.assign(static_cast<std::size_t>(out.width) * out.height * 4, 0.0f);
+    const double weight = 1.0 / (static_cast<double>(factor) * factor);
+    for (int y = 0; y < out.height; ++y)
+        for (int x = 0; x < out.width; ++x)
+            for (int c = 0; c < 4; ++c) {
+                double sum = 0.0;  // NaN and Inf pass through the sum
+                for (int j = 0; j < factor; ++j)
+                    for (int i = 0; i < factor; ++i)
+                        sum += image.pixels[(static_cast<std::size_t>(y * factor + j) * image.width + (x * factor + i)) * 4 + c];
+                out.pixels[(static_cast<std::size_t>(y) * out.width + x) * 4 + c] = static_cast<float>(sum * weight);
+            }
+    return out;
+}
+
 }  // namespace planet

@@ -63,4 +63,12 @@ ImageComparison compareImages(const ImageRGBAF& test, const ImageRGBAF& referenc
 void writeDifferenceImage(const ImageComparison& comparison, const ImageRGBAF& test,
                           const ImageRGBAF& reference, const std::filesystem::path& path);
 
+// The mean of each factor x factor block of pixels (all four channels): a still rendered
+// at factor times the size, box-filtered down to the size of a test image, is the
+// reference of the aliasing check (scripts/aliasing.sh, tests/test_aliasing.cpp): it
+// estimates the pixel's mean radiance with factor^2 samples where the test has its own.
+// A NaN or Inf anywhere in a block makes that pixel NaN. Throws std::invalid_argument
+// when factor < 1 or the image's sides are not multiples of it.
+ImageRGBAF boxDownsample(const ImageRGBAF& image, int factor);
+
 }  // namespace planet

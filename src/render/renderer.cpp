@@ -230,7 +230,7 @@ void Renderer::prepare(const Scene& scene, const Camera& camera, glm::ivec2 size
     report.reducedRate = scene.render.temporal && scene.clouds.enabled && inAir &&
                          (report.historyValid || !fullRateOnReset_);
     const FrameUniforms uniforms = makeFrameUniforms(scene, camera, size, frameIndex_,
-                                                     report.historyValid ? previous_ : std::nullopt);
+                                                     report.historyValid ? previous_ : std::nullopt, jitterPx_);
     glNamedBufferSubData(frameUniforms_.id(), 0, sizeof uniforms, &uniforms);
     glBindBufferBase(GL_UNIFORM_BUFFER, binding::BLOCK_FRAME, frameUniforms_.id());
     atmosphere_.bind();
@@ -269,11 +269,33 @@ void Renderer::render(const Scene& scene, const Camera& camera, glm::ivec2 size,
     }
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     targets_.keepHistory();
-    previous_ = PreviousFrame{camera, size, scene.time_s, scene.sunDirection()};
+    previous_ = PreviousFrame{camera, size, scene.time_s, scene.sunDirection(), jitterPx_};
     previousSceneKey_ = sceneKey_;
     ++frameIndex_;
     present_ = nullptr;
     profiler_.endFrame();
+}
+
+void Renderer::tonemapRadiance(const ImageRGBAF& radiance) {
+    const glm::ivec2 size = targets_.size();
+    if (radiance.width != size.x || radiance.height != size.y ||
+        radiance.pixels.size() != static_cast<std::size_t>(size.x) * size.y * 4)
+        throw std::invalid_argument("tonemapRadiance: the image is not the size of the last frame");
+    // Rows bottom-up, as GL keeps them (readTextureRGBAF flipped them to row 0 at the top).
+    std::vector<float> rows(radiance.pixels.size());
+    const std::size_t row = static_cast<std::size_t>(size.x) * 4;
+    for (int y = 0; y < size.y; ++y)
+        std::copy_n(radiance.pixels.begin() + static_cast<std::ptrdiff_t>(row * (size.y - 1 - y)), row,
+                    rows.begin() + static_cast<std::ptrdiff_t>(row * y));
+    glTextureSubImage2D(targets_.hdr().id(), 0, 0, 0, size.x, size.y, GL_RGBA, GL_FLOAT, rows.data());
+    // The frame block of the last frame is still bound (its exposure); the tonemap pass as in render().
+    gl::DebugGroup group("tonemap (accumulated)");
+    glViewport(0, 0, size.x, size.y);
+    glBindFramebuffer(GL_FRAMEBUFFER, targets_.ldrFramebuffer());
+    glBindTextureUnit(binding::UNIT_HDR_RADIANCE, targets_.hdr().id());
+    glBindVertexArray(emptyVertexArray_.id());
+    tonemap_.draw();
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
 }
 
 std::vector<gl::HotProgram*> Renderer::programs() {

@@ -45,7 +45,11 @@
 // the explorer (setFullRateOnReset(false)), reconstructed from its sparse samples alone so
 // that dragging a slider costs no more than a reduced-rate frame.
 //
-// `planet render` reads HDR or LDR back instead of presenting.
+// `planet render` reads HDR or LDR back instead of presenting. A still with --samples N
+// renders N frames, each with its projection moved by a sub-pixel offset (setJitter; see
+// render/frame_uniforms.h) and without history (dropHistory: each at full rate, as a
+// one-sample still is), averages their HDR radiance on the CPU, and tone maps the mean
+// (tonemapRadiance).
 #pragma once
 
 #include <filesystem>
@@ -63,6 +67,7 @@
 #include "render/atmosphere_program.h"
 #include "render/fullscreen_pass.h"
 #include "render/frame_uniforms.h"
+#include "render/image_io.h"
 #include "render/profiler.h"
 #include "render/render_targets.h"
 #include "scene/camera.h"
@@ -134,6 +139,17 @@ public:
     // stills and sequences start exact) or reconstruct from its sparse samples alone (the
     // explorer: a reset costs no more than any other frame, and converges in 16 frames).
     void setFullRateOnReset(bool on) { fullRateOnReset_ = on; }
+    // The sub-pixel offset (pixels, about [-0.5, 0.5]) of the projection of the frames
+    // rendered from now on; (0, 0), the default, renders unjittered.
+    void setJitter(glm::dvec2 pixels) { jitterPx_ = pixels; }
+    // Forget the frame history: the next frame is rendered as the first (at full rate when
+    // setFullRateOnReset holds; historyValid 0).
+    void dropHistory() { previous_.reset(); }
+    // Tone maps a linear HDR image (row 0 at the top, the size of the last frame) into
+    // targets().ldr() with the last frame's exposure, as the tonemap pass does with hdr():
+    // the mean of several frames' radiance becomes a PNG. It overwrites targets().hdr();
+    // the history is not touched.
+    void tonemapRadiance(const ImageRGBAF& radiance);
     const PrepareReport& lastPrepare() const { return lastPrepare_; }
     int frameIndex() const { return frameIndex_; }
     std::vector<PassDeclaration> passDeclarations() const;
@@ -175,6 +191,7 @@ private:
 
     int frameIndex_ = 0;
     bool fullRateOnReset_ = true;
+    glm::dvec2 jitterPx_{0.0};
     std::optional<PreviousFrame> previous_;  // the frame the history holds
     std::string previousSceneKey_;           // its parameters (presetToToml)
     std::string sceneKey_;                   // this frame's
