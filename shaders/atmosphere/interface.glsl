@@ -15,8 +15,14 @@
 //   SunDiscRadiance             the limb-darkened disc, before the atmosphere
 //   SunVisibility               the hook through which shadows enter surfaces: the fraction
 //                               of the sun seen from a point: the clouds' transmittance
-//                               towards the sun (clouds/cloud_density.glsl; the terrain's
-//                               shadows will join it); every sun irradiance above uses it.
+//                               towards the sun (clouds/cloud_density.glsl) times the
+//                               terrain's (terrain/terrain_shadow.glsl, preset
+//                               terrain.shadows) in programs that define
+//                               SUN_VISIBILITY_TERRAIN before including this file (the
+//                               surface light); every sun irradiance above uses it. The
+//                               others (the sky passes' sea surface above a diver, the sea,
+//                               the probes) and the cloud march do not pay for the march:
+//                               software renderers run it even in a branch not taken.
 //   SunShadowLength             the hook through which they enter the in-scattering: how much
 //                               of the far end of a view segment lies in shadow (Bruneton's
 //                               shadow_length, light shafts); 0 today; SkyRadianceToPoint uses it.
@@ -35,6 +41,16 @@
 #include "clouds/cloud_model.glsl"
 #include "clouds/cloud_block.glsl"
 #include "clouds/cloud_density.glsl"
+#ifndef SUN_VISIBILITY_TERRAIN
+#define SUN_VISIBILITY_TERRAIN 0
+#endif
+#if SUN_VISIBILITY_TERRAIN
+#include "common/frame_uniforms.glsl"
+#include "noise/simplex.glsl"
+#include "terrain/height.glsl"
+#include "terrain/terrain_block.glsl"
+#include "terrain/terrain_shadow.glsl"
+#endif
 
 #ifndef ELEK_TABLE
 #define ELEK_TABLE 0
@@ -58,11 +74,30 @@ const float MAX_HDR_RADIANCE = 6.0e4;   // below the largest half float (65504)
 // crosses hundreds of km of layer; beyond this the clouds' shadow is taken as the samples say.
 const float CLOUD_SHADOW_MAX_KM = 100.0;
 
-// The fraction of the sun's disc seen from `point` (km from the planet centre): the clouds'
-// transmittance towards the sun (Michelic §6 takes one density sample mid-layer; here
-// clouds.sunSamples samples over the sun ray's way through the layer, so thin and thick
-// clouds and a low sun shade differently). The terrain's shadows will join here.
-float SunVisibility(vec3 point, vec3 sun) { return CloudSunTransmittance(point, sun, CLOUD_SHADOW_MAX_KM); }
+// The share of the sun's disc the terrain leaves visible from the ground under `point` (km
+// from the planet centre): a march over the height field (terrain/terrain_shadow.glsl), at
+// the resolution of the pixel's footprint on the ground (from the frame's camera; shadows
+// shorter than a pixel are not marched). 1 when the preset's terrain.shadows is off, or the
+// program did not ask for SUN_VISIBILITY_TERRAIN.
+float TerrainSunVisibility(vec3 point, vec3 sun) {
+#if SUN_VISIBILITY_TERRAIN
+    if (terrainShadows == 0) return 1.0;
+    float footprintKm = distance(point, cameraFromPlanetCentreKm()) * radiansPerPixel();
+    return terrainSunVisibility(point, sun, frame.planetRadius / M_PER_KM, atmosphereUniforms.sunAngularRadius,
+                                footprintKm, terrainShape, uContinents);
+#else
+    return 1.0;
+#endif
+}
+
+// The fraction of the sun's disc seen from `point` (km from the planet centre) on a surface:
+// the clouds' transmittance towards the sun (Michelic §6 takes one density sample
+// mid-layer; here clouds.sunSamples samples over the sun ray's way through the layer, so
+// thin and thick clouds and a low sun shade differently) times the terrain's visibility,
+// so the shadows of both darken the ground together.
+float SunVisibility(vec3 point, vec3 sun) {
+    return CloudSunTransmittance(point, sun, CLOUD_SHADOW_MAX_KM) * TerrainSunVisibility(point, sun);
+}
 // km of the segment's far end, from the camera along `viewRay` for `distance` km, that the
 // sun does not light: 0 until something casts shadows into the air.
 float SunShadowLength(vec3 camera, vec3 viewRay, float distance) { return 0.0; }
@@ -97,10 +132,12 @@ vec3 SunIrradianceAtPoint(vec3 point, vec3 sun) {
            SunVisibility(point, sun);
 }
 
+// The visibility only where the sun lights the surface at all (a slope facing away from it
+// pays no shadow march).
 vec3 SunAndSkyIrradiance(vec3 point, vec3 normal, vec3 sun, out vec3 skyIrradiance) {
-    return GetSunAndSkyIrradiance(atmosphereParameters(), transmittance_texture, irradiance_texture, point, normal, sun,
-                                  skyIrradiance) *
-           SunVisibility(point, sun);
+    vec3 sunIrradiance = GetSunAndSkyIrradiance(atmosphereParameters(), transmittance_texture, irradiance_texture,
+                                                point, normal, sun, skyIrradiance);
+    return dot(normal, sun) > 0.0 ? sunIrradiance * SunVisibility(point, sun) : sunIrradiance;
 }
 
 // Sun disc radiance towards `dir`, before the atmosphere. Normalised so the disc delivers

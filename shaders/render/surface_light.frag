@@ -8,6 +8,7 @@
 // ocean read. Pixels where nothing was drawn keep the cleared 0 (no surface).
 #include "common/frame_uniforms.glsl"
 #include "common/gbuffer.glsl"
+#define SUN_VISIBILITY_TERRAIN 1  // the terrain's shadows in the sun (terrain/terrain_shadow.glsl)
 #include "atmosphere/interface.glsl"
 #include "ocean/water.glsl"
 

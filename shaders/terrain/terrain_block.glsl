@@ -8,7 +8,7 @@ layout(std140, binding = BLOCK_TERRAIN) uniform TerrainBlock {
     vec3 terrainLowlandAlbedo;      // preset planet.albedo: the grass material's albedo
     float terrainTargetEdgePixels;  // triangle edge on screen the tessellation aims for
     int terrainHasOcean;            // 1: water below sea level; 0: dry basins (Mars)
-    float terrainPadding0;
+    int terrainShadows;             // 1: the terrain casts shadows (terrain/terrain_shadow.glsl)
     float terrainPadding1;
     float terrainPadding2;
 };

@@ -49,6 +49,10 @@ void addTerrainParams(std::vector<ParamSpec>& table) {
         &TerrainParams::target_edge_px);
     add("ocean", "", 0.0, 1.0, "Water fills everything below sea level; off for a dry world (basins stay ground).",
         &TerrainParams::ocean);
+    add("shadows", "", 0.0, 1.0,
+        "The terrain casts shadows: mountains shade the ground at a low sun (a march over the height field "
+        "towards the sun for each lit pixel; the sea does not take them yet).",
+        &TerrainParams::shadows);
 }
 
 }  // namespace planet

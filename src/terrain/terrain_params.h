@@ -30,6 +30,7 @@ struct TerrainParams {
     double grid_hysteresis = 0.05;      // the anchor moves after this fraction of the altitude, [0, 1]
     double target_edge_px = 12.0;       // tessellation aims at triangle edges this long on screen, [1, 200]
     bool ocean = true;                  // water fills everything below sea level (false: dry basins, Mars)
+    bool shadows = true;                // mountains cast shadows (a march towards the sun per lit pixel; terrain/terrain_shadow.glsl)
 };
 
 }  // namespace planet

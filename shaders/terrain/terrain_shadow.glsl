@@ -1,0 +1,120 @@
+// Terrain shadows (issue 13): the share of the sun's disc that the terrain leaves visible
+// from a point on the ground, by a march over the height field towards the sun.
+//
+// Include after terrain/height.glsl. Written in the subset of GLSL that is also C++, as
+// height.glsl (see noise/simplex.glsl for the rules): terrain/terrain_shadow.cpp includes
+// the very same text, so tests/test_terrain_shadow.cpp checks what the GPU runs.
+//
+// Why a march over the height function rather than a shadow map: the height field is
+// analytic and the same text on the CPU and the GPU, so the shadow needs no pass and no
+// memory of its own, is testable against a CPU march, and has no resolution to choose: a
+// shadow map would need cascades to serve a camera 2 m above a valley and one in orbit
+// (the projected grid has no fixed extent), an extra pass drawing the terrain from the sun,
+// and its texels would swim and alias at a low sun, exactly when the shadows are long. The
+// march's cost is bounded by its sample count (TERRAIN_SHADOW_SAMPLES) and paid only for
+// lit pixels at a sun low enough for the terrain to rise into its ray.
+//
+// The march, from the ground at the point's direction (the analytic height, not the mesh's,
+// which is off by up to a triangle's sag) along the ray to the sun, samples at distances
+// growing geometrically from TERRAIN_SHADOW_FIRST_KM to TERRAIN_SHADOW_MAX_KM (the near
+// terrain decides small shadows, the far only large ones); at each sample the clearance
+// angle (height of the ray above the terrain / distance: the terrain's elevation below the
+// ray as seen from the point). The smallest clearance is where the horizon line stands
+// relative to the sun's centre, and the share of the disc above that line is the
+// visibility: a penumbra as wide as the sun (Quilez's soft shadows, "free penumbra", with the
+// disc's true angular radius instead of a softness constant). It stops early once the ray
+// has risen above shape.maxHeight (nothing further can reach it: at a high sun after a few
+// km, which is the tangent-plane bound taken sample by sample) or the whole disc is hidden.
+// Samples far apart cannot see features finer than their spacing, so they take fewer
+// mountain octaves (terrainShadowOctaves): most of the cost is in the near samples.
+//
+// Units: points in km from the planet centre (the atmosphere's), heights in m above sea
+// level (height.glsl's).
+
+// The longest shadow marched, km. A 5 km peak at a 5 deg sun throws 57 km of shadow, at 3
+// deg 95 km; the default field's bound (maxHeight 8 km) at 5 deg about 90 km. Below ~4 deg the
+// sun is already dim and red through the air (transmittance), and the planet's curvature
+// lifts the ray by t^2 / 2R (0.8 km at 100 km). 100 km covers the default Earth's relief
+// down to a sun about 4.5 deg high.
+const float TERRAIN_SHADOW_MAX_KM = 100.0f;
+// The first sample, km: closer ground is the surface's own slope, which the normal's
+// cos(sun) already shades; and the height field's float precision (a metre or so at the
+// finest octave) would make clearances at a few metres noise.
+const float TERRAIN_SHADOW_FIRST_KM = 0.05f;
+// Samples from the first to the longest, geometrically spaced: each 1.35 x the last (35 %
+// gaps), the most any pixel pays. A ridge narrower than the gap at its distance can slip
+// between two samples; the far samples' coarse octaves make ridges there wide.
+const int TERRAIN_SHADOW_SAMPLES = 26;
+// Height field noise allowance, m: clearances are measured from this far above the terrain
+// so that rounding (float directions on a 6000 km sphere resolve about 0.4 m) does not
+// shadow a lit slope; 1 m at the first sample is 0.02 rad, less than a degree.
+const float TERRAIN_SHADOW_BIAS_M = 1.0f;
+// Fewer octaves for a sample: it keeps the octaves whose lattice cells are at least this
+// share of the gap to the next sample (or of the pixel's footprint).
+const float TERRAIN_SHADOW_OCTAVE_CELLS = 0.5f;
+const float TERRAIN_SHADOW_PI = 3.14159265f;
+
+// The share of a uniform disc of angular radius `sunAngularRadius` that lies above a
+// straight horizon `clearance` radians below its centre (negative: above it): the
+// circular segment's area, 1 - (acos(u) - u sqrt(1 - u^2)) / pi for u = clearance / radius.
+float terrainShadowDiscShare(float clearance, float sunAngularRadius) {
+    float u = clamp(clearance / sunAngularRadius, -1.0f, 1.0f);
+    return 1.0f - (acos(u) - u * sqrt(1.0f - u * u)) / TERRAIN_SHADOW_PI;
+}
+
+// Mountain octaves a sample needs when features finer than `featureKm` cannot matter: the
+// octaves whose lattice cells (R / (frequency 2^i)) are at least TERRAIN_SHADOW_OCTAVE_CELLS
+// x featureKm, at least one; all of them for featureKm 0.
+int terrainShadowOctaves(TerrainShape shape, float planetRadiusKm, float featureKm) {
+    if (shape.mountainOctaves <= 1 || featureKm <= 0.0f) return shape.mountainOctaves;
+    float coarsestCellKm = planetRadiusKm / shape.mountainFrequency;
+    float halvings = log2(max(coarsestCellKm / (TERRAIN_SHADOW_OCTAVE_CELLS * featureKm), 1.0f));
+    return clamp(int(halvings) + 1, 1, shape.mountainOctaves);
+}
+
+// The terrain's height (m) at a direction with features finer than `featureKm` left out.
+float terrainShadowHeight(vec3 direction, TerrainShape shape, samplerCube continents, float planetRadiusKm,
+                          float featureKm) {
+    TerrainShape coarse = shape;
+    coarse.mountainOctaves = terrainShadowOctaves(shape, planetRadiusKm, featureKm);
+    return terrainHeight(direction, coarse, continents);
+}
+
+// Visibility of the sun from the ground at `point` (km from the planet centre; only its
+// direction is used: the march starts on the analytic surface), in [0, 1]: 1 lit, 0 in the
+// terrain's shadow, between in the penumbra. `sun` is the unit direction to the sun,
+// `footprintKm` the pixel's size on the ground (0: a point): shadows of features smaller
+// than it are not resolved, and when the longest shadow the terrain can throw at this sun is
+// shorter than it, nothing is marched.
+float terrainSunVisibility(vec3 point, vec3 sun, float planetRadiusKm, float sunAngularRadius, float footprintKm,
+                           TerrainShape shape, samplerCube continents) {
+    vec3 up = normalize(point);
+    float sinElevation = dot(up, sun);
+    float groundM = terrainHeight(up, shape, continents);
+    float reliefKm = (shape.maxHeight - groundM) * 0.001f;  // how far the terrain can rise above the point
+    if (reliefKm <= 0.0f) return 1.0f;
+    // Tangent-plane bound: the ray is above maxHeight after reliefKm / sin(elevation), sooner
+    // on the sphere; a shadow shorter than the pixel is not marched.
+    float first = max(TERRAIN_SHADOW_FIRST_KM, footprintKm);
+    if (sinElevation > 0.0f && reliefKm < first * sinElevation) return 1.0f;
+    float startKm = planetRadiusKm + groundM * 0.001f;
+    float growth = pow(TERRAIN_SHADOW_MAX_KM / TERRAIN_SHADOW_FIRST_KM, 1.0f / float(TERRAIN_SHADOW_SAMPLES - 1));
+    float clearance = 1.0f;  // rad: the smallest so far; 1 is far above any sun's radius
+    float t = first;
+    for (int i = 0; i < TERRAIN_SHADOW_SAMPLES; i++) {
+        if (t > TERRAIN_SHADOW_MAX_KM) break;
+        // The ray's rise above the start radius, |s + t sun| - s = t (2 s sin + t) / (|..| + s):
+        // nothing of planet size is subtracted.
+        float radius = sqrt(startKm * startKm + t * (2.0f * startKm * sinElevation + t));
+        float riseM = 1000.0f * t * (2.0f * startKm * sinElevation + t) / (radius + startKm);
+        float rayM = groundM + riseM;
+        if (rayM > shape.maxHeight) break;  // above all the terrain can reach, now and further on
+        vec3 direction = normalize(up * startKm + sun * t);
+        float gapKm = t * (growth - 1.0f);
+        float terrainM = terrainShadowHeight(direction, shape, continents, planetRadiusKm, max(gapKm, footprintKm));
+        clearance = min(clearance, (rayM + TERRAIN_SHADOW_BIAS_M - terrainM) * 0.001f / t);
+        if (clearance <= -sunAngularRadius) break;  // the whole disc is hidden
+        t *= growth;
+    }
+    return terrainShadowDiscShare(clearance, sunAngularRadius);
+}

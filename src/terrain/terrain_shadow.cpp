@@ -1,0 +1,79 @@
+// shaders/terrain/terrain_shadow.glsl compiled as C++ in float (see terrain_shadow.h).
+//
+// The shader needs terrainHeight, so simplex.glsl and height.glsl are included again here,
+// into this file's own namespace (height.cpp's namespace planet::terrain::glsl holds the
+// same functions with external linkage; a second copy there would collide).
+#include "terrain/terrain_shadow.h"
+
+#include <cmath>
+
+#include <glm/glm.hpp>
+
+#include "noise/noise.h"
+
+namespace planet::terrain {
+namespace shadow_glsl {
+using vec3 = glm::vec3;
+using vec4 = glm::vec4;
+using samplerCube = const noise::CubeMap&;
+using glm::abs;
+using glm::asin;
+using glm::clamp;
+using glm::cross;
+using glm::dot;
+using glm::floor;
+using glm::inversesqrt;
+using glm::length;
+using glm::max;
+using glm::min;
+using glm::normalize;
+using glm::sign;
+using glm::smoothstep;
+using glm::step;
+using std::abs;
+using std::acos;
+using std::asin;
+using std::floor;
+using std::log2;
+using std::pow;
+using std::sqrt;
+vec4 textureLod(samplerCube map, vec3 direction, float /*level: the map has one*/) {
+    return noise::sampleContinents(map, glm::dvec3(direction));
+}
+#define OUT(x) x&
+#include "shaders/noise/simplex.glsl"
+#include "shaders/terrain/height.glsl"
+#include "shaders/terrain/terrain_shadow.glsl"
+#undef OUT
+}  // namespace shadow_glsl
+
+namespace {
+
+shadow_glsl::TerrainShape toGlsl(const TerrainShape& s) {
+    return shadow_glsl::TerrainShape{s.mountainOffset,    s.maxHeight,    s.oceanDepth,
+                                     s.mountainFrequency, s.ridgedWeight, s.mountainOctaves,
+                                     s.padding0,          s.padding1,     s.padding2};
+}
+
+}  // namespace
+
+TerrainShadowConstants terrainShadowConstants() {
+    return {shadow_glsl::TERRAIN_SHADOW_MAX_KM, shadow_glsl::TERRAIN_SHADOW_FIRST_KM, shadow_glsl::TERRAIN_SHADOW_BIAS_M,
+            shadow_glsl::TERRAIN_SHADOW_SAMPLES};
+}
+
+float terrainSunVisibility(glm::vec3 pointKm, glm::vec3 sun, float planetRadiusKm, float sunAngularRadius,
+                           float footprintKm, const TerrainShape& shape, const noise::CubeMap& continents) {
+    return shadow_glsl::terrainSunVisibility(pointKm, sun, planetRadiusKm, sunAngularRadius, footprintKm, toGlsl(shape),
+                                             continents);
+}
+
+float terrainShadowDiscShare(float clearance, float sunAngularRadius) {
+    return shadow_glsl::terrainShadowDiscShare(clearance, sunAngularRadius);
+}
+
+int terrainShadowOctaves(const TerrainShape& shape, float planetRadiusKm, float featureKm) {
+    return shadow_glsl::terrainShadowOctaves(toGlsl(shape), planetRadiusKm, featureKm);
+}
+
+}  // namespace planet::terrain

@@ -1,0 +1,35 @@
+// Terrain shadows on the CPU: the very GLSL of shaders/terrain/terrain_shadow.glsl compiled
+// as C++ in float (as terrain/height.cpp does for the height field), so tests and tools get
+// the visibility the GPU computes. What the march does and why: that file's header.
+//
+// Points in km from the planet centre, the sun a unit direction, heights in m.
+#pragma once
+
+#include <glm/vec3.hpp>
+
+#include "noise/continents.h"
+#include "terrain/height.h"
+
+namespace planet::terrain {
+
+// The march's constants (the GLSL's), for tests.
+struct TerrainShadowConstants {
+    float maxKm, firstKm, biasM;
+    int samples;
+};
+TerrainShadowConstants terrainShadowConstants();
+
+// The share of the sun's disc the terrain leaves visible from the ground under `pointKm`,
+// in [0, 1]. GLSL: terrainSunVisibility.
+float terrainSunVisibility(glm::vec3 pointKm, glm::vec3 sun, float planetRadiusKm, float sunAngularRadius,
+                           float footprintKm, const TerrainShape& shape, const noise::CubeMap& continents);
+
+// The share of a disc of angular radius `sunAngularRadius` above a straight horizon
+// `clearance` rad below its centre. GLSL: terrainShadowDiscShare.
+float terrainShadowDiscShare(float clearance, float sunAngularRadius);
+
+// Mountain octaves a march sample takes when features finer than `featureKm` cannot matter.
+// GLSL: terrainShadowOctaves.
+int terrainShadowOctaves(const TerrainShape& shape, float planetRadiusKm, float featureKm);
+
+}  // namespace planet::terrain

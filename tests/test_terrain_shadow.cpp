@@ -1,0 +1,286 @@
+// Terrain shadows (shaders/terrain/terrain_shadow.glsl, compiled as C++ by
+// terrain/terrain_shadow.cpp, and the frame's surface light through SunVisibility):
+//   - the CPU twin against cases known without a march: the disc's circular segment, flat
+//     ground (lit above the horizon, the disc's share at it, dark below), the far side of a
+//     summit whose elevation is computed directly;
+//   - the CPU twin against a fine reference march (every 20 m near, 0.2 % of the distance
+//     far, all octaves, in double but for the heights) over the mountains around the
+//     'mountains' view at a 5 deg sun;
+//   - the GPU's shadows in the 'mountains' view at a 5 deg sun against the reference march
+//     at the pixels' points.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <random>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "app/session.h"
+#include "atmosphere/parameters.h"
+#include "gl_test_support.h"
+#include "noise/continents.h"
+#include "render/readback.h"
+#include "render/renderer.h"
+#include "terrain/height.h"
+#include "terrain/terrain_shadow.h"
+
+using namespace planet;
+
+namespace {
+
+constexpr double kRadiusKm = 6360.0;
+constexpr double kSunRadius = 0.00465;  // rad, the default sun's angular radius (about 0.27 deg)
+constexpr double kDeg = 3.14159265358979 / 180.0;
+
+// The world direction at a local elevation and azimuth (clockwise from north) above `up`.
+glm::dvec3 sunAt(glm::dvec3 up, double elevationDeg, double azimuthDeg) {
+    const glm::dvec3 pole = std::abs(up.z) > 0.99 ? glm::dvec3(1.0, 0.0, 0.0) : glm::dvec3(0.0, 0.0, 1.0);
+    const glm::dvec3 east = glm::normalize(glm::cross(pole, up));
+    const glm::dvec3 north = glm::cross(up, east);
+    const double e = elevationDeg * kDeg, a = azimuthDeg * kDeg;
+    return std::cos(e) * (std::cos(a) * north + std::sin(a) * east) + std::sin(e) * up;
+}
+
+// A continents map with the same value everywhere (no gradient): with mountainOctaves 0 the
+// ground is a sphere (e = 1: at TERRAIN_LOWLAND_SHARE x maxHeight).
+noise::CubeMap uniformContinents(float value) {
+    noise::CubeMap map;
+    map.size = 4;
+    map.texels.assign(6 * 4 * 4, glm::vec4(value, 0.0f, 0.0f, 0.0f));
+    return map;
+}
+
+// The default Earth's height field (continents from the cache, as the session's).
+const terrain::HeightField& earthField() {
+    static terrain::HeightField field = [] {
+        terrain::HeightField f;
+        f.update(TerrainParams{});
+        return f;
+    }();
+    return field;
+}
+
+// The smallest clearance angle (rad: height of the ray above the terrain over the distance)
+// along the ray from the ground under `up` towards `sun`, from the first sample distance
+// of the shader's march to its longest, by a fine march: every 20 m, or 0.2 % of the
+// distance where that is longer, all octaves; positions in double. No bias: rounding shows.
+double referenceClearance(const terrain::HeightField& field, glm::dvec3 up, glm::dvec3 sun) {
+    const terrain::TerrainShadowConstants c = terrain::terrainShadowConstants();
+    const double ground = field.height(glm::vec3(up));
+    const double startKm = kRadiusKm + ground / 1000.0;
+    double clearance = 1.0;
+    for (double t = c.firstKm; t <= c.maxKm; t += std::max(0.02, 0.002 * t)) {
+        const glm::dvec3 p = up * startKm + sun * t;
+        const double r = glm::length(p);
+        const double rayM = (r - kRadiusKm) * 1000.0;
+        if (rayM > field.shape().maxHeight) break;
+        const double terrainM = field.height(glm::vec3(p / r));
+        clearance = std::min(clearance, (rayM - terrainM) / 1000.0 / t);
+    }
+    return clearance;
+}
+
+float twinVisibility(const terrain::HeightField& field, glm::dvec3 up, glm::dvec3 sun, float footprintKm = 0.0f) {
+    return terrain::terrainSunVisibility(glm::vec3(up * kRadiusKm), glm::vec3(sun), float(kRadiusKm), float(kSunRadius),
+                                         footprintKm, field.shape(), field.continents());
+}
+
+// Lit (1), shadowed (0) or too near the shadow's edge to say (-1) by the reference march:
+// within the sun's radius plus `marginRad` of the horizon line it says nothing.
+int referenceClass(double clearance, double marginRad) {
+    if (clearance > kSunRadius + marginRad) return 1;
+    if (clearance < -kSunRadius - marginRad) return 0;
+    return -1;
+}
+
+}  // namespace
+
+TEST(TerrainShadow, DiscShareIsTheCircularSegment) {
+    const float a = float(kSunRadius);
+    EXPECT_NEAR(terrain::terrainShadowDiscShare(0.0f, a), 0.5f, 1e-6f);
+    EXPECT_EQ(terrain::terrainShadowDiscShare(a, a), 1.0f);
+    EXPECT_EQ(terrain::terrainShadowDiscShare(2.0f * a, a), 1.0f);
+    EXPECT_NEAR(terrain::terrainShadowDiscShare(-a, a), 0.0f, 1e-6f);
+    EXPECT_NEAR(terrain::terrainShadowDiscShare(-2.0f * a, a), 0.0f, 1e-6f);
+    // Half the radius above the line: the segment below it is (2 pi / 3 - sqrt(3) / 2) / (2 pi) = 19.55 %.
+    EXPECT_NEAR(terrain::terrainShadowDiscShare(0.5f * a, a), 1.0f - 0.19550f, 1e-4f);
+    float last = 0.0f;
+    for (int i = -20; i <= 20; ++i) {
+        const float x = 0.05f * float(i) * a;
+        const float share = terrain::terrainShadowDiscShare(x, a);
+        EXPECT_GE(share, last);
+        EXPECT_NEAR(share + terrain::terrainShadowDiscShare(-x, a), 1.0f, 1e-5f);
+        last = share;
+    }
+}
+
+TEST(TerrainShadow, FlatGroundIsLitAboveTheHorizonAndDarkBelow) {
+    // A sphere 800 m above sea level (uniform continents, no mountains) under a field whose
+    // bound is 8000 m, so the march runs: at every azimuth the sun is wholly visible a
+    // degree or more above the horizon, hidden a degree below, and at the horizon the
+    // disc's share above it (the march's 1 m bias lifts the line by under 0.2 radii).
+    TerrainParams params;
+    params.noise_octaves = 0;
+    const terrain::TerrainShape shape = terrain::makeTerrainShape(params);
+    const noise::CubeMap flat = uniformContinents(1.0f);
+    for (glm::dvec3 up : {glm::dvec3(0, 0, 1), glm::normalize(glm::dvec3(1, -2, 0.5)), glm::dvec3(-1, 0, 0)}) {
+        for (double azimuth = 0.0; azimuth < 360.0; azimuth += 45.0) {
+            auto visibility = [&](double elevationDeg) {
+                return terrain::terrainSunVisibility(glm::vec3(up * kRadiusKm), glm::vec3(sunAt(up, elevationDeg, azimuth)),
+                                                     float(kRadiusKm), float(kSunRadius), 0.0f, shape, flat);
+            };
+            for (double e : {1.0, 5.0, 30.0, 89.0}) EXPECT_EQ(visibility(e), 1.0f) << e << " deg, azimuth " << azimuth;
+            for (double e : {-1.0, -5.0}) EXPECT_EQ(visibility(e), 0.0f) << e << " deg, azimuth " << azimuth;
+            for (double x = -1.5; x <= 1.5; x += 0.25) {
+                const double e = x * kSunRadius / kDeg;
+                EXPECT_NEAR(visibility(e), terrain::terrainShadowDiscShare(float(x * kSunRadius), float(kSunRadius)), 0.12)
+                    << x << " sun radii, azimuth " << azimuth;
+            }
+        }
+    }
+}
+
+TEST(TerrainShadow, TwinAgreesWithAFineMarchInTheMountains) {
+    // 400 random points of the ground around the 'mountains' view (41 N, 105.5-105 W: a
+    // range with 5 km summits), the sun 5 deg up at a random azimuth: lit or shadowed as the
+    // reference march says (unless the horizon line is within the sun's radius of its centre:
+    // then either), and the twin's visibility on the same side of 1/2. Measured: 368 of 384
+    // agree (95.8 %); every disagreement is a ridge the 26 samples stepped over (the twin
+    // lit, the reference shadowed; 98 % at 40 samples). Both kinds must be there.
+    const terrain::HeightField& field = earthField();
+    std::mt19937 rng(7);
+    std::uniform_real_distribution<double> lat(40.8, 41.2), lon(-105.5, -105.0), az(0.0, 360.0);
+    int agree = 0, disagree = 0, litCount = 0, shadowCount = 0;
+    for (int i = 0; i < 400; ++i) {
+        const glm::dvec3 up = directionFromLatLon(lat(rng), lon(rng));
+        if (field.height(glm::vec3(up)) < 0.0f) continue;
+        const glm::dvec3 sun = sunAt(up, 5.0, az(rng));
+        const int reference = referenceClass(referenceClearance(field, up, sun), 0.0);
+        if (reference < 0) continue;
+        const int twin = twinVisibility(field, up, sun) >= 0.5f ? 1 : 0;
+        (twin == reference ? agree : disagree) += 1;
+        (reference == 1 ? litCount : shadowCount) += 1;
+    }
+    std::printf("reference lit %d, shadowed %d; the twin agrees at %d, disagrees at %d\n", litCount, shadowCount, agree,
+                disagree);
+    EXPECT_GE(litCount, 40);
+    EXPECT_GE(shadowCount, 40);
+    EXPECT_GE(agree, 0.93 * (agree + disagree));
+}
+
+TEST(TerrainShadow, BeyondTheLongestShadowNothingIsMarched) {
+    // A pixel whose footprint is longer than any shadow the terrain can throw at this sun
+    // (the relief above the point over sin(elevation)) is lit without a march; the same point
+    // at a fine footprint is shadowed from some azimuth at a low sun.
+    const terrain::HeightField& field = earthField();
+    const glm::dvec3 up = directionFromLatLon(41.0, -105.3);
+    const double reliefKm = (field.shape().maxHeight - field.height(glm::vec3(up))) / 1000.0;
+    const glm::dvec3 sun = sunAt(up, 30.0, 200.0);
+    EXPECT_EQ(twinVisibility(field, up, sun, float(reliefKm / 0.5 * 1.01)), 1.0f);
+    int shadowed = 0;
+    for (double azimuth = 0.0; azimuth < 360.0; azimuth += 10.0)
+        if (twinVisibility(field, up, sunAt(up, 3.0, azimuth)) < 0.5f) ++shadowed;
+    EXPECT_GT(shadowed, 0) << "a valley point under a 3 deg sun is shadowed from some azimuth";
+}
+
+namespace {
+
+constexpr glm::ivec2 kSize{160, 90};
+constexpr double kSunElevationDeg = 5.0;
+constexpr double kSunAzimuthDeg = 180.0;  // not yet checked: see the test
+
+class TerrainShadowRender : public test::GLTest {
+protected:
+    void SetUp() override {
+        GLTest::SetUp();
+        renderer = std::make_unique<Renderer>(test::repoPaths().shaders(), atmosphere::TableSizes::reduced());
+    }
+    // The 'mountains' view, clouds off (their shadows would mix in), the sun as given.
+    Session mountains(double elevationDeg, double azimuthDeg, bool shadows) {
+        Session s = loadSession(test::repoPaths(), "earth", "mountains");
+        View v = s.view;
+        v.sun_elevation_deg = elevationDeg;
+        v.sun_azimuth_deg = azimuthDeg;
+        applyView(v, s);
+        s.scene.clouds.enabled = false;
+        s.scene.terrain.shadows = shadows;
+        return s;
+    }
+    std::unique_ptr<Renderer> renderer;
+};
+
+// One pixel's surface point and what the two renders made of it.
+struct SurfaceSample {
+    glm::dvec3 point;   // km from the planet centre
+    glm::dvec3 normal;  // the G-buffer's
+    double withShadows, without;  // luminance of the surface radiance
+};
+
+double luminanceOf(const float* p) { return 0.2126 * p[0] + 0.7152 * p[1] + 0.0722 * p[2]; }
+
+// Every `stride`-th pixel's surface point (distance > 0) with the surface radiance of the
+// frame with terrain shadows and without.
+std::vector<SurfaceSample> surfaceSamples(Renderer& renderer, const Session& lit, const Session& shadowed, int stride) {
+    renderer.render(lit.scene, lit.camera, kSize);
+    const ImageRGBAF without = readTextureRGBAF(renderer.targets().surfaceRadiance(), kSize.x, kSize.y);
+    renderer.render(shadowed.scene, shadowed.camera, kSize);
+    const ImageRGBAF with = readTextureRGBAF(renderer.targets().surfaceRadiance(), kSize.x, kSize.y);
+    const ImageRGBAF distance = readTextureRGBAF(renderer.targets().surfaceDistance(), kSize.x, kSize.y);
+    const ImageRGBAF normal = readTextureRGBAF(renderer.targets().gbuffer().normal, kSize.x, kSize.y);
+    const Camera& camera = shadowed.camera;
+    const double aspect = double(kSize.x) / kSize.y;
+    std::vector<SurfaceSample> samples;
+    for (int imageRow = stride / 2; imageRow < kSize.y; imageRow += stride) {
+        for (int x = stride / 2; x < kSize.x; x += stride) {
+            const double d = test::pixelAt(distance, x, imageRow)[0];
+            if (!(d > 0.0)) continue;
+            const int glRow = kSize.y - 1 - imageRow;
+            const glm::dvec2 ndc((x + 0.5) / kSize.x * 2 - 1, (glRow + 0.5) / kSize.y * 2 - 1);
+            const glm::dvec4 v = glm::inverse(camera.clipFromView(aspect)) * glm::dvec4(ndc, 0.5, 1.0);
+            const glm::dvec3 dir = glm::normalize(camera.worldFromView() * glm::normalize(glm::dvec3(v) / v.w));
+            const float* n = test::pixelAt(normal, x, imageRow);
+            samples.push_back({(camera.position + dir * d) / 1000.0, glm::normalize(glm::dvec3(n[0], n[1], n[2])),
+                               luminanceOf(test::pixelAt(with, x, imageRow)),
+                               luminanceOf(test::pixelAt(without, x, imageRow))});
+        }
+    }
+    return samples;
+}
+
+}  // namespace
+
+// DISABLED: written but not yet run (the shared machine took over 10 minutes a 160x90 frame
+// when it was committed); kSunAzimuthDeg is a guess (the range lies east of the camera, so a
+// southern sun throws the peaks' shadows across the slopes it faces). Run with
+// --gtest_also_run_disabled_tests, check that both kinds are sampled, then enable.
+TEST_F(TerrainShadowRender, DISABLED_MountainShadowsAtALowSunMatchACpuMarch) {
+    // The 'mountains' view with the sun 5 deg up in the south: rendered with and without
+    // terrain shadows; a pixel is in the GPU's shadow where the shadows took more than a
+    // quarter of its light. The reference march (no bias, all octaves, fine steps) at each
+    // sampled land pixel's point, facing the sun (n.l > 0.3, where the sun is most of the
+    // light), says lit or shadowed unless the horizon line is within the sun's radius plus
+    // 0.01 rad (a penumbra, or the float heights' rounding: both marches may say either).
+    // At least 90 % must agree, and both kinds must be among them so that the test can fail.
+    const Session lit = mountains(kSunElevationDeg, kSunAzimuthDeg, false);
+    const Session shadowed = mountains(kSunElevationDeg, kSunAzimuthDeg, true);
+    const glm::dvec3 sun = shadowed.scene.sunDirection();
+    int agree = 0, disagree = 0, litCount = 0, shadowCount = 0;
+    for (const SurfaceSample& s : surfaceSamples(*renderer, lit, shadowed, 3)) {
+        if (glm::dot(s.normal, sun) < 0.3 || s.without <= 0.0) continue;
+        const glm::dvec3 up = glm::normalize(s.point);
+        if (shadowed.ground.height(glm::vec3(up)) < 0.0f) continue;  // the sea floor
+        const int reference = referenceClass(referenceClearance(shadowed.ground, up, sun), 0.01);
+        if (reference < 0) continue;
+        const int gpu = s.withShadows > 0.75 * s.without ? 1 : 0;
+        (gpu == reference ? agree : disagree) += 1;
+        (reference == 1 ? litCount : shadowCount) += 1;
+    }
+    std::printf("sampled %d pixels: reference lit %d, shadowed %d; GPU agrees at %d, disagrees at %d\n",
+                agree + disagree, litCount, shadowCount, agree, disagree);
+    EXPECT_GE(litCount, 10);
+    EXPECT_GE(shadowCount, 10);
+    EXPECT_GE(agree, 0.9 * (agree + disagree));
+}
