@@ -41,15 +41,16 @@
 #include "clouds/cloud_model.glsl"
 #include "clouds/cloud_block.glsl"
 #include "clouds/cloud_density.glsl"
-#ifndef SUN_VISIBILITY_TERRAIN
-#define SUN_VISIBILITY_TERRAIN 0
-#endif
-#if SUN_VISIBILITY_TERRAIN
+// Included whether or not the program takes the terrain's shadows: includes are expanded
+// (once per program) before the preprocessor runs, so one inside an #if would be swallowed
+// and skipped where the program includes it again. Unused, they cost nothing.
 #include "common/frame_uniforms.glsl"
 #include "noise/simplex.glsl"
 #include "terrain/height.glsl"
 #include "terrain/terrain_block.glsl"
 #include "terrain/terrain_shadow.glsl"
+#ifndef SUN_VISIBILITY_TERRAIN
+#define SUN_VISIBILITY_TERRAIN 0
 #endif
 
 #ifndef ELEK_TABLE
