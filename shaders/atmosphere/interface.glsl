@@ -82,10 +82,10 @@ const float CLOUD_SHADOW_MAX_KM = 100.0;
 // program did not ask for SUN_VISIBILITY_TERRAIN.
 float TerrainSunVisibility(vec3 point, vec3 sun) {
 #if SUN_VISIBILITY_TERRAIN
-    if (terrainShadows == 0) return 1.0;
     float footprintKm = distance(point, cameraFromPlanetCentreKm()) * radiansPerPixel();
+    int samples = terrainShadows != 0 ? TERRAIN_SHADOW_SAMPLES : 0;  // from the uniform: see terrainSunVisibility
     return terrainSunVisibility(point, sun, frame.planetRadius / M_PER_KM, atmosphereUniforms.sunAngularRadius,
-                                footprintKm, terrainShape, uContinents);
+                                footprintKm, samples, terrainShape, uContinents);
 #else
     return 1.0;
 #endif

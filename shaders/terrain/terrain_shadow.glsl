@@ -85,9 +85,13 @@ float terrainShadowHeight(vec3 direction, TerrainShape shape, samplerCube contin
 // terrain's shadow, between in the penumbra. `sun` is the unit direction to the sun,
 // `footprintKm` the pixel's size on the ground (0: a point): shadows of features smaller
 // than it are not resolved, and when the longest shadow the terrain can throw at this sun is
-// shorter than it, nothing is marched.
+// shorter than it, nothing is marched. `samples` is TERRAIN_SHADOW_SAMPLES, or 0 for no
+// march (visibility 1). A parameter rather than the constant, and from a uniform on the GPU:
+// a constant trip count lets the compiler unroll the march, 26 inlined height fields with
+// their octaves, which took llvmpipe minutes to compile; and a software renderer skips a
+// loop of 0 iterations, where it would run the march in a branch not taken.
 float terrainSunVisibility(vec3 point, vec3 sun, float planetRadiusKm, float sunAngularRadius, float footprintKm,
-                           TerrainShape shape, samplerCube continents) {
+                           int samples, TerrainShape shape, samplerCube continents) {
     vec3 up = normalize(point);
     float sinElevation = dot(up, sun);
     float groundM = terrainHeight(up, shape, continents);
@@ -101,7 +105,7 @@ float terrainSunVisibility(vec3 point, vec3 sun, float planetRadiusKm, float sun
     float growth = pow(TERRAIN_SHADOW_MAX_KM / TERRAIN_SHADOW_FIRST_KM, 1.0f / float(TERRAIN_SHADOW_SAMPLES - 1));
     float clearance = 1.0f;  // rad: the smallest so far; 1 is far above any sun's radius
     float t = first;
-    for (int i = 0; i < TERRAIN_SHADOW_SAMPLES; i++) {
+    for (int i = 0; i < min(samples, TERRAIN_SHADOW_SAMPLES); i++) {
         if (t > TERRAIN_SHADOW_MAX_KM) break;
         // The ray's rise above the start radius, |s + t sun| - s = t (2 s sin + t) / (|..| + s):
         // nothing of planet size is subtracted.

@@ -64,8 +64,8 @@ TerrainShadowConstants terrainShadowConstants() {
 
 float terrainSunVisibility(glm::vec3 pointKm, glm::vec3 sun, float planetRadiusKm, float sunAngularRadius,
                            float footprintKm, const TerrainShape& shape, const noise::CubeMap& continents) {
-    return shadow_glsl::terrainSunVisibility(pointKm, sun, planetRadiusKm, sunAngularRadius, footprintKm, toGlsl(shape),
-                                             continents);
+    return shadow_glsl::terrainSunVisibility(pointKm, sun, planetRadiusKm, sunAngularRadius, footprintKm,
+                                             shadow_glsl::TERRAIN_SHADOW_SAMPLES, toGlsl(shape), continents);
 }
 
 float terrainShadowDiscShare(float clearance, float sunAngularRadius) {

@@ -20,7 +20,7 @@ struct TerrainShadowConstants {
 TerrainShadowConstants terrainShadowConstants();
 
 // The share of the sun's disc the terrain leaves visible from the ground under `pointKm`,
-// in [0, 1]. GLSL: terrainSunVisibility.
+// in [0, 1], with the shader's TERRAIN_SHADOW_SAMPLES samples. GLSL: terrainSunVisibility.
 float terrainSunVisibility(glm::vec3 pointKm, glm::vec3 sun, float planetRadiusKm, float sunAngularRadius,
                            float footprintKm, const TerrainShape& shape, const noise::CubeMap& continents);
 
