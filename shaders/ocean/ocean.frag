@@ -6,6 +6,9 @@
 //     the same curve) of the sky and the clouds along the reflected ray: the sky pass's own
 //     march (clouds/cloud_march.glsl) with one atmosphere slice per crossing of the layer
 //     and an eighth of its cloud steps, so the clouds show in the sea, a little coarser;
+//     and of the terrain where the reflected ray meets it on screen (Michelic §6: "screen-
+//     space reflections of the terrain"; ocean/screen_space_reflections.glsl), seen through
+//     the air between, faded into the sky's reflection where the search is unsure;
 //   - sun glitter: the sun's irradiance at the surface (Elek Eq. 17, with the sun's
 //     visibility) times a Gaussian slope distribution whose variance is the slopes of the
 //     waves too small for the pixel plus the ripples finer than any wave (Cox & Munk 1954;
@@ -37,6 +40,7 @@
 #include "noise/simplex.glsl"
 #include "terrain/height.glsl"
 #include "terrain/terrain_block.glsl"
+#include "ocean/screen_space_reflections.glsl"
 
 in vec3 tePosition;
 in vec3 teDirection;
@@ -51,6 +55,28 @@ layout(location = 1) out float outSurfaceDistance;
 layout(depth_greater) out float gl_FragDepth;  // reversed-Z: only ever moved towards the camera
 
 const float SHORE_FADE_M = 0.5;  // water path over which the sea fades in at the shore
+
+// What the sea reflects along `reflected` from `point` (km from the planet centre; this
+// fragment): the terrain where the reflected ray finds it on screen (ocean/
+// screen_space_reflections.glsl), over the sky and the clouds where it does not, blended by
+// the search's confidence so that no seam shows where it gives up.
+vec3 reflectedRadiance(vec3 point, vec3 reflected, vec3 up, ivec2 pixel, vec3 sun) {
+    ScreenReflection land = traceScreenReflection(tePosition, reflected, up, ocean.seaLevel, pixel, seabedDepth,
+                                                  seabedRadiance);
+    vec3 radiance = vec3(0.0);
+    if (land.confidence < 1.0) {  // the sky's march only where the terrain does not hide it all
+        // One slice, a 32nd of the steps, two sun samples and the far field.
+        MarchQuality quality = MarchQualityOf(0.5);
+        quality.slicesPerCrossing = 1;
+        quality.stepBudget = max(clouds.maxSteps / 32, 4);
+        quality.sunSamples = min(clouds.sunSamples, 2);
+        quality.minFootprintKm = CloudFarFieldFootprint();
+        radiance = MarchView(point, reflected, 0.0, sun, quality).inscatter;
+    }
+    if (land.confidence > 0.0)
+        radiance = mix(radiance, reflectedTerrainRadiance(land, point, reflected, sun), land.confidence);
+    return radiance;
+}
 
 void main() {
     ivec2 pixel = ivec2(gl_FragCoord.xy);
@@ -111,14 +137,7 @@ void main() {
 
     vec3 reflected = reflect(view, normal);
     reflected = normalize(reflected + up * max(0.0, 0.01 - dot(reflected, up)));  // keep it above the horizon
-    // The reflection's march: one slice, a 32nd of the steps, two sun samples and the far field.
-    MarchQuality quality = MarchQualityOf(0.5);
-    quality.slicesPerCrossing = 1;
-    quality.stepBudget = max(clouds.maxSteps / 32, 4);
-    quality.sunSamples = min(clouds.sunSamples, 2);
-    quality.minFootprintKm = CloudFarFieldFootprint();
-    ViewMarch reflection = MarchView(point, reflected, 0.0, sun, quality);  // 1e30: no far field
-    vec3 sky = reflection.inscatter;
+    vec3 sky = reflectedRadiance(point, reflected, up, pixel, sun);
     vec3 skyIrradiance;
     vec3 sunIrradiance = SunAndSkyIrradiance(point, up, sun, skyIrradiance);
     // The sun's irradiance on a surface facing it: through the atmosphere, not yet weighted by a normal.

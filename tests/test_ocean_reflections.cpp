@@ -1,0 +1,248 @@
+// Screen-space reflections of the terrain in the sea (issue 13; shaders/ocean/
+// screen_space_reflections.glsl), against a CPU ray test.
+//
+// The scene: the high valley of the 'mountains' view flooded to 2600 m, a lake some 10 km
+// across with the range rising 2 km above it on the far shore, the lake flat (no waves: a
+// mirror, what the CPU assumes) and no clouds; the camera 20 m above the water looking east
+// across it at the range. It is rendered twice, with the reflections and without them (a
+// copy of the shader tree with OCEAN_SCREEN_SPACE_REFLECTIONS 0: the sky and clouds alone,
+// as before). For every sea pixel the CPU follows the camera's ray to the flat lake and the
+// mirror ray on over the terrain's own height field (terrain::HeightField, the GLSL compiled
+// as C++):
+//   - "land": the mirror ray meets terrain that the camera sees well inside the image: there
+//     the reflections must change the pixel, towards the colour of that land;
+//   - "sky": the mirror ray clears every mountain by a margin: the pixel must be what it was.
+// Pixels within 2 px of the other class are not judged (the GPU's terrain mesh and the
+// pixel's own footprint blur the line).
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <variant>
+
+#include "app/session.h"
+#include "gl_test_support.h"
+#include "render/image_io.h"
+#include "render/readback.h"
+#include "render/renderer.h"
+#include "scene/scene_params.h"
+
+using namespace planet;
+namespace fs = std::filesystem;
+
+namespace {
+
+constexpr glm::ivec2 kSize{160, 90};
+constexpr double kLakeLevelM = 2600.0;
+constexpr double kCameraAboveLakeM = 20.0;
+
+enum class Mirror { Unjudged, Land, Sky };
+
+struct MirrorPixel {
+    Mirror kind = Mirror::Unjudged;
+    glm::ivec2 land{0};  // Land: the pixel where the camera sees the point the mirror ray meets
+};
+
+// The lake: the mountains view's valley with the sea raised into it, flat, without clouds.
+Session mountainLake() {
+    Session s = loadSession(test::repoPaths(), "earth", "mountains");
+    s.scene.clouds.enabled = false;
+    // Terrain shadows, where the build has them, only cost time here (the range is lit).
+    for (const ParamSpec& spec : sceneParams()) {
+        if (spec.path() != "terrain.shadows") continue;
+        ParamRef ref = spec.field(s.scene);
+        if (bool** on = std::get_if<bool*>(&ref)) **on = false;
+    }
+    s.scene.ocean.sea_level_m = kLakeLevelM;
+    s.scene.waves.clear();
+    View v = s.view;
+    v.latitude_deg = 41.0;
+    v.longitude_deg = -105.452;  // 4 km east of the view's valley, over the flooded floor
+    v.heading_deg = 90.0;
+    v.pitch_deg = -1.0;
+    v.fov_deg = 40.0;
+    applyView(v, s);
+    // The view's altitude is above the (flooded) ground; the camera belongs above the water.
+    const glm::dvec3 up = glm::normalize(s.camera.position);
+    s.camera.position = up * (s.scene.planetRadiusM() + kLakeLevelM + kCameraAboveLakeM);
+    return s;
+}
+
+// The shader tree with the screen-space reflections compiled out, in a temporary folder.
+fs::path shadersWithoutReflections() {
+    const fs::path root = fs::temp_directory_path() / "planet_test_ssr_off";
+    fs::remove_all(root);
+    fs::copy(test::repoPaths().shaders(), root / "shaders", fs::copy_options::recursive);
+    const fs::path file = root / "shaders" / "ocean" / "screen_space_reflections.glsl";
+    std::stringstream text;
+    text << std::ifstream(file).rdbuf();
+    std::string source = text.str();
+    const std::string on = "#define OCEAN_SCREEN_SPACE_REFLECTIONS 1";
+    const std::size_t at = source.find(on);
+    EXPECT_NE(at, std::string::npos) << "the switch is gone from " << file;
+    if (at != std::string::npos) source.replace(at, on.size(), "#define OCEAN_SCREEN_SPACE_REFLECTIONS 0");
+    std::ofstream(file) << source;
+    return root / "shaders";
+}
+
+class OceanReflections : public test::GLTest {
+protected:
+    ImageRGBAF render(const fs::path& shaders, const Session& s) {
+        Renderer renderer(shaders, atmosphere::TableSizes::reduced(), s.continents);
+        renderer.render(s.scene, s.camera, kSize);
+        return readTextureRGBAF(renderer.targets().hdr(), kSize.x, kSize.y);
+    }
+};
+
+// The CPU's view of the scene: rays through pixels, the terrain along them.
+class MirrorRays {
+public:
+    explicit MirrorRays(const Session& s)
+        : s_(s), radius_(s.scene.planetRadiusM()), maxHeight_(s.scene.terrain.max_height_m) {}
+
+    // World direction through the centre of pixel (x, glRow), rows counted from the bottom.
+    glm::dvec3 pixelRay(int x, int glRow) const {
+        const double t = std::tan(0.5 * s_.camera.fovY_rad), aspect = double(kSize.x) / kSize.y;
+        const glm::dvec2 ndc = 2.0 * (glm::dvec2(x, glRow) + 0.5) / glm::dvec2(kSize) - 1.0;
+        return glm::normalize(s_.camera.worldFromView() * glm::dvec3(ndc.x * t * aspect, ndc.y * t, -1.0));
+    }
+    // The pixel a world point is seen in (rows from the bottom); false when behind the camera.
+    bool pixelOf(const glm::dvec3& point, glm::dvec2& pixel) const {
+        const glm::dvec3 v = glm::transpose(s_.camera.worldFromView()) * (point - s_.camera.position);
+        if (v.z >= 0.0) return false;
+        const double t = std::tan(0.5 * s_.camera.fovY_rad), aspect = double(kSize.x) / kSize.y;
+        const glm::dvec2 ndc(v.x / (-v.z * t * aspect), v.y / (-v.z * t));
+        pixel = (ndc * 0.5 + 0.5) * glm::dvec2(kSize);
+        return true;
+    }
+    double clearance(const glm::dvec3& p) const {
+        return glm::length(p) - radius_ - s_.ground.height(glm::vec3(glm::normalize(p)));
+    }
+    // How far along `dir` from `origin` the ray first enters the terrain (-1: never, before
+    // it climbs above the highest mountain or runs maxM). `minAngle` is the least clearance
+    // over distance on the way: how narrowly it missed.
+    double terrainHit(const glm::dvec3& origin, const glm::dvec3& dir, double maxM, double& minAngle) const {
+        minAngle = 1.0;
+        for (double t = 1.0; t < maxM;) {
+            const glm::dvec3 p = origin + t * dir;
+            const double c = clearance(p);
+            if (c < 0.0) return t;
+            if (glm::length(p) - radius_ > maxHeight_ && glm::dot(dir, glm::normalize(p)) > 0.0) return -1.0;
+            minAngle = std::min(minAngle, c / t);
+            t += std::clamp(0.4 * c, 2.0, 2000.0);
+        }
+        return -1.0;
+    }
+    // The mirror ray of pixel (x, glRow) on the flat lake: Land where it meets terrain seen
+    // at least `margin` of the image inside its edges, Sky where it clears every mountain by
+    // `skyAngle`, else Unjudged (including pixels that are not lake).
+    MirrorPixel classify(int x, int glRow, double margin, double skyAngle) const {
+        MirrorPixel out;
+        const glm::dvec3 camera = s_.camera.position, dir = pixelRay(x, glRow);
+        const double lake = radius_ + kLakeLevelM;
+        const double b = glm::dot(camera, dir), c = glm::dot(camera, camera) - lake * lake;
+        if (b * b - c < 0.0) return out;
+        const double toLake = -b - std::sqrt(b * b - c);
+        if (toLake <= 0.0) return out;
+        double unused = 0.0;
+        if (terrainHit(camera, dir, toLake, unused) >= 0.0) return out;  // land in front of the water
+        const glm::dvec3 point = camera + toLake * dir, up = glm::normalize(point);
+        if (glm::length(point) - radius_ - s_.ground.height(glm::vec3(up)) > -2.0) return out;
+        // (lake depth under 2 m: the shore's fade, not the mirror)
+        const glm::dvec3 mirror = dir - 2.0 * glm::dot(dir, up) * up;
+        double missedBy = 0.0;
+        const double hit = terrainHit(point + 0.01 * up, mirror, 400000.0, missedBy);
+        if (hit < 0.0) {
+            if (missedBy > skyAngle) out.kind = Mirror::Sky;
+            return out;
+        }
+        const glm::dvec3 land = point + hit * mirror;
+        glm::dvec2 pixel;
+        if (!pixelOf(land, pixel)) return out;
+        const glm::dvec2 lo = margin * glm::dvec2(kSize), hi = (1.0 - margin) * glm::dvec2(kSize);
+        if (pixel.x < lo.x || pixel.y < lo.y || pixel.x > hi.x || pixel.y > hi.y) return out;
+        const glm::dvec3 toLand = land - camera;
+        const double distance = glm::length(toLand);
+        if (terrainHit(camera, toLand / distance, distance - 0.01 * distance, unused) >= 0.0) return out;  // hidden
+        out.kind = Mirror::Land;
+        out.land = glm::ivec2(pixel);
+        return out;
+    }
+
+private:
+    const Session& s_;
+    double radius_, maxHeight_;
+};
+
+const float* at(const ImageRGBAF& image, glm::ivec2 glPixel) {
+    return test::pixelAt(image, glPixel.x, image.height - 1 - glPixel.y);
+}
+double distanceRgb(const float* a, const float* b) {
+    return std::sqrt((a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) + (a[2] - b[2]) * (a[2] - b[2]));
+}
+double normRgb(const float* a) { return std::sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]); }
+
+}  // namespace
+
+TEST_F(OceanReflections, TheLakeMirrorsTheMountainsWhereTheMirrorRayMeetsThem) {
+    const Session s = mountainLake();
+    const ImageRGBAF on = render(test::repoPaths().shaders(), s);
+    const ImageRGBAF off = render(shadersWithoutReflections(), s);
+    ASSERT_TRUE(test::allFinite(on));
+    ASSERT_TRUE(test::allFinite(off));
+    fs::create_directories(PLANET_TEST_OUT);
+    writeExr(on, fs::path(PLANET_TEST_OUT) / "ocean_reflections_on.exr", s.scene.render.exposure);
+    writeExr(off, fs::path(PLANET_TEST_OUT) / "ocean_reflections_off.exr", s.scene.render.exposure);
+
+    // Classify every pixel (the land's edge 15 % in from the image's, where the search fades
+    // out, plus 5 %; the sky's margin two pixels' angle), then keep those whose neighbours
+    // 2 px away agree.
+    const MirrorRays rays(s);
+    const double pixelAngle = s.camera.fovY_rad / kSize.y;
+    std::vector<MirrorPixel> kinds(kSize.x * kSize.y);
+    for (int y = 0; y < kSize.y; ++y)
+        for (int x = 0; x < kSize.x; ++x) kinds[y * kSize.x + x] = rays.classify(x, y, 0.2, 2.0 * pixelAngle);
+    auto kindAt = [&](int x, int y) {
+        return x < 0 || y < 0 || x >= kSize.x || y >= kSize.y ? Mirror::Unjudged : kinds[y * kSize.x + x].kind;
+    };
+    auto settled = [&](int x, int y) {
+        const Mirror k = kindAt(x, y);
+        for (int dy = -2; dy <= 2; dy += 2)
+            for (int dx = -2; dx <= 2; dx += 2)
+                if (kindAt(x + dx, y + dy) != k) return false;
+        return k != Mirror::Unjudged;
+    };
+
+    int land = 0, landChanged = 0, landCloser = 0, sky = 0, skyKept = 0;
+    double worstSky = 0.0, landChange = 0.0;
+    for (int y = 0; y < kSize.y; ++y)
+        for (int x = 0; x < kSize.x; ++x) {
+            if (!settled(x, y)) continue;
+            const glm::ivec2 p(x, y);
+            const double change = distanceRgb(at(on, p), at(off, p)) / std::max(normRgb(at(off, p)), 1e-30);
+            if (kinds[y * kSize.x + x].kind == Mirror::Land) {
+                ++land;
+                landChange += change;
+                landChanged += change > 0.1;
+                const float* seen = at(on, kinds[y * kSize.x + x].land);  // the land itself, as the camera sees it
+                landCloser += distanceRgb(at(on, p), seen) < distanceRgb(at(off, p), seen);
+            } else {
+                ++sky;
+                worstSky = std::max(worstSky, change);
+                skyKept += change < 0.01;
+            }
+        }
+    std::printf("land reflections: %d pixels, mean relative change %.3f, %d changed > 10 %%, %d closer to the land\n",
+                land, landChange / std::max(land, 1), landChanged, landCloser);
+    std::printf("sky reflections: %d pixels, worst relative change %.2e, %d within 1 %%\n", sky, worstSky, skyKept);
+    ASSERT_GE(land, 40) << "the scene no longer shows the range across the lake";
+    ASSERT_GE(sky, 40) << "the scene no longer shows open sky in the lake";
+    // Where the mirror meets the land, the reflection shows it: nine in ten pixels change by
+    // more than 10 % and move towards the land's colour.
+    EXPECT_GE(landChanged, 0.9 * land);
+    EXPECT_GE(landCloser, 0.9 * land);
+    // Where it meets only sky, nothing changes: the search found nothing there.
+    EXPECT_GE(skyKept, 0.99 * sky);
+    EXPECT_LT(worstSky, 0.05);
+}
