@@ -133,43 +133,107 @@ float continentValue(vec3 unitDirection, samplerCube continents) {
     return continentValueGrad(unitDirection, continents, unused);
 }
 
+// Filtering by footprint. A pixel that covers many of an octave's features must show their
+// average, not one of them (a far view is the mean of what a closer view shows; sampling it
+// is what turned snow and rock into speckle from space). So each octave fades out as its
+// features shrink below the footprint (terrainOctaveFade), a faded octave contributes its
+// mean value instead of a sample, and the variance it no longer shows is carried along, so
+// that what depends on it nonlinearly (the squared mountains, the slope and snow rules)
+// sees the spread under the pixel: filter moments, not samples (the spirit of Toksvig's
+// and LEAN mapping's normal variance). A footprint of 0 gives the unfiltered field exactly.
+//
+// Moments of one octave's value v = mix(0.5 + 0.5 n, (1 - |n|)^2, w) of simplex noise n and
+// of its gradient, over the noise's domain (tests/test_terrain_height.cpp re-measures them):
+// the fBm and ridged parts are uncorrelated (one is odd in n, the other even), so the
+// mixture's moments are the (1 - w)^2 and w^2 weighted sums of these.
+const float TERRAIN_FBM_OCTAVE_MEAN = 0.5f;
+const float TERRAIN_FBM_OCTAVE_VARIANCE = 0.0358f;
+const float TERRAIN_FBM_OCTAVE_GRADIENT_MS = 2.163f;  // mean |grad v|^2, per noise unit
+const float TERRAIN_RIDGED_OCTAVE_MEAN = 0.5373f;
+const float TERRAIN_RIDGED_OCTAVE_VARIANCE = 0.0799f;
+const float TERRAIN_RIDGED_OCTAVE_GRADIENT_MS = 17.87f;
+// An octave is kept whole while the footprint spans under a quarter of its lattice cell and
+// gone at half a cell (two pixels per feature: the Nyquist limit of what a pixel can show).
+const float TERRAIN_FILTER_KEEP = 0.25f;
+const float TERRAIN_FILTER_DROP = 0.5f;
+
+// How much of an octave a footprint shows, in [0, 1]: `cells` is the footprint in the
+// octave's lattice cells (footprint in noise units times the octave's frequency).
+float terrainOctaveFade(float cells) { return 1.0f - smoothstep(TERRAIN_FILTER_KEEP, TERRAIN_FILTER_DROP, cells); }
+
 // Mountains at noise-space point p, in [0, 1], and the gradient d/dp: per octave (lacunarity 2,
 // gain 0.5) mix(0.5 + 0.5 n, (1 - |n|)^2, ridgedWeight) of simplex noise n, normalised like
 // fbm; ridgedWeight 0 is 0.5 + 0.5 fbm(p), 1 is ridgedFbm(p). One noise evaluation per octave;
 // 0 octaves (continents only) is 0.
-float terrainMountainsGrad(vec3 p, int octaves, float ridgedWeight, OUT(vec3) gradient) {
+// Filtered over a footprint of `footprint` noise units (0: none): the octaves too fine for
+// it contribute their mean; `variance` and `gradientVariance` are the value's and the
+// gradient's (mean |.|^2) variance they leave under the footprint. Octaves past the
+// footprint cost no noise evaluation, so a far view is cheaper.
+float terrainMountainsGradFiltered(vec3 p, int octaves, float ridgedWeight, float footprint, OUT(vec3) gradient,
+                                   OUT(float) variance, OUT(float) gradientVariance) {
     int count = clamp(octaves, 0, 10);
     gradient = vec3(0.0f);
+    variance = 0.0f;
+    gradientVariance = 0.0f;
     if (count == 0) return 0.0f;
+    float fbmShare = 1.0f - ridgedWeight;
+    float octaveMean = fbmShare * TERRAIN_FBM_OCTAVE_MEAN + ridgedWeight * TERRAIN_RIDGED_OCTAVE_MEAN;
+    float octaveVariance =
+        fbmShare * fbmShare * TERRAIN_FBM_OCTAVE_VARIANCE + ridgedWeight * ridgedWeight * TERRAIN_RIDGED_OCTAVE_VARIANCE;
+    float octaveGradientMs = fbmShare * fbmShare * TERRAIN_FBM_OCTAVE_GRADIENT_MS +
+                             ridgedWeight * ridgedWeight * TERRAIN_RIDGED_OCTAVE_GRADIENT_MS;
     float sum = 0.0f;
     float total = 0.0f;
     float amplitude = 1.0f;
     float frequency = 1.0f;
     for (int k = 0; k < 10; k++) {
         if (k >= count) break;
-        vec3 g;
-        float n = simplexNoiseGrad(p * frequency, g);
-        float ridge = 1.0f - abs(n);
-        float value = (1.0f - ridgedWeight) * (0.5f + 0.5f * n) + ridgedWeight * ridge * ridge;
-        float slope = (1.0f - ridgedWeight) * 0.5f - ridgedWeight * 2.0f * ridge * sign(n);
+        float fade = terrainOctaveFade(footprint * frequency);
+        float value = octaveMean;
+        if (fade > 0.0f) {
+            vec3 g;
+            float n = simplexNoiseGrad(p * frequency, g);
+            float ridge = 1.0f - abs(n);
+            float octaveValue = fbmShare * (0.5f + 0.5f * n) + ridgedWeight * ridge * ridge;
+            float slope = fbmShare * 0.5f - ridgedWeight * 2.0f * ridge * sign(n);
+            value = fade * octaveValue + (1.0f - fade) * octaveMean;
+            gradient += (fade * amplitude * frequency * slope) * g;
+        }
+        float hidden = 1.0f - fade * fade;  // the share of this octave's variance the footprint averages away
+        variance += hidden * amplitude * amplitude * octaveVariance;
+        gradientVariance += hidden * amplitude * amplitude * frequency * frequency * octaveGradientMs;
         sum += amplitude * value;
-        gradient += (amplitude * frequency * slope) * g;
         total += amplitude;
         frequency *= 2.0f;
         amplitude *= 0.5f;
     }
     gradient /= total;
+    variance /= total * total;
+    gradientVariance /= total * total;
     return sum / total;
+}
+
+float terrainMountainsGrad(vec3 p, int octaves, float ridgedWeight, OUT(vec3) gradient) {
+    float variance;
+    float gradientVariance;
+    return terrainMountainsGradFiltered(p, octaves, ridgedWeight, 0.0f, gradient, variance, gradientVariance);
 }
 
 // Height above sea level in metres at a direction, in [-oceanDepth, maxHeight], and its
 // gradient with respect to the direction as a point in R^3 (m per unit; only the tangential
-// part is meaningful on the sphere: m per radian).
-float terrainHeightGrad(vec3 unitDirection, TerrainShape shape, samplerCube continents, OUT(vec3) gradient) {
+// part is meaningful on the sphere: m per radian), filtered over a footprint of
+// `footprint` radians (0: none; see terrainMountainsGradFiltered): then the mean height over
+// it, the gradient of that mean, and the height's and the gradient's (m^2 per radian^2)
+// variance under the footprint. The continents are the baked map's, bilinear and unfiltered:
+// their features are hundreds of km across.
+float terrainHeightGradFiltered(vec3 unitDirection, TerrainShape shape, samplerCube continents, float footprint,
+                                OUT(vec3) gradient, OUT(float) heightVariance, OUT(float) gradientVariance) {
     vec3 continentGradient;
     float e = continentValueGrad(unitDirection, continents, continentGradient);
     float height;
     float coastSlope = terrainCoastSlope(shape);
+    heightVariance = 0.0f;
+    gradientVariance = 0.0f;
     if (e < 0.0f) {
         float dShelf;
         float mSea = shape.oceanDepth > 0.0f ? coastSlope * TERRAIN_SHELF_WIDTH / shape.oceanDepth : 0.0f;
@@ -186,19 +250,34 @@ float terrainHeightGrad(vec3 unitDirection, TerrainShape shape, samplerCube cont
         dLowland /= TERRAIN_LOWLAND_WIDTH;
         float inland = terrainSmoothstepGrad(0.0f, TERRAIN_INLAND_WIDTH, e, dInland);
         // Mountains squared: most of the land stays low, peaks are rare (mean land height
-        // about 1/4 of maxHeight instead of 1/2).
+        // about 1/4 of maxHeight instead of 1/2). Filtered: E[noise^2] = mean^2 + variance.
         vec3 noiseGradient;
-        float noise = terrainMountainsGrad(unitDirection * shape.mountainFrequency + terrainXyz(shape.mountainOffset),
-                                           shape.mountainOctaves, shape.ridgedWeight, noiseGradient);
-        float mountains = noise * noise;
+        float noiseVariance;
+        float noiseGradientVariance;
+        float noise = terrainMountainsGradFiltered(
+            unitDirection * shape.mountainFrequency + terrainXyz(shape.mountainOffset), shape.mountainOctaves,
+            shape.ridgedWeight, footprint * shape.mountainFrequency, noiseGradient, noiseVariance, noiseGradientVariance);
+        float mountains = noise * noise + noiseVariance;
         vec3 mountainGradient = (2.0f * noise) * noiseGradient;
         float mountainShare = 1.0f - TERRAIN_LOWLAND_SHARE;
-        height = shape.maxHeight * (TERRAIN_LOWLAND_SHARE * lowland + mountainShare * inland * mountains);
+        float mountainScale = shape.maxHeight * mountainShare * inland;
+        height = shape.maxHeight * TERRAIN_LOWLAND_SHARE * lowland + mountainScale * mountains;
         gradient = shape.maxHeight * ((TERRAIN_LOWLAND_SHARE * dLowland + mountainShare * dInland * mountains) *
                                           continentGradient +
                                       (mountainShare * inland * shape.mountainFrequency) * mountainGradient);
+        // First order in the hidden octaves: d(noise^2) = 2 noise d(noise).
+        float spread = 2.0f * noise * mountainScale;
+        heightVariance = spread * spread * noiseVariance;
+        gradientVariance = spread * spread * shape.mountainFrequency * shape.mountainFrequency * noiseGradientVariance;
     }
     return clamp(height, -shape.oceanDepth, shape.maxHeight);
+}
+
+float terrainHeightGrad(vec3 unitDirection, TerrainShape shape, samplerCube continents, OUT(vec3) gradient) {
+    float heightVariance;
+    float gradientVariance;
+    return terrainHeightGradFiltered(unitDirection, shape, continents, 0.0f, gradient, heightVariance,
+                                     gradientVariance);
 }
 
 float terrainHeight(vec3 unitDirection, TerrainShape shape, samplerCube continents) {
@@ -208,11 +287,30 @@ float terrainHeight(vec3 unitDirection, TerrainShape shape, samplerCube continen
 
 // Unit normal of the terrain surface r(d) = planetRadius + h(d) at direction d (planetRadius
 // in metres): the height gradient projected onto the tangent plane, n = normalize(d - grad_T h / r).
+vec3 terrainNormalFromGradient(vec3 unitDirection, float height, vec3 gradient, float planetRadius) {
+    vec3 tangential = gradient - dot(gradient, unitDirection) * unitDirection;
+    return normalize(unitDirection - tangential / (planetRadius + height));
+}
+
 vec3 terrainNormal(vec3 unitDirection, TerrainShape shape, samplerCube continents, float planetRadius) {
     vec3 gradient;
     float height = terrainHeightGrad(unitDirection, shape, continents, gradient);
-    vec3 tangential = gradient - dot(gradient, unitDirection) * unitDirection;
-    return normalize(unitDirection - tangential / (planetRadius + height));
+    return terrainNormalFromGradient(unitDirection, height, gradient, planetRadius);
+}
+
+// The terrain as a pixel with a footprint of `footprintM` metres sees it: the normal of the
+// mean surface, the mean height, and the spreads (standard deviations) under the footprint
+// of the height (m) and of the slope (rise over run) that the normal no longer shows.
+vec3 terrainNormalFiltered(vec3 unitDirection, TerrainShape shape, samplerCube continents, float planetRadius,
+                           float footprintM, OUT(float) height, OUT(float) heightSpread, OUT(float) slopeSpread) {
+    vec3 gradient;
+    float heightVariance;
+    float gradientVariance;
+    height = terrainHeightGradFiltered(unitDirection, shape, continents, footprintM / planetRadius, gradient,
+                                       heightVariance, gradientVariance);
+    heightSpread = sqrt(heightVariance);
+    slopeSpread = sqrt(gradientVariance) / (planetRadius + height);
+    return terrainNormalFromGradient(unitDirection, height, gradient, planetRadius);
 }
 
 // Slope as rise over run (tan of the angle between the normal and the local vertical up):
@@ -250,32 +348,49 @@ int terrainMaterial(float height, float slope, float latitude) {
 
 // How fully rule `material` of terrainMaterial holds, in [0, 1]: a smoothstep across its
 // threshold, 0.5 exactly on it, 0 or 1 further than the blend half width from it.
-float terrainMaterialCoverage(int material, float height, float slope, float latitude) {
+// With spreads (standard deviations of height, m, and slope under a pixel's footprint,
+// terrainNormalFiltered; 0: a point) it is the share of the footprint where the rule holds,
+// approximately: each band widens by twice the spread, and the slope compared is the RMS
+// slope sqrt(slope^2 + spread^2), since hidden bumps only ever steepen the ground.
+float terrainMaterialCoverageSpread(int material, float height, float slope, float latitude, float heightSpread,
+                                    float slopeSpread) {
+    float heightBand = TERRAIN_BLEND_HEIGHT_M + 2.0f * heightSpread;
     if (material == TERRAIN_MATERIAL_SEA_FLOOR)
-        return 1.0f - smoothstep(-TERRAIN_BEACH_DEPTH_M - TERRAIN_BLEND_HEIGHT_M,
-                                 -TERRAIN_BEACH_DEPTH_M + TERRAIN_BLEND_HEIGHT_M, height);
-    if (material == TERRAIN_MATERIAL_ROCK)
-        return smoothstep(TERRAIN_ROCK_SLOPE - TERRAIN_BLEND_SLOPE, TERRAIN_ROCK_SLOPE + TERRAIN_BLEND_SLOPE, slope);
+        return 1.0f - smoothstep(-TERRAIN_BEACH_DEPTH_M - heightBand, -TERRAIN_BEACH_DEPTH_M + heightBand, height);
+    if (material == TERRAIN_MATERIAL_ROCK) {
+        float slopeBand = TERRAIN_BLEND_SLOPE + 2.0f * slopeSpread;
+        float rmsSlope = slopeSpread > 0.0f ? sqrt(slope * slope + slopeSpread * slopeSpread) : slope;
+        return smoothstep(TERRAIN_ROCK_SLOPE - slopeBand, TERRAIN_ROCK_SLOPE + slopeBand, rmsSlope);
+    }
     if (material == TERRAIN_MATERIAL_SNOW) {
         float snowLine = terrainSnowLine(latitude);
-        return smoothstep(snowLine - TERRAIN_BLEND_SNOW_M, snowLine + TERRAIN_BLEND_SNOW_M, height);
+        float snowBand = TERRAIN_BLEND_SNOW_M + 2.0f * heightSpread;
+        return smoothstep(snowLine - snowBand, snowLine + snowBand, height);
     }
     if (material == TERRAIN_MATERIAL_SAND)
-        return 1.0f - smoothstep(TERRAIN_BEACH_HEIGHT_M - TERRAIN_BLEND_HEIGHT_M,
-                                 TERRAIN_BEACH_HEIGHT_M + TERRAIN_BLEND_HEIGHT_M, height);
+        return 1.0f - smoothstep(TERRAIN_BEACH_HEIGHT_M - heightBand, TERRAIN_BEACH_HEIGHT_M + heightBand, height);
     return 1.0f;  // grass: whatever the rules above leave
+}
+
+float terrainMaterialCoverage(int material, float height, float slope, float latitude) {
+    return terrainMaterialCoverageSpread(material, height, slope, latitude, 0.0f, 0.0f);
 }
 
 // Blend weight of `material` at a point: coverage of its rule times what the earlier rules
 // leave, w_i = c_i * prod_{j < i} (1 - c_j). The weights of all materials sum to 1, vary
 // smoothly, and equal the hard rule (1 for terrainMaterial's id, 0 for the others) wherever
-// every threshold is further than its blend half width.
-float terrainMaterialWeight(int material, float height, float slope, float latitude) {
+// every threshold is further than its blend half width. With spreads: over a footprint.
+float terrainMaterialWeightSpread(int material, float height, float slope, float latitude, float heightSpread,
+                                  float slopeSpread) {
     float remaining = 1.0f;
     for (int id = 0; id < TERRAIN_MATERIAL_COUNT; id++) {
-        float coverage = terrainMaterialCoverage(id, height, slope, latitude);
+        float coverage = terrainMaterialCoverageSpread(id, height, slope, latitude, heightSpread, slopeSpread);
         if (id == material) return remaining * coverage;
         remaining *= 1.0f - coverage;
     }
     return 0.0f;
+}
+
+float terrainMaterialWeight(int material, float height, float slope, float latitude) {
+    return terrainMaterialWeightSpread(material, height, slope, latitude, 0.0f, 0.0f);
 }

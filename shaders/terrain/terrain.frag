@@ -1,14 +1,18 @@
-// Terrain into the G-buffer: per-pixel normal from the height field's analytic
-// gradient (independent of tessellation), material by height, slope and
-// latitude (terrain/height.glsl), albedo per material.
+// Terrain into the G-buffer: per-pixel normal from the height field's analytic gradient
+// (independent of tessellation), material by height, slope and latitude, albedo per material
+// (terrain/height.glsl), all filtered over the pixel's footprint (terrainNormalFiltered,
+// terrainMaterialWeightSpread), then the ground's detail (terrain/detail.glsl): tri-planar
+// detail normals and colour variation, mip-filtered by the same footprint.
 #include "common/frame_uniforms.glsl"
 #include "common/constants.glsl"
 #include "common/gbuffer.glsl"
 #include "noise/simplex.glsl"
 #include "terrain/height.glsl"
+#include "terrain/detail.glsl"
 
 in vec3 teDirection;
 in float teHeight;
+in vec3 teDetailPosition;
 
 #include "terrain/terrain_block.glsl"
 
@@ -21,6 +25,11 @@ const vec3 MATERIAL_ALBEDO[TERRAIN_MATERIAL_COUNT] =
     vec3[](vec3(0.10, 0.09, 0.07), vec3(0.13, 0.11, 0.09), vec3(0.80, 0.82, 0.86), vec3(0.36, 0.31, 0.21),
            vec3(0.0));  // grass: terrainLowlandAlbedo
 
+// Wet sand: darker from the waterline up to this height above sea level (the waves' run-up),
+// by this factor at the water (wet sand reflects about half as much: Lekner & Dorf 1988).
+const float TERRAIN_WET_HEIGHT_M = 1.5;
+const float TERRAIN_WET_DARKENING = 0.55;
+
 // The lowlands take the preset's albedo; so do a dry world's basins, a little darker.
 vec3 materialAlbedo(int material) {
     if (material == TERRAIN_MATERIAL_GRASS) return terrainLowlandAlbedo;
@@ -28,14 +37,34 @@ vec3 materialAlbedo(int material) {
     return MATERIAL_ALBEDO[material];
 }
 
+// Ground a wave has wet: below TERRAIN_WET_HEIGHT_M where there is a sea, averaged over the
+// height's spread under the pixel.
+float wetness(float height, float heightSpread) {
+    if (terrainHasOcean == 0) return 0.0;
+    float band = 0.3 + 2.0 * heightSpread;
+    return 1.0 - smoothstep(TERRAIN_WET_HEIGHT_M - band, TERRAIN_WET_HEIGHT_M + band, height);
+}
+
 void main() {
     vec3 up = normalize(teDirection);
-    vec3 normal = terrainNormal(up, terrainShape, uContinents, frame.planetRadius);
+    vec3 dpdx = dFdx(teDetailPosition);
+    vec3 dpdy = dFdy(teDetailPosition);
+    float footprint = max(length(dpdx), length(dpdy));  // m: the pixel's larger extent on the ground
+    float height;
+    float heightSpread;
+    float slopeSpread;
+    vec3 normal = terrainNormalFiltered(up, terrainShape, uContinents, frame.planetRadius, footprint, height,
+                                        heightSpread, slopeSpread);
     float slope = terrainSlope(normal, up);
     float latitude = terrainLatitude(up);
+    float weights[TERRAIN_MATERIAL_COUNT];
     vec3 albedo = vec3(0.0);
-    for (int m = 0; m < TERRAIN_MATERIAL_COUNT; ++m)
-        albedo += terrainMaterialWeight(m, teHeight, slope, latitude) * materialAlbedo(m);
+    for (int m = 0; m < TERRAIN_MATERIAL_COUNT; ++m) {
+        weights[m] = terrainMaterialWeightSpread(m, height, slope, latitude, heightSpread, slopeSpread);
+        albedo += weights[m] * materialAlbedo(m);
+    }
+    albedo *= mix(1.0, TERRAIN_WET_DARKENING, wetness(height, heightSpread));
+    applyTerrainDetail(teDetailPosition, dpdx, dpdy, weights, normal, albedo);
     outNormal = vec4(normal, 0.0);
     outAlbedo = vec4(albedo, 1.0);
     outMaterial = vec4(float(MATERIAL_GROUND) / 255.0, 1.0, 0.0, 0.0);

@@ -37,11 +37,13 @@ using glm::max;
 using glm::min;
 using glm::normalize;
 using glm::sign;
+using glm::sqrt;
 using glm::smoothstep;
 using glm::step;
 using std::abs;
 using std::asin;
 using std::floor;
+using std::sqrt;
 vec4 textureLod(samplerCube map, vec3 direction, float /*level: the map has one*/) {
     return noise::sampleContinents(map, glm::dvec3(direction));
 }
@@ -109,6 +111,12 @@ glm::vec3 terrainNormal(glm::vec3 d, const TerrainShape& shape, const noise::Cub
     return glsl::terrainNormal(d, toGlsl(shape), continents, planetRadius);
 }
 
+glm::vec3 terrainNormalFiltered(glm::vec3 d, const TerrainShape& shape, const noise::CubeMap& continents,
+                                float planetRadius, float footprintM, FootprintSpread& spread) {
+    return glsl::terrainNormalFiltered(d, toGlsl(shape), continents, planetRadius, footprintM, spread.meanHeightM,
+                                       spread.heightSpreadM, spread.slopeSpread);
+}
+
 float terrainSlope(glm::vec3 normal, glm::vec3 up) { return glsl::terrainSlope(normal, up); }
 
 float terrainLatitude(glm::vec3 d) { return glsl::terrainLatitude(d); }
@@ -121,6 +129,17 @@ Material terrainMaterial(float height, float slope, float latitude) {
 
 float terrainMaterialWeight(Material material, float height, float slope, float latitude) {
     return glsl::terrainMaterialWeight(static_cast<int>(material), height, slope, latitude);
+}
+
+float terrainMaterialWeightSpread(Material material, float height, float slope, float latitude, float heightSpreadM,
+                                  float slopeSpread) {
+    return glsl::terrainMaterialWeightSpread(static_cast<int>(material), height, slope, latitude, heightSpreadM,
+                                             slopeSpread);
+}
+
+OctaveMoments mountainOctaveMoments() {
+    return {glsl::TERRAIN_FBM_OCTAVE_MEAN,    glsl::TERRAIN_FBM_OCTAVE_VARIANCE,    glsl::TERRAIN_FBM_OCTAVE_GRADIENT_MS,
+            glsl::TERRAIN_RIDGED_OCTAVE_MEAN, glsl::TERRAIN_RIDGED_OCTAVE_VARIANCE, glsl::TERRAIN_RIDGED_OCTAVE_GRADIENT_MS};
 }
 
 MaterialThresholds materialThresholds() {

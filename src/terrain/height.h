@@ -67,6 +67,20 @@ float continentValue(glm::vec3 unitDirection, const noise::CubeMap& continents);
 glm::vec3 terrainNormal(glm::vec3 unitDirection, const TerrainShape& shape, const noise::CubeMap& continents,
                         float planetRadius);
 
+// What a pixel with a footprint sees (GLSL: terrainNormalFiltered): the mean height over the
+// footprint, and the spreads (standard deviations) of height and slope under it that the
+// filtered normal no longer shows.
+struct FootprintSpread {
+    float meanHeightM = 0.0f;    // m above sea level, the mean over the footprint
+    float heightSpreadM = 0.0f;  // standard deviation of the height, m
+    float slopeSpread = 0.0f;    // standard deviation of the slope (rise over run)
+};
+
+// The normal of the terrain's mean surface over a footprint of `footprintM` metres (0: the
+// point's normal, terrainNormal, exactly). GLSL: terrainNormalFiltered.
+glm::vec3 terrainNormalFiltered(glm::vec3 unitDirection, const TerrainShape& shape, const noise::CubeMap& continents,
+                                float planetRadius, float footprintM, FootprintSpread& spread);
+
 // The terrain's height field on the CPU: the shape for one set of TerrainParams and the
 // continents map, which it shares with the map's owner (terrain::Continents, continents.h):
 // its own by default (the map from the cache under `cacheRoot`, or baked there), or one
@@ -133,6 +147,18 @@ Material terrainMaterial(float height, float slope, float latitude);
 // Smooth blend weight of a material at a point; all materials' weights sum to 1.
 // GLSL: terrainMaterialWeight.
 float terrainMaterialWeight(Material material, float height, float slope, float latitude);
+
+// The share of a footprint with these height and slope spreads (FootprintSpread) that a
+// material covers; spreads 0 give terrainMaterialWeight. GLSL: terrainMaterialWeightSpread.
+float terrainMaterialWeightSpread(Material material, float height, float slope, float latitude, float heightSpreadM,
+                                  float slopeSpread);
+
+// The moments of one mountain octave's value and gradient that the footprint filter assumes
+// (GLSL TERRAIN_FBM_OCTAVE_* and TERRAIN_RIDGED_OCTAVE_*), for tests to re-measure.
+struct OctaveMoments {
+    float fbmMean, fbmVariance, fbmGradientMs, ridgedMean, ridgedVariance, ridgedGradientMs;
+};
+OctaveMoments mountainOctaveMoments();
 
 // The rule's thresholds (GLSL constants of the same meaning), for tests and UI.
 struct MaterialThresholds {

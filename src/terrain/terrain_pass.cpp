@@ -1,6 +1,7 @@
 #include "terrain/terrain_pass.h"
 
 #include "render/bindings.h"
+#include "terrain/detail_texture.h"
 #include "terrain/terrain_block.h"
 
 namespace planet {
@@ -8,7 +9,8 @@ namespace planet {
 TerrainPass::TerrainPass(const gl::ShaderSources& sources)
     : program_(sources, gl::ProgramDesc{"terrain",
                                         {"terrain/terrain.vert", "terrain/terrain.tesc", "terrain/terrain.tese",
-                                         "terrain/terrain.frag"}}) {
+                                         "terrain/terrain.frag"}}),
+      detail_(terrain::makeDetailGlTexture(terrain::bakeDetailTexture())) {
     glNamedBufferStorage(block_.id(), sizeof(terrain::TerrainBlock), nullptr, GL_DYNAMIC_STORAGE_BIT);
     block_.label("TerrainBlock");
 }
@@ -26,6 +28,7 @@ void TerrainPass::prepare(const Scene& scene, const Camera& camera) {
     const terrain::TerrainBlock block = terrain::makeTerrainBlock(scene);
     glNamedBufferSubData(block_.id(), 0, sizeof block, &block);
     glBindBufferBase(GL_UNIFORM_BUFFER, binding::BLOCK_TERRAIN, block_.id());
+    glBindTextureUnit(binding::UNIT_TERRAIN_DETAIL, detail_.id());
 }
 
 void TerrainPass::draw() const {

@@ -5,7 +5,8 @@
 //   terrain.vert  grid coordinates of the N x N vertices ((N-1)^2 quad patches)
 //   terrain.tesc  frustum culling with the highest terrain, levels from edge size on screen
 //   terrain.tese  grid -> sphere direction (double) -> height -> camera-relative position
-//   terrain.frag  per-pixel normal, material, albedo
+//   terrain.frag  per-pixel normal, material, albedo, filtered over the pixel's footprint,
+//                 with tri-planar detail from the baked detail texture (terrain/detail_texture.h)
 //
 // prepare() (before the frame's passes) follows the grid's projection anchor with
 // hysteresis (updateAnchor), so vertices stay put while the camera moves a little, and
@@ -37,7 +38,8 @@ public:
 private:
     gl::HotProgram program_;
     GridMesh mesh_{"terrain"};
-    gl::Buffer block_;  // TerrainBlock
+    gl::Buffer block_;      // TerrainBlock
+    gl::Texture detail_;    // terrain/detail_texture.h, baked once (a few ms)
     GridParams grid_;
     GridAnchor anchor_;
 };

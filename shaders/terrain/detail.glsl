@@ -1,0 +1,101 @@
+// Ground detail: the baked detail texture (terrain/detail_texture.h: slopes in xy, a fine
+// height field in z, patches in w) projected along the three world axes (tri-planar, Michelic
+// §6: "a three-planar projected normal map to get detail normals"), at three scales, into
+// per-material detail normals and colour variation (Sperlhofer 4.4: normal mapping and
+// multi-texturing, blended per material).
+//
+// Filtering: every fetch is textureGrad with the derivatives of the detail position, so the
+// mip level follows the pixel's footprint: the texture's slopes and heights average to zero
+// as a scale's features shrink below a pixel, and the detail fades into the large-scale
+// shading with no line at any distance. A scale whose whole period fits in the footprint
+// (the coarsest mip, whose mean is 0) is skipped: from orbit the detail costs nothing.
+//
+// Positions: teDetailPosition (terrain.tese), exact to a millimetre near the camera; all
+// periods divide TERRAIN_DETAIL_WRAP_M, so the wrap of the camera's position is invisible.
+
+const float TERRAIN_DETAIL_WRAP_M = 4096.0;
+const int TERRAIN_DETAIL_SCALES = 3;
+const float TERRAIN_DETAIL_PERIOD_M[TERRAIN_DETAIL_SCALES] = float[](0.5, 4.0, 32.0);
+
+// Per material (sea floor, rock, snow, sand, grass): the relief of the detail height field at
+// each scale, m (its slopes, rise over run, are about 4.2 x relief / period RMS: grass about
+// 0.25 at the finest scales, rock steeper, snow and sand smoother)...
+const vec3 TERRAIN_DETAIL_RELIEF_M[5] = vec3[](vec3(0.004, 0.04, 0.2), vec3(0.02, 0.15, 1.2), vec3(0.002, 0.02, 0.3),
+                                               vec3(0.003, 0.02, 0.15), vec3(0.012, 0.06, 0.3));
+// ... and how strongly the fine field (x: finest, y: middle scale) and the patches (z) vary
+// the albedo (relative, per unit standard deviation of the field).
+const vec3 TERRAIN_DETAIL_TINT[5] = vec3[](vec3(0.12, 0.10, 0.10), vec3(0.20, 0.25, 0.15), vec3(0.03, 0.04, 0.03),
+                                           vec3(0.10, 0.08, 0.08), vec3(0.30, 0.15, 0.25));
+
+const vec3 TERRAIN_DRY_GRASS_TINT = vec3(1.35, 1.15, 0.6);
+
+layout(binding = UNIT_TERRAIN_DETAIL) uniform sampler2D uTerrainDetail;
+
+// The detail texture at one scale, projected tri-planar: the world-space slope of the height
+// field (per metre of relief per metre), and the mean of the height (z) and patch (w) channels.
+struct DetailSample {
+    vec3 slope;
+    float height;
+    float patches;
+};
+
+DetailSample detailAtScale(vec3 p, vec3 dpdx, vec3 dpdy, vec3 planeWeights, float period) {
+    DetailSample s = DetailSample(vec3(0.0), 0.0, 0.0);
+    if (max(length(dpdx), length(dpdy)) >= period) return s;  // the coarsest mip: mean 0
+    float scale = 1.0 / period;
+    // Each plane's texture coordinates are two world axes; its slope (d/du, d/dv per unit of
+    // texture coordinate) maps back onto those axes.
+    if (planeWeights.x > 0.0) {
+        vec4 t = textureGrad(uTerrainDetail, p.yz * scale, dpdx.yz * scale, dpdy.yz * scale);
+        s.slope += planeWeights.x * vec3(0.0, t.x, t.y);
+        s.height += planeWeights.x * t.z;
+        s.patches += planeWeights.x * t.w;
+    }
+    if (planeWeights.y > 0.0) {
+        vec4 t = textureGrad(uTerrainDetail, p.zx * scale, dpdx.zx * scale, dpdy.zx * scale);
+        s.slope += planeWeights.y * vec3(t.y, 0.0, t.x);
+        s.height += planeWeights.y * t.z;
+        s.patches += planeWeights.y * t.w;
+    }
+    if (planeWeights.z > 0.0) {
+        vec4 t = textureGrad(uTerrainDetail, p.xy * scale, dpdx.xy * scale, dpdy.xy * scale);
+        s.slope += planeWeights.z * vec3(t.x, t.y, 0.0);
+        s.height += planeWeights.z * t.z;
+        s.patches += planeWeights.z * t.w;
+    }
+    s.slope *= scale;  // per metre
+    return s;
+}
+
+// Tri-planar weights for a normal: |n|^4, normalised, and those under 2 % dropped (the
+// fetch costs more than it shows).
+vec3 detailPlaneWeights(vec3 normal) {
+    vec3 a = normal * normal;
+    vec3 w = a * a;
+    w /= w.x + w.y + w.z;
+    w = mix(vec3(0.0), w, greaterThan(w, vec3(0.02)));
+    return w / (w.x + w.y + w.z);
+}
+
+// The detail of the ground at p (terrain.tese's detail position, with its screen
+// derivatives) for a surface with `normal` and material `weights` (terrainMaterialWeight):
+// the normal bent by the materials' relief, and the albedo varied by their tints.
+void applyTerrainDetail(vec3 p, vec3 dpdx, vec3 dpdy, float weights[5], inout vec3 normal, inout vec3 albedo) {
+    vec3 relief = vec3(0.0);
+    vec3 tint = vec3(0.0);
+    for (int m = 0; m < 5; ++m) {
+        relief += weights[m] * TERRAIN_DETAIL_RELIEF_M[m];
+        tint += weights[m] * TERRAIN_DETAIL_TINT[m];
+    }
+    vec3 planes = detailPlaneWeights(normal);
+    DetailSample fine = detailAtScale(p, dpdx, dpdy, planes, TERRAIN_DETAIL_PERIOD_M[0]);
+    DetailSample middle = detailAtScale(p, dpdx, dpdy, planes, TERRAIN_DETAIL_PERIOD_M[1]);
+    DetailSample coarse = detailAtScale(p, dpdx, dpdy, planes, TERRAIN_DETAIL_PERIOD_M[2]);
+    vec3 slope = relief.x * fine.slope + relief.y * middle.slope + relief.z * coarse.slope;
+    normal = normalize(normal - (slope - dot(slope, normal) * normal));
+    float patches = coarse.patches + 0.5 * middle.patches;
+    float variation = tint.x * fine.height + tint.y * middle.height + tint.z * patches;
+    albedo *= clamp(1.0 + variation, 0.3, 2.0);
+    // Grass: dry, yellower patches among lush ones.
+    albedo = mix(albedo, albedo * TERRAIN_DRY_GRASS_TINT, weights[TERRAIN_MATERIAL_GRASS] * smoothstep(-0.2, 1.2, patches));
+}

@@ -1,0 +1,42 @@
+// The terrain's detail texture: a small tiling height field baked procedurally at start-up
+// (no image files), sampled tri-planar by terrain.frag for the detail normals and the
+// materials' colour variation at ground level (Michelic §6: "a three-planar projected normal
+// map to get detail normals"; Sperlhofer 4.4: normal mapping and multi-texturing).
+//
+// Each channel is a sum of waves cos(2 pi (k . uv) + phase) with integer wave vectors k, so
+// the texture tiles exactly, and its derivatives are exact sums of sines, not finite
+// differences. Texel (u, v) in [0, 1)^2 of a size x size image:
+//   x, y  dh/du, dh/dv of the height field h (per unit of texture coordinate)
+//   z     h itself: zero mean, unit standard deviation (the shading's fine variation)
+//   w     a second, independent field with a redder spectrum (patches: dry and lush grass)
+// Amplitudes fall as 1/|k| (the slopes' spectrum is flat: every scale adds as much relief),
+// so mip levels, which average texels, average slopes and heights linearly: a far pixel's
+// detail is the mean of what a closer one shows, and fades to flat without a visible line.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "gl/handle.h"
+
+namespace planet::terrain {
+
+struct DetailTexture {
+    int size = 0;
+    std::vector<glm::vec4> texels;  // row-major, size x size
+    float fineScale = 1.0f;         // what the fine field's waves were scaled by to unit spread
+};
+
+// Bakes the detail texture (size a power of two >= 16; deterministic for a seed).
+DetailTexture bakeDetailTexture(int size = 256, std::uint32_t seed = 7);
+
+// The height h (channel z) at texture coordinate uv, evaluated from the waves directly
+// (any uv, it repeats with period 1): what the texels sample, for tests.
+float detailHeightAt(const DetailTexture& texture, glm::vec2 uv);
+
+// The GL texture: RGBA16F, full mip chain, GL_REPEAT, trilinear (isotropic: see the .cpp).
+gl::Texture makeDetailGlTexture(const DetailTexture& texture);
+
+}  // namespace planet::terrain
