@@ -64,7 +64,12 @@ void main() {
         albedo += weights[m] * materialAlbedo(m);
     }
     albedo *= mix(1.0, TERRAIN_WET_DARKENING, wetness(height, heightSpread));
-    applyTerrainDetail(teDetailPosition, dpdx, dpdy, weights, normal, albedo);
+    // The detail lies on the height field, not on the mesh: the mesh's point sits above or
+    // below the true surface by what its interpolation missed (height - teHeight), and that
+    // changes with the tessellation, which follows the camera; on the mesh the detail would
+    // swim as the camera moves (and differ between image sizes).
+    vec3 surfacePosition = teDetailPosition + up * (height - teHeight);
+    applyTerrainDetail(surfacePosition, dFdx(surfacePosition), dFdy(surfacePosition), up, weights, normal, albedo);
     outNormal = vec4(normal, 0.0);
     outAlbedo = vec4(albedo, 1.0);
     outMaterial = vec4(float(MATERIAL_GROUND) / 255.0, 1.0, 0.0, 0.0);
