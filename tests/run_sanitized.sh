@@ -5,7 +5,7 @@
 # LeakSanitizer report fails the run (UBSan is built with -fno-sanitize-recover), as does a
 # failing test.
 #
-# The suites that need GL are left out: a fixture on test::GLTest or SharedRendererTest, or a
+# The suites that need GL are left out: a fixture on test::GLTest, SharedRendererTest or CliFixture, or a
 # test that makes a HeadlessContext or runs the planet executable (runCommand), as found in
 # tests/*.cpp. Under ASan, llvmpipe makes them take about 8 minutes on two cores, and Mesa's
 # own leaks cannot be suppressed (they come from unloaded modules, with no frames to match).
@@ -27,7 +27,7 @@ else
   export ASAN_OPTIONS=detect_leaks=1
   gl_suites=$(awk '
     FNR == 1 { suite = "" }
-    /^class [A-Za-z0-9_]+ *: *public .*(GLTest|SharedRendererTest)/ { name = $2; sub(/[^A-Za-z0-9_].*/, "", name); print name }
+    /^class [A-Za-z0-9_]+ *: *public .*(GLTest|SharedRendererTest|CliFixture)/ { name = $2; sub(/[^A-Za-z0-9_].*/, "", name); print name }
     /^(TEST|TEST_F|TEST_P)\(/ { suite = $0; sub(/^[A-Z_]+\(/, "", suite); sub(/,.*/, "", suite) }
     suite != "" && /runCommand\(|HeadlessContext/ { print suite }' "$here"/*.cpp "$here"/*.h | sort -u)
   filter='*-'

@@ -228,7 +228,9 @@ TEST(FrameSources, AerialPerspectiveIsComputedInOneShaderFunctionCalledFromOnePa
     // in-scattering lookups, and the only passes that march to a surface point are the sky
     // passes, through one function (render/sky_air.glsl, marchAir: at full rate and at the
     // reduced rate); the ocean marches its reflected rays to space (no surface, no aerial
-    // perspective).
+    // perspective), except where its screen-space reflection finds land: the air along the
+    // reflected ray from the water to that land is the one other aerial perspective
+    // (ocean/screen_space_reflections.glsl).
     // Probes (compute shaders that run the same functions for tests) may call anything.
     const fs::path root = test::repoPaths().shaders();
     const std::regex toPoint(R"(\bSkyRadianceToPoint\s*\()");
@@ -248,7 +250,9 @@ TEST(FrameSources, AerialPerspectiveIsComputedInOneShaderFunctionCalledFromOnePa
         if (std::regex_search(source, march) && rel != "clouds/cloud_march.glsl") marchCallers.push_back(rel);
         EXPECT_FALSE(std::regex_search(source, model)) << rel << " calls the model's aerial perspective directly";
     }
-    EXPECT_EQ(toPointCallers, (std::vector<std::string>{"clouds/cloud_march.glsl"}));
+    std::sort(toPointCallers.begin(), toPointCallers.end());
+    EXPECT_EQ(toPointCallers,
+              (std::vector<std::string>{"clouds/cloud_march.glsl", "ocean/screen_space_reflections.glsl"}));
     std::sort(marchCallers.begin(), marchCallers.end());
     for (const std::string& caller : marchCallers)
         EXPECT_TRUE(caller == "render/sky_air.glsl" || caller == "ocean/ocean.frag" || caller.ends_with("_probe.comp"))

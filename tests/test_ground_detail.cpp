@@ -76,7 +76,9 @@ TEST(GroundDetailMeasure, AFlatImageHasNoContrastAndACheckerboardHasItsOwn) {
 // Floors: about a third of what the detail gives, far above what the flat frames had.
 // Measured with this test: 3cd79eb's shaders (no detail) 0.0003, 0.0000, 0.0005; with the
 // detail 0.315, 0.074, 0.066.
-TEST_F(GroundDetail, GroundLevelViewsHaveLocalContrast) {
+// DISABLED while the detail is off (shaders/terrain/detail.glsl TERRAIN_DETAIL_ENABLED): it
+// moved with the tessellation (RenderTest.AnchorUpdatesDoNotPopVisibly failed on `ground`).
+TEST_F(GroundDetail, DISABLED_GroundLevelViewsHaveLocalContrast) {
     EXPECT_GT(contrastOf("ground"), 0.10);
     EXPECT_GT(contrastOf("beach"), 0.025);
     EXPECT_GT(contrastOf("sunset"), 0.02);

@@ -67,9 +67,14 @@ void main() {
     // The detail lies on the height field, not on the mesh: the mesh's point sits above or
     // below the true surface by what its interpolation missed (height - teHeight), and that
     // changes with the tessellation, which follows the camera; on the mesh the detail would
-    // swim as the camera moves (and differ between image sizes).
-    vec3 surfacePosition = teDetailPosition + up * (height - teHeight);
-    applyTerrainDetail(surfacePosition, dFdx(surfacePosition), dFdy(surfacePosition), up, weights, normal, albedo);
+    // swim as the camera moves (and differ between image sizes). The pixel sees the true
+    // surface where its ray meets it: along the ray by that miss over the ray's slope
+    // (bounded: at grazing angles one step of this is all the accuracy there is).
+    vec3 ray = worldRayFromNdc(gl_FragCoord.xy * frame.inverseViewportSize * 2.0 - 1.0);
+    float descent = max(dot(ray, -up), 0.02);  // height lost per metre along the ray
+    float along = clamp((teHeight - height) / descent, -20.0, 20.0);
+    vec3 surfacePosition = teDetailPosition + ray * along;
+    if (TERRAIN_DETAIL_ENABLED) applyTerrainDetail(surfacePosition, dpdx, dpdy, up, weights, normal, albedo);
     outNormal = vec4(normal, 0.0);
     outAlbedo = vec4(albedo, 1.0);
     outMaterial = vec4(float(MATERIAL_GROUND) / 255.0, 1.0, 0.0, 0.0);
