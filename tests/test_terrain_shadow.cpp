@@ -190,7 +190,9 @@ namespace {
 
 constexpr glm::ivec2 kSize{160, 90};
 constexpr double kSunElevationDeg = 5.0;
-constexpr double kSunAzimuthDeg = 180.0;  // not yet checked: see the test
+// The view's own azimuth (assets/views/mountains.toml: 220, afternoon light from the
+// south-west), chosen before looking at the result; see the test for the other azimuths.
+constexpr double kSunAzimuthDeg = 220.0;
 
 class TerrainShadowRender : public test::GLTest {
 protected:
@@ -252,12 +254,18 @@ std::vector<SurfaceSample> surfaceSamples(Renderer& renderer, const Session& lit
 
 }  // namespace
 
-// DISABLED: written but not yet run (the shared machine took over 10 minutes a 160x90 frame
-// when it was committed); kSunAzimuthDeg is a guess (the range lies east of the camera, so a
-// southern sun throws the peaks' shadows across the slopes it faces). Run with
-// --gtest_also_run_disabled_tests, check that both kinds are sampled, then enable.
-TEST_F(TerrainShadowRender, DISABLED_MountainShadowsAtALowSunMatchACpuMarch) {
-    // The 'mountains' view with the sun 5 deg up in the south: rendered with and without
+// Measured (160x90, every third pixel, about 3 s): at the view's azimuth 220 deg, 182
+// pixels judged, reference lit 75, shadowed 107, the GPU agrees at 180 (98.9 %) at 3bf31c3
+// (209: 75 and 134, 207 agree, with terrain edits then under way in the tree). A sweep of
+// the azimuth in 15 deg steps agrees at 96-100 % wherever both kinds are sampled (180: 153
+// of 158, 270: 177 of 191), but at 90 deg (the sun behind the range, seen from the valley
+// it shadows) only 19 of 40: the main 5.1 km summit 20 km east is narrower than the
+// march's 35 % gap there (samples at 16 and 22 km) and is stepped over, the limitation
+// terrain_shadow.glsl states; its twin does the same (TwinAgreesWithAFineMarchInTheMountains).
+// Able to fail: with the march returning 1 (no shadows) 75 of 182 agree (41 %); marching
+// away from the sun instead of towards it, 74 of 182.
+TEST_F(TerrainShadowRender, MountainShadowsAtALowSunMatchACpuMarch) {
+    // The 'mountains' view with the sun 5 deg up in the south-west: rendered with and without
     // terrain shadows; a pixel is in the GPU's shadow where the shadows took more than a
     // quarter of its light. The reference march (no bias, all octaves, fine steps) at each
     // sampled land pixel's point, facing the sun (n.l > 0.3, where the sun is most of the
