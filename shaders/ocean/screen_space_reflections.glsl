@@ -15,7 +15,10 @@
 //     t(u) = (w0 / wd) u / (1 - u),   depth(u) = w0 / (1 - u),
 // so equal steps in u are equal steps on screen (no pixel is skipped near the origin and
 // none sampled twice far away) and each step's depth is exact. SSR_STEPS steps (jittered
-// per pixel so that a missed thin feature is noise, not bands), then SSR_REFINEMENTS
+// per pixel so that a missed thin feature is noise, not bands; the last one always at the
+// segment's end: a mountain seen across water lies near the vanishing point, all of it in
+// the last step, and a jittered last step fell short of it in most pixels, which left its
+// reflection as speckle), then SSR_REFINEMENTS
 // bisections of the step where the ray went behind the depth buffer: bounded cost on
 // llvmpipe whatever the scene.
 //
@@ -97,7 +100,7 @@ ScreenReflection traceScreenReflection(vec3 origin, vec3 dir, vec3 up, float hei
     float jitter = stepJitter(pixel);
     float uFront = 0.0, uBehind = -1.0;
     for (int i = 0; i < SSR_STEPS; ++i) {
-        float u = uEnd * (float(i) + 1.0 - jitter) / float(SSR_STEPS);
+        float u = i + 1 < SSR_STEPS ? uEnd * (float(i) + 1.0 - jitter) / float(SSR_STEPS) : uEnd;
         if (behindDepthBuffer(depthCopy, ndc0, ndcEnd, w0, u) > 0.0) {
             uBehind = u;
             break;
