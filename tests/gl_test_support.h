@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdlib>
 #include <memory>
 
 #include "app/session.h"
@@ -14,7 +15,12 @@
 
 namespace planet::test {
 
-inline DataPaths repoPaths() { return DataPaths{PLANET_SOURCE_DIR}; }
+// The source tree, or PLANET_ROOT where it is set (as the planet executable does), so that a
+// copied tree of changed shaders can be tried without touching the one others render from.
+inline DataPaths repoPaths() {
+    const char* root = std::getenv("PLANET_ROOT");
+    return DataPaths{root != nullptr && *root != '\0' ? root : PLANET_SOURCE_DIR};
+}
 
 class GLTest : public ::testing::Test {
 protected:

@@ -683,7 +683,7 @@ TEST(TerrainMaterial, TheDefaultPlanetHasEveryMaterial) {
 TEST(TerrainParams, TableHasARowPerFieldWithTheDefaultsInRange) {
     std::vector<ParamSpec> table;
     addTerrainParams(table);
-    ASSERT_EQ(table.size(), 16u);
+    ASSERT_EQ(table.size(), 17u);
     Scene scene;
     for (const ParamSpec& row : table) {
         EXPECT_EQ(row.section, "terrain");
@@ -697,7 +697,7 @@ TEST(TerrainParams, TableHasARowPerFieldWithTheDefaultsInRange) {
         EXPECT_LE(value, row.max) << row.key;
     }
     EXPECT_EQ(table.front().key, "max_height_m");
-    EXPECT_EQ(std::get<bool*>(table.back().field(scene)), &scene.terrain.shadows);
+    EXPECT_EQ(std::get<bool*>(table.back().field(scene)), &scene.terrain.detail);
 }
 
 // ---------------------------------------------------------------- GPU vs CPU

@@ -12,6 +12,7 @@ const int BLOCK_TERRAIN = 2;     // TerrainBlock: the height field's shape and t
 const int BLOCK_GRID = 3;        // GridBlock: the projected grid of the pass that draws (terrain/grid.glsl)
 const int BLOCK_OCEAN = 4;       // OceanBlock: the sea's parameters (ocean/ocean_block.glsl)
 const int BLOCK_CLOUDS = 5;      // CloudBlock: the cloud layer (clouds/cloud_block.glsl)
+const int BLOCK_TERRAIN_NEAR = 6; // TerrainNearBlock: the height field near the camera (terrain/terrain_block.glsl)
 
 // Shader storage buffers (std430).
 const int BUFFER_PROBE_INPUT = 0;   // the compute probes' inputs and outputs (tests and sky-probe)

@@ -51,12 +51,9 @@ vec3 noiseModExact(vec3 x, float m) {
 // (the largest intermediate, 11.4e6, is below 2^24).
 vec4 noisePermute(vec4 x) { return noiseModExact((x * 34.0f + 1.0f) * x, 289.0f); }
 
-// Simplex noise at p (lattice spacing 1), in [-1, 1]; gradient = d noise / d p.
-float simplexNoiseGrad(vec3 p, OUT(vec3) gradient) {
-    // Skew to the cubic lattice, find the cell, unskew its origin (F3 = 1/3, G3 = 1/6).
-    vec3 i = floor(p + (p.x + p.y + p.z) * (1.0f / 3.0f));
-    vec3 x0 = p - i + (i.x + i.y + i.z) * (1.0f / 6.0f);
-
+// Simplex noise in the lattice cell `i` (skewed integer coordinates, any integers below
+// 2^24) at offset x0 from the cell's origin (unskewed, the point minus the origin).
+float simplexNoiseGradInCell(vec3 i, vec3 x0, OUT(vec3) gradient) {
     // Which of the 6 simplices of the cell: walk along the largest offset first.
     // Ties broken as x before y before z, so exactly one axis is largest and one smallest.
     float xy = step(x0.y, x0.x);  // x0.x >= x0.y
@@ -105,6 +102,24 @@ float simplexNoiseGrad(vec3 p, OUT(vec3) gradient) {
                (m4.x * g0 + m4.y * g1 + m4.z * g2 + m4.w * g3 -
                 8.0f * (m3GDotX.x * x0 + m3GDotX.y * x1 + m3GDotX.z * x2 + m3GDotX.w * x3));
     return SIMPLEX_NOISE_SCALE * dot(m4, gDotX);
+}
+
+// Simplex noise at p (lattice spacing 1), in [-1, 1]; gradient = d noise / d p.
+float simplexNoiseGrad(vec3 p, OUT(vec3) gradient) {
+    // Skew to the cubic lattice, find the cell, unskew its origin (F3 = 1/3, G3 = 1/6).
+    vec3 i = floor(p + (p.x + p.y + p.z) * (1.0f / 3.0f));
+    vec3 x0 = p - i + (i.x + i.y + i.z) * (1.0f / 6.0f);
+    return simplexNoiseGradInCell(i, x0, gradient);
+}
+
+// The same noise at the point `lattice` + q, where `lattice` is a lattice point (skewed
+// integer coordinates, e.g. reduced modulo 289) and q the offset from it (unskewed, small):
+// a point far from the origin given without the float rounding of its large coordinates
+// (the caller forms lattice and q in double; terrain/height.glsl's near field).
+float simplexNoiseGradFrom(vec3 lattice, vec3 q, OUT(vec3) gradient) {
+    vec3 i = floor(q + (q.x + q.y + q.z) * (1.0f / 3.0f));
+    vec3 x0 = q - i + (i.x + i.y + i.z) * (1.0f / 6.0f);
+    return simplexNoiseGradInCell(lattice + i, x0, gradient);
 }
 
 float simplexNoise(vec3 p) {

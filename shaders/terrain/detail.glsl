@@ -10,13 +10,11 @@
 // shading with no line at any distance. A scale whose whole period fits in the footprint
 // (the coarsest mip, whose mean is 0) is skipped: from orbit the detail costs nothing.
 //
-// Positions: teDetailPosition (terrain.tese), exact to a millimetre near the camera; all
-// periods divide TERRAIN_DETAIL_WRAP_M, so the wrap of the camera's position is invisible.
-
-const float TERRAIN_DETAIL_WRAP_M = 4096.0;
-// Off: the detail moves with the tessellation (an anchor update changes 15-26 % of the ground
-// view's pixels by more than 5 %: tests/test_render.cpp), which the issue forbids; see README.
-const bool TERRAIN_DETAIL_ENABLED = false;
+// Positions: where the pixel's ray meets the height field (terrain.frag, terrainRayHitNear),
+// camera-relative plus the camera modulo TERRAIN_NEAR_WRAP_M (terrain/height.glsl): exact to a
+// millimetre near the camera; all periods divide TERRAIN_NEAR_WRAP_M, so the wrap of the
+// camera's position is invisible.
+// On where the preset's terrain.detail is (terrainDetail, terrain/terrain_block.glsl).
 const int TERRAIN_DETAIL_SCALES = 3;
 const float TERRAIN_DETAIL_PERIOD_M[TERRAIN_DETAIL_SCALES] = float[](0.5, 4.0, 32.0);
 
@@ -42,10 +40,8 @@ struct DetailSample {
     float patches;
 };
 
-DetailSample detailAtScale(vec3 p, vec3 dpdx, vec3 dpdy, vec3 planeWeights, float period) {
+DetailSample detailAtScaleIsotropic(vec3 p, vec3 dpdx, vec3 dpdy, vec3 planeWeights, float scale) {
     DetailSample s = DetailSample(vec3(0.0), 0.0, 0.0);
-    if (max(length(dpdx), length(dpdy)) >= period) return s;  // the coarsest mip: mean 0
-    float scale = 1.0 / period;
     // Each plane's texture coordinates are two world axes; its slope (d/du, d/dv per unit of
     // texture coordinate) maps back onto those axes.
     if (planeWeights.x > 0.0) {
@@ -66,7 +62,37 @@ DetailSample detailAtScale(vec3 p, vec3 dpdx, vec3 dpdy, vec3 planeWeights, floa
         s.height += planeWeights.z * t.z;
         s.patches += planeWeights.z * t.w;
     }
-    s.slope *= scale;  // per metre
+    return s;
+}
+
+// Anisotropic filtering by hand: the footprint of a pixel seen at a grazing angle is long
+// along the ray and narrow across it. An isotropic mip level (the GPU's choice from the
+// longer side) blurs across the ray too, which a supersampled frame does not (the aliasing
+// test measured 6.5 % against 3 % for the mountains). So up to TERRAIN_DETAIL_TAPS samples
+// along the long side, each at the level of the narrow one. (The GL's own anisotropic
+// filtering took llvmpipe minutes per frame at grazing angles.)
+const int TERRAIN_DETAIL_TAPS = 4;
+
+DetailSample detailAtScale(vec3 p, vec3 dpdx, vec3 dpdy, vec3 planeWeights, float period) {
+    vec3 major = dot(dpdx, dpdx) >= dot(dpdy, dpdy) ? dpdx : dpdy;
+    vec3 minor = dot(dpdx, dpdx) >= dot(dpdy, dpdy) ? dpdy : dpdx;
+    if (length(minor) >= period) return DetailSample(vec3(0.0), 0.0, 0.0);  // the coarsest mip: mean 0
+    float ratio = length(major) / max(length(minor), 1.0e-6);
+    int taps = int(clamp(ceil(ratio), 1.0, float(TERRAIN_DETAIL_TAPS)));
+    vec3 stepAlong = major / float(taps);
+    DetailSample s = DetailSample(vec3(0.0), 0.0, 0.0);
+    for (int i = 0; i < TERRAIN_DETAIL_TAPS; ++i) {
+        if (i >= taps) break;
+        vec3 tap = p + stepAlong * (float(i) + 0.5 - 0.5 * float(taps));
+        DetailSample t = detailAtScaleIsotropic(tap, stepAlong, minor, planeWeights, 1.0 / period);
+        s.slope += t.slope;
+        s.height += t.height;
+        s.patches += t.patches;
+    }
+    float weight = 1.0 / float(taps);
+    s.slope *= weight / period;  // per metre
+    s.height *= weight;
+    s.patches *= weight;
     return s;
 }
 

@@ -161,6 +161,15 @@ const float TERRAIN_FILTER_DROP = 0.5f;
 // octave's lattice cells (footprint in noise units times the octave's frequency).
 float terrainOctaveFade(float cells) { return 1.0f - smoothstep(TERRAIN_FILTER_KEEP, TERRAIN_FILTER_DROP, cells); }
 
+// One octave of the mountains from its simplex noise n: mix(0.5 + 0.5 n, (1 - |n|)^2,
+// ridgedWeight), and its derivative d/dn (`slope`).
+float terrainMountainOctave(float n, float ridgedWeight, OUT(float) slope) {
+    float fbmShare = 1.0f - ridgedWeight;
+    float ridge = 1.0f - abs(n);
+    slope = fbmShare * 0.5f - ridgedWeight * 2.0f * ridge * sign(n);
+    return fbmShare * (0.5f + 0.5f * n) + ridgedWeight * ridge * ridge;
+}
+
 // Mountains at noise-space point p, in [0, 1], and the gradient d/dp: per octave (lacunarity 2,
 // gain 0.5) mix(0.5 + 0.5 n, (1 - |n|)^2, ridgedWeight) of simplex noise n, normalised like
 // fbm; ridgedWeight 0 is 0.5 + 0.5 fbm(p), 1 is ridgedFbm(p). One noise evaluation per octave;
@@ -193,9 +202,8 @@ float terrainMountainsGradFiltered(vec3 p, int octaves, float ridgedWeight, floa
         if (fade > 0.0f) {
             vec3 g;
             float n = simplexNoiseGrad(p * frequency, g);
-            float ridge = 1.0f - abs(n);
-            float octaveValue = fbmShare * (0.5f + 0.5f * n) + ridgedWeight * ridge * ridge;
-            float slope = fbmShare * 0.5f - ridgedWeight * 2.0f * ridge * sign(n);
+            float slope;
+            float octaveValue = terrainMountainOctave(n, ridgedWeight, slope);
             value = fade * octaveValue + (1.0f - fade) * octaveMean;
             gradient += (fade * amplitude * frequency * slope) * g;
         }
@@ -219,17 +227,12 @@ float terrainMountainsGrad(vec3 p, int octaves, float ridgedWeight, OUT(vec3) gr
     return terrainMountainsGradFiltered(p, octaves, ridgedWeight, 0.0f, gradient, variance, gradientVariance);
 }
 
-// Height above sea level in metres at a direction, in [-oceanDepth, maxHeight], and its
-// gradient with respect to the direction as a point in R^3 (m per unit; only the tangential
-// part is meaningful on the sphere: m per radian), filtered over a footprint of
-// `footprint` radians (0: none; see terrainMountainsGradFiltered): then the mean height over
-// it, the gradient of that mean, and the height's and the gradient's (m^2 per radian^2)
-// variance under the footprint. The continents are the baked map's, bilinear and unfiltered:
-// their features are hundreds of km across.
-float terrainHeightGradFiltered(vec3 unitDirection, TerrainShape shape, samplerCube continents, float footprint,
-                                OUT(vec3) gradient, OUT(float) heightVariance, OUT(float) gradientVariance) {
-    vec3 continentGradient;
-    float e = continentValueGrad(unitDirection, continents, continentGradient);
+// The height from its parts: the continent value e and its gradient (per radian), and on
+// land the mountains' noise (terrainMountainsGradFiltered) with its gradient (per noise
+// unit) and variances; see terrainHeightGradFiltered.
+float terrainHeightFromParts(TerrainShape shape, float e, vec3 continentGradient, float noise, vec3 noiseGradient,
+                             float noiseVariance, float noiseGradientVariance, OUT(vec3) gradient,
+                             OUT(float) heightVariance, OUT(float) gradientVariance) {
     float height;
     float coastSlope = terrainCoastSlope(shape);
     heightVariance = 0.0f;
@@ -251,12 +254,6 @@ float terrainHeightGradFiltered(vec3 unitDirection, TerrainShape shape, samplerC
         float inland = terrainSmoothstepGrad(0.0f, TERRAIN_INLAND_WIDTH, e, dInland);
         // Mountains squared: most of the land stays low, peaks are rare (mean land height
         // about 1/4 of maxHeight instead of 1/2). Filtered: E[noise^2] = mean^2 + variance.
-        vec3 noiseGradient;
-        float noiseVariance;
-        float noiseGradientVariance;
-        float noise = terrainMountainsGradFiltered(
-            unitDirection * shape.mountainFrequency + terrainXyz(shape.mountainOffset), shape.mountainOctaves,
-            shape.ridgedWeight, footprint * shape.mountainFrequency, noiseGradient, noiseVariance, noiseGradientVariance);
         float mountains = noise * noise + noiseVariance;
         vec3 mountainGradient = (2.0f * noise) * noiseGradient;
         float mountainShare = 1.0f - TERRAIN_LOWLAND_SHARE;
@@ -273,6 +270,30 @@ float terrainHeightGradFiltered(vec3 unitDirection, TerrainShape shape, samplerC
     return clamp(height, -shape.oceanDepth, shape.maxHeight);
 }
 
+// Height above sea level in metres at a direction, in [-oceanDepth, maxHeight], and its
+// gradient with respect to the direction as a point in R^3 (m per unit; only the tangential
+// part is meaningful on the sphere: m per radian), filtered over a footprint of
+// `footprint` radians (0: none; see terrainMountainsGradFiltered): then the mean height over
+// it, the gradient of that mean, and the height's and the gradient's (m^2 per radian^2)
+// variance under the footprint. The continents are the baked map's, bilinear and unfiltered:
+// their features are hundreds of km across.
+float terrainHeightGradFiltered(vec3 unitDirection, TerrainShape shape, samplerCube continents, float footprint,
+                                OUT(vec3) gradient, OUT(float) heightVariance, OUT(float) gradientVariance) {
+    vec3 continentGradient;
+    float e = continentValueGrad(unitDirection, continents, continentGradient);
+    float noise = 0.0f;
+    vec3 noiseGradient = vec3(0.0f);
+    float noiseVariance = 0.0f;
+    float noiseGradientVariance = 0.0f;
+    if (e >= 0.0f)  // the mountains only on land: the sea floor costs no noise
+        noise = terrainMountainsGradFiltered(unitDirection * shape.mountainFrequency + terrainXyz(shape.mountainOffset),
+                                             shape.mountainOctaves, shape.ridgedWeight,
+                                             footprint * shape.mountainFrequency, noiseGradient, noiseVariance,
+                                             noiseGradientVariance);
+    return terrainHeightFromParts(shape, e, continentGradient, noise, noiseGradient, noiseVariance,
+                                  noiseGradientVariance, gradient, heightVariance, gradientVariance);
+}
+
 float terrainHeightGrad(vec3 unitDirection, TerrainShape shape, samplerCube continents, OUT(vec3) gradient) {
     float heightVariance;
     float gradientVariance;
@@ -283,6 +304,119 @@ float terrainHeightGrad(vec3 unitDirection, TerrainShape shape, samplerCube cont
 float terrainHeight(vec3 unitDirection, TerrainShape shape, samplerCube continents) {
     vec3 unused;
     return terrainHeightGrad(unitDirection, shape, continents, unused);
+}
+
+// The height field near the camera, without float's rounding of planet-sized numbers.
+// terrainHeight takes a float direction: its components round to 6e-8, half a metre on an
+// Earth-sized planet, so heights evaluated there step by centimetres every half metre, which
+// is nothing for the mesh but everything for detail 0.5 m across seen from 2 m. Near the
+// camera the same field is evaluated from the point's offset to the camera instead: the
+// direction's change from the camera's is formed exactly from the camera-relative point
+// (terrainNearDirectionChange), each mountain octave's noise point is the camera's (a
+// lattice point and an offset from it, formed in double on the CPU: terrain/height.h
+// makeTerrainNear) plus that change, and the continents, whose features are hundreds of km
+// across, are the camera's value plus the gradient of the filtered map times the change
+// (first order). Used within TERRAIN_NEAR_RANGE_M of the camera, where it agrees with
+// terrainHeight to that function's own rounding (tests/test_terrain_near.cpp: centimetres;
+// the continents' first order adds a few tenths of a metre by 2-3 km).
+const float TERRAIN_NEAR_RANGE_M = 3000.0f;
+// Camera-relative positions plus the camera's position modulo this (formed in double) are
+// small numbers that are exact near the camera and jump by a whole number of this when the
+// camera crosses it: world-fixed coordinates for anything whose period divides it (the
+// ground detail's textures).
+const float TERRAIN_NEAR_WRAP_M = 4096.0f;
+
+struct TerrainNear {
+    vec4 cameraUp;          // xyz: unit direction from the planet centre to the camera; w: |camera| (m)
+    vec4 cameraPlace;       // xyz: the camera's world position modulo TERRAIN_NEAR_WRAP_M (m); w: its
+                            // altitude above the planet radius (m), both formed in double
+    vec4 continent;         // x: the continent value at the camera's direction; yzw: its gradient (per radian)
+    vec4 octaveLattice[10]; // mountain octave k's noise point at the camera: a lattice point (skewed
+    vec4 octaveOffset[10];  // coordinates modulo 289) and the offset from it (unskewed), xyz
+};
+
+// The change of direction from the camera's to the point at `pointFromCamera` (m, world
+// axes), exactly: d(C + X) - d(C) = (X - up * rise) / |C + X|, where rise = |C + X| - |C| =
+// (2 |C| up.X + X.X) / (|C + X| + |C|) subtracts nothing of planet size.
+vec3 terrainNearDirectionChange(vec3 pointFromCamera, TerrainNear near, OUT(float) rise, OUT(float) radius) {
+    vec3 up = terrainXyz(near.cameraUp);
+    float c = near.cameraUp.w;
+    float twiceAlong = 2.0f * c * dot(up, pointFromCamera) + dot(pointFromCamera, pointFromCamera);
+    radius = sqrt(c * c + twiceAlong);
+    rise = twiceAlong / (radius + c);
+    return (pointFromCamera - up * rise) / radius;
+}
+
+// Height (m above sea level) at the point at `pointFromCamera` (m, world axes) and its
+// gradient with respect to the direction, as terrainHeightGrad (unfiltered), but exact to
+// float near the camera (see TerrainNear).
+float terrainHeightNearGrad(vec3 pointFromCamera, TerrainNear near, TerrainShape shape, OUT(vec3) gradient) {
+    float rise;
+    float radius;
+    vec3 change = terrainNearDirectionChange(pointFromCamera, near, rise, radius);
+    vec3 continentGradient = vec3(near.continent.y, near.continent.z, near.continent.w);
+    float e = near.continent.x + dot(continentGradient, change);
+    float noise = 0.0f;
+    vec3 noiseGradient = vec3(0.0f);
+    int count = clamp(shape.mountainOctaves, 0, 10);
+    if (e >= 0.0f && count > 0) {  // terrainMountainsGradFiltered at a footprint of 0, octave by octave
+        float sum = 0.0f;
+        float total = 0.0f;
+        float amplitude = 1.0f;
+        float frequency = 1.0f;
+        for (int k = 0; k < 10; k++) {
+            if (k >= count) break;
+            vec3 q = terrainXyz(near.octaveOffset[k]) + change * (shape.mountainFrequency * frequency);
+            vec3 g;
+            float n = simplexNoiseGradFrom(terrainXyz(near.octaveLattice[k]), q, g);
+            float slope;
+            sum += amplitude * terrainMountainOctave(n, shape.ridgedWeight, slope);
+            noiseGradient += (amplitude * frequency * slope) * g;
+            total += amplitude;
+            frequency *= 2.0f;
+            amplitude *= 0.5f;
+        }
+        noise = sum / total;
+        noiseGradient /= total;
+    }
+    float heightVariance;
+    float gradientVariance;
+    return terrainHeightFromParts(shape, e, continentGradient, noise, noiseGradient, 0.0f, 0.0f, gradient,
+                                  heightVariance, gradientVariance);
+}
+
+// Where the ray from the camera through `start` (m, camera-relative: a point near the
+// surface, such as the mesh's) meets the height field near the camera: Newton's method on
+// f(t) = altitude(t d) - h(t d), the ray's height above the ground, from t = |start|. The
+// result depends on the ray alone, not on the start (the mesh, which moves with the
+// tessellation), once converged: true then, with the point in `hit`; false where the ray
+// does not descend towards the ground there (a silhouette) or the step would leave the
+// start's neighbourhood (another crossing). Three or four height evaluations.
+bool terrainRayHitNear(vec3 start, TerrainNear near, TerrainShape shape, OUT(vec3) hit) {
+    float t0 = length(start);
+    vec3 d = start / t0;
+    float t = t0;
+    float newtonStep = 1.0e30f;
+    for (int i = 0; i < 4; i++) {
+        vec3 x = d * t;
+        float rise;
+        float radius;
+        terrainNearDirectionChange(x, near, rise, radius);
+        vec3 gradient;
+        float h = terrainHeightNearGrad(x, near, shape, gradient);
+        float f = near.cameraPlace.w + rise - h;
+        vec3 radial = (terrainXyz(near.cameraUp) * near.cameraUp.w + x) / radius;
+        vec3 tangential = gradient - dot(gradient, radial) * radial;
+        float df = dot(d, radial) - dot(tangential, d) / radius;  // df/dt
+        if (df > -1.0e-4f) break;
+        newtonStep = f / df;
+        t -= newtonStep;
+        if (abs(newtonStep) < 1.0e-4f * t) break;
+    }
+    hit = d * t;
+    // Converged to 0.1 % of the distance: the float heights (0.5 mm at a few km) over a
+    // grazing ray's descent leave no better, and a pixel's footprint is far larger.
+    return abs(newtonStep) < 1.0e-3f * t + 1.0e-3f && abs(t - t0) < 0.1f * t0 + 1.0f;
 }
 
 // Unit normal of the terrain surface r(d) = planetRadius + h(d) at direction d (planetRadius

@@ -12,7 +12,7 @@
 
 in vec3 teDirection;
 in float teHeight;
-in vec3 teDetailPosition;
+in vec3 tePointFromCamera;
 
 #include "terrain/terrain_block.glsl"
 
@@ -47,8 +47,8 @@ float wetness(float height, float heightSpread) {
 
 void main() {
     vec3 up = normalize(teDirection);
-    vec3 dpdx = dFdx(teDetailPosition);
-    vec3 dpdy = dFdy(teDetailPosition);
+    vec3 dpdx = dFdx(tePointFromCamera);
+    vec3 dpdy = dFdy(tePointFromCamera);
     float footprint = max(length(dpdx), length(dpdy));  // m: the pixel's larger extent on the ground
     float height;
     float heightSpread;
@@ -64,17 +64,22 @@ void main() {
         albedo += weights[m] * materialAlbedo(m);
     }
     albedo *= mix(1.0, TERRAIN_WET_DARKENING, wetness(height, heightSpread));
-    // The detail lies on the height field, not on the mesh: the mesh's point sits above or
-    // below the true surface by what its interpolation missed (height - teHeight), and that
-    // changes with the tessellation, which follows the camera; on the mesh the detail would
-    // swim as the camera moves (and differ between image sizes). The pixel sees the true
-    // surface where its ray meets it: along the ray by that miss over the ray's slope
-    // (bounded: at grazing angles one step of this is all the accuracy there is).
-    vec3 ray = worldRayFromNdc(gl_FragCoord.xy * frame.inverseViewportSize * 2.0 - 1.0);
-    float descent = max(dot(ray, -up), 0.02);  // height lost per metre along the ray
-    float along = clamp((teHeight - height) / descent, -20.0, 20.0);
-    vec3 surfacePosition = teDetailPosition + ray * along;
-    if (TERRAIN_DETAIL_ENABLED) applyTerrainDetail(surfacePosition, dpdx, dpdy, up, weights, normal, albedo);
+    // The detail lies on the height field, not on the mesh: the mesh's point is off the true
+    // surface by what its interpolation and its float heights missed, which changes with the
+    // tessellation (it follows the camera), and the detail would swim and pop with it. The
+    // pixel sees the true surface where its ray meets it, found near the camera exactly to
+    // float (terrainRayHitNear); farther out the detail is filtered to its mean long before
+    // the mesh's miss matters.
+    vec3 detailPoint = tePointFromCamera;
+    float narrowFootprint = min(length(dpdx), length(dpdy));  // the detail's filter follows it (detail.glsl)
+    bool detail = terrainDetail != 0;
+    if (detail && narrowFootprint < TERRAIN_DETAIL_PERIOD_M[TERRAIN_DETAIL_SCALES - 1] &&
+        length(tePointFromCamera) < TERRAIN_NEAR_RANGE_M) {
+        vec3 hit;
+        if (terrainRayHitNear(tePointFromCamera, terrainNear, terrainShape, hit)) detailPoint = hit;
+    }
+    if (detail)
+        applyTerrainDetail(detailPoint + terrainXyz(terrainNear.cameraPlace), dpdx, dpdy, up, weights, normal, albedo);
     outNormal = vec4(normal, 0.0);
     outAlbedo = vec4(albedo, 1.0);
     outMaterial = vec4(float(MATERIAL_GROUND) / 255.0, 1.0, 0.0, 0.0);

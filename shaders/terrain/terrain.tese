@@ -7,17 +7,12 @@
 #include "terrain/grid.glsl"
 #include "noise/simplex.glsl"
 #include "terrain/height.glsl"
-#include "terrain/detail.glsl"
 
 layout(quads, fractional_odd_spacing, ccw) in;
 in vec2 tcGrid[];
 out vec3 teDirection;   // unit direction from the planet centre
 out float teHeight;     // m above sea level (negative: under water)
-out vec3 teDetailPosition;  // m, world axes: the camera-relative position plus the camera's
-                            // position modulo TERRAIN_DETAIL_WRAP_M (in double): small
-                            // numbers that are exact to a millimetre at the camera, so the
-                            // detail does not swim, and that jump only by a whole number of
-                            // the detail textures' periods when the camera crosses a wrap
+out vec3 tePointFromCamera;  // m, world axes: the camera-relative position (formed in double)
 
 #include "terrain/terrain_block.glsl"
 
@@ -29,6 +24,6 @@ void main() {
     vec3 position = cameraRelative(direction, gridSphereRadius() + double(height));
     teDirection = vec3(direction);
     teHeight = height;
-    teDetailPosition = position + vec3(mod(gridCameraPosition(), double(TERRAIN_DETAIL_WRAP_M)));
+    tePointFromCamera = position;
     gl_Position = frame.clipFromView * (frame.viewFromWorld * vec4(position, 1.0));
 }

@@ -9,7 +9,12 @@ layout(std140, binding = BLOCK_TERRAIN) uniform TerrainBlock {
     float terrainTargetEdgePixels;  // triangle edge on screen the tessellation aims for
     int terrainHasOcean;            // 1: water below sea level; 0: dry basins (Mars)
     int terrainShadows;             // 1: the terrain casts shadows (terrain/terrain_shadow.glsl)
-    float terrainPadding1;
+    int terrainDetail;              // 1: ground detail (terrain/detail.glsl)
     float terrainPadding2;
+};
+// The height field near the camera, formed in double each frame (terrain/height.glsl
+// TerrainNear; C++: terrain::makeTerrainNear).
+layout(std140, binding = BLOCK_TERRAIN_NEAR) uniform TerrainNearBlock {
+    TerrainNear terrainNear;
 };
 layout(binding = UNIT_CONTINENTS) uniform samplerCube uContinents;  // noise/continents.h, RGBA32F

@@ -236,7 +236,7 @@ void Renderer::prepare(const Scene& scene, const Camera& camera, glm::ivec2 size
     atmosphere_.bind();
     report.cloudsUpdated = clouds_.update(scene, camera, size.y);
     clouds_.bind();
-    terrain_.prepare(scene, camera);
+    terrain_.prepare(scene, camera, *continents_->map());
     if (scene.terrain.ocean) ocean_.prepare(scene, camera);
     lastPrepare_ = report;
 }

@@ -75,6 +75,73 @@ glsl::TerrainShape toGlsl(const TerrainShape& s) {
 
 }  // namespace
 
+static_assert(sizeof(glsl::TerrainNear) == sizeof(TerrainNear) && sizeof(TerrainNear) == 23 * 16 &&
+                  offsetof(TerrainNear, octaveLattice) == 48 && offsetof(TerrainNear, octaveOffset) == 208,
+              "std140 layout of TerrainNear");
+
+TerrainNear makeTerrainNear(const TerrainShape& shape, const noise::CubeMap& continents,
+                            const glm::dvec3& cameraPosition, double planetRadiusM) {
+    TerrainNear near{};
+    const double distance = glm::length(cameraPosition);
+    const glm::dvec3 up = distance > 0.0 ? cameraPosition / distance : glm::dvec3(0.0, 0.0, 1.0);
+    near.cameraUp = glm::vec4(glm::vec3(up), static_cast<float>(distance));
+    const double wrap = glsl::TERRAIN_NEAR_WRAP_M;
+    const glm::dvec3 place = cameraPosition - wrap * glm::floor(cameraPosition / wrap);
+    near.cameraPlace = glm::vec4(glm::vec3(place), static_cast<float>(distance - planetRadiusM));
+    // The continents to first order: the value the GPU's bilinear filter gives at the camera
+    // and the gradient of that filtered map (central differences 50 m apart, in double), not
+    // the map's own gradient channel, which is the fBm's: beyond the camera the two part by
+    // metres of height within a km where the bilinear facets and the fBm disagree.
+    const glm::dvec3 east = glm::normalize(std::abs(up.z) < 0.9 ? glm::cross(glm::dvec3(0.0, 0.0, 1.0), up)
+                                                                 : glm::cross(glm::dvec3(1.0, 0.0, 0.0), up));
+    const glm::dvec3 north = glm::cross(up, east);
+    const double step = 50.0 / planetRadiusM;  // rad
+    auto value = [&](glm::dvec3 d) { return double(noise::sampleContinents(continents, glm::normalize(d)).x); };
+    const glm::dvec3 gradient = east * ((value(up + step * east) - value(up - step * east)) / (2.0 * step)) +
+                                north * ((value(up + step * north) - value(up - step * north)) / (2.0 * step));
+    near.continent = glm::vec4(static_cast<float>(value(up)), glm::vec3(gradient));
+    // Octave k's noise point 2^k (frequency * up + offset), split as simplexNoiseGrad splits
+    // it (skew, floor, unskew), in double; the lattice point reduced modulo 289, where the
+    // noise repeats.
+    const glm::dvec3 base = up * double(shape.mountainFrequency) + glm::dvec3(glm::vec3(shape.mountainOffset));
+    double frequency = 1.0;
+    for (int k = 0; k < 10; ++k, frequency *= 2.0) {
+        const glm::dvec3 p = base * frequency;
+        const glm::dvec3 cell = glm::floor(p + (p.x + p.y + p.z) / 3.0);
+        const glm::dvec3 offset = p - cell + (cell.x + cell.y + cell.z) / 6.0;
+        near.octaveLattice[k] = glm::vec4(glm::vec3(cell - 289.0 * glm::floor(cell / 289.0)), 0.0f);
+        near.octaveOffset[k] = glm::vec4(glm::vec3(offset), 0.0f);
+    }
+    return near;
+}
+
+namespace {
+glsl::TerrainNear toGlsl(const TerrainNear& n) {
+    glsl::TerrainNear g{};
+    g.cameraUp = n.cameraUp;
+    g.cameraPlace = n.cameraPlace;
+    g.continent = n.continent;
+    for (int k = 0; k < 10; ++k) {
+        g.octaveLattice[k] = n.octaveLattice[k];
+        g.octaveOffset[k] = n.octaveOffset[k];
+    }
+    return g;
+}
+}  // namespace
+
+float terrainHeightNearGrad(glm::vec3 pointFromCamera, const TerrainNear& near, const TerrainShape& shape,
+                            glm::vec3& gradient) {
+    return glsl::terrainHeightNearGrad(pointFromCamera, toGlsl(near), toGlsl(shape), gradient);
+}
+
+bool terrainRayHitNear(glm::vec3 start, const TerrainNear& near, const TerrainShape& shape, glm::vec3& hit) {
+    return glsl::terrainRayHitNear(start, toGlsl(near), toGlsl(shape), hit);
+}
+
+float terrainNearRangeM() { return glsl::TERRAIN_NEAR_RANGE_M; }
+
+float terrainNearWrapM() { return glsl::TERRAIN_NEAR_WRAP_M; }
+
 TerrainShape makeTerrainShape(const TerrainParams& p) {
     TerrainShape s{};
     s.mountainOffset = glm::vec4(noise::seedOffset(p.seed, 1), 0.0f);

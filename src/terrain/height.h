@@ -81,6 +81,37 @@ struct FootprintSpread {
 glm::vec3 terrainNormalFiltered(glm::vec3 unitDirection, const TerrainShape& shape, const noise::CubeMap& continents,
                                 float planetRadius, float footprintM, FootprintSpread& spread);
 
+// The height field near a camera (GLSL: struct TerrainNear and terrainHeightNearGrad in
+// terrain/height.glsl): the camera's place and each mountain octave's noise point there,
+// formed in double, so that the shader evaluates the field from camera-relative points
+// without float's half-metre rounding of directions. std140 (static_asserted in height.cpp).
+struct TerrainNear {
+    glm::vec4 cameraUp;             // xyz: unit direction to the camera; w: its distance from the centre, m
+    glm::vec4 cameraPlace;          // xyz: the camera modulo TERRAIN_NEAR_WRAP_M, m; w: altitude above the radius, m
+    glm::vec4 continent;            // x: continent value at the camera; yzw: its gradient per radian
+    glm::vec4 octaveLattice[10];    // per mountain octave: lattice point (skewed, modulo 289)
+    glm::vec4 octaveOffset[10];     // ... and the offset from it (unskewed)
+};
+
+// The near field for a camera at `cameraPosition` (m, world, from the planet centre) over a
+// planet of `planetRadiusM`.
+TerrainNear makeTerrainNear(const TerrainShape& shape, const noise::CubeMap& continents,
+                            const glm::dvec3& cameraPosition, double planetRadiusM);
+
+// Height and gradient at a camera-relative point from the near field. GLSL: terrainHeightNearGrad.
+float terrainHeightNearGrad(glm::vec3 pointFromCamera, const TerrainNear& near, const TerrainShape& shape,
+                            glm::vec3& gradient);
+
+// Where the ray from the camera through `start` (camera-relative, near the surface) meets the
+// height field; false where it does not converge there. GLSL: terrainRayHitNear.
+bool terrainRayHitNear(glm::vec3 start, const TerrainNear& near, const TerrainShape& shape, glm::vec3& hit);
+
+// How far from the camera the near field is used, m (TERRAIN_NEAR_RANGE_M).
+float terrainNearRangeM();
+
+// Camera-relative positions wrap every this many metres near the camera (TERRAIN_NEAR_WRAP_M).
+float terrainNearWrapM();
+
 // The terrain's height field on the CPU: the shape for one set of TerrainParams and the
 // continents map, which it shares with the map's owner (terrain::Continents, continents.h):
 // its own by default (the map from the cache under `cacheRoot`, or baked there), or one

@@ -18,12 +18,13 @@ struct TerrainBlock {
     float targetEdgePixels;           // px
     int hasOcean;                     // 1: water below sea level
     int shadows;                      // 1: the terrain casts shadows (terrain/terrain_shadow.glsl)
-    float padding1 = 0.0f;
+    int detail;                       // 1: ground detail (terrain/detail.glsl)
     float padding2 = 0.0f;
 };
 static_assert(offsetof(TerrainBlock, lowlandAlbedo) == 48 && offsetof(TerrainBlock, targetEdgePixels) == 60 &&
                   offsetof(TerrainBlock, hasOcean) == 64 &&
-                  offsetof(TerrainBlock, shadows) == 68 && sizeof(TerrainBlock) == 80,
+                  offsetof(TerrainBlock, shadows) == 68 && offsetof(TerrainBlock, detail) == 72 &&
+                  sizeof(TerrainBlock) == 80,
               "TerrainBlock must match std140 (shaders/terrain/terrain_block.glsl)");
 
 inline TerrainBlock makeTerrainBlock(const Scene& scene) {
@@ -33,6 +34,7 @@ inline TerrainBlock makeTerrainBlock(const Scene& scene) {
     b.targetEdgePixels = static_cast<float>(scene.terrain.target_edge_px);
     b.hasOcean = scene.terrain.ocean ? 1 : 0;
     b.shadows = scene.terrain.shadows ? 1 : 0;
+    b.detail = scene.terrain.detail ? 1 : 0;
     return b;
 }
 

@@ -53,6 +53,11 @@ void addTerrainParams(std::vector<ParamSpec>& table) {
         "The terrain casts shadows: mountains shade the ground at a low sun (a march over the height field "
         "towards the sun for each lit pixel; the sea does not take them yet).",
         &TerrainParams::shadows);
+    add("detail", "", 0.0, 1.0,
+        "Ground detail up close: tri-planar detail normals and colour per material at 0.5, 4 and 32 m, placed where "
+        "the view ray meets the height field (off by default: from afar it still differs from its own supersampled "
+        "mean by more than the aliasing bound allows).",
+        &TerrainParams::detail);
 }
 
 }  // namespace planet

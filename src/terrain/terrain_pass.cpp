@@ -13,9 +13,11 @@ TerrainPass::TerrainPass(const gl::ShaderSources& sources)
       detail_(terrain::makeDetailGlTexture(terrain::bakeDetailTexture())) {
     glNamedBufferStorage(block_.id(), sizeof(terrain::TerrainBlock), nullptr, GL_DYNAMIC_STORAGE_BIT);
     block_.label("TerrainBlock");
+    glNamedBufferStorage(nearBlock_.id(), sizeof(terrain::TerrainNear), nullptr, GL_DYNAMIC_STORAGE_BIT);
+    nearBlock_.label("TerrainNearBlock");
 }
 
-void TerrainPass::prepare(const Scene& scene, const Camera& camera) {
+void TerrainPass::prepare(const Scene& scene, const Camera& camera, const noise::CubeMap& continents) {
     grid_.size = scene.terrain.grid_size;
     grid_.exponent = scene.terrain.grid_exponent == 2 ? 2 : 4;  // Eq. 2 is defined for these two
     grid_.hysteresisFraction = scene.terrain.grid_hysteresis;
@@ -28,6 +30,9 @@ void TerrainPass::prepare(const Scene& scene, const Camera& camera) {
     const terrain::TerrainBlock block = terrain::makeTerrainBlock(scene);
     glNamedBufferSubData(block_.id(), 0, sizeof block, &block);
     glBindBufferBase(GL_UNIFORM_BUFFER, binding::BLOCK_TERRAIN, block_.id());
+    const terrain::TerrainNear near = terrain::makeTerrainNear(block.shape, continents, camera.position, radius);
+    glNamedBufferSubData(nearBlock_.id(), 0, sizeof near, &near);
+    glBindBufferBase(GL_UNIFORM_BUFFER, binding::BLOCK_TERRAIN_NEAR, nearBlock_.id());
     glBindTextureUnit(binding::UNIT_TERRAIN_DETAIL, detail_.id());
 }
 

@@ -19,6 +19,7 @@
 #include "gl/program.h"
 #include "grid/grid_mesh.h"
 #include "grid/projected_grid.h"
+#include "noise/continents.h"
 #include "scene/camera.h"
 #include "scene/scene.h"
 
@@ -30,7 +31,8 @@ public:
 
     // Uploads the grid's projection and the TerrainBlock (bound at BLOCK_TERRAIN for the
     // frame: the ocean reads the sea floor through it too).
-    void prepare(const Scene& scene, const Camera& camera);
+    // Also the TerrainNearBlock, from the CPU copy of the continents map the GPU samples.
+    void prepare(const Scene& scene, const Camera& camera, const noise::CubeMap& continents);
     // Draws into the bound G-buffer (depth test on, reversed-Z).
     void draw() const;
     gl::HotProgram& program() { return program_; }
@@ -39,6 +41,7 @@ private:
     gl::HotProgram program_;
     GridMesh mesh_{"terrain"};
     gl::Buffer block_;      // TerrainBlock
+    gl::Buffer nearBlock_;  // TerrainNear (terrain/height.h), every frame
     gl::Texture detail_;    // terrain/detail_texture.h, baked once (a few ms)
     GridParams grid_;
     GridAnchor anchor_;
