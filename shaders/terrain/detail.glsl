@@ -111,14 +111,15 @@ vec3 detailPlaneWeights(vec3 normal) {
 // the normal bent by the materials' relief, and the albedo varied by their tints. The
 // projections are weighted by the local vertical `up`, not by the normal: the normal is
 // filtered by the footprint, and weights from it would blend other patterns at other
-// distances and image sizes (the detail would change as the camera moves).
-void applyTerrainDetail(vec3 p, vec3 dpdx, vec3 dpdy, vec3 up, float weights[5], inout vec3 normal,
+// distances and image sizes (the detail would change as the camera moves). `strength` in
+// [0, 1] scales the relief and the tints (the fade towards the near field's range).
+void applyTerrainDetail(vec3 p, vec3 dpdx, vec3 dpdy, vec3 up, float weights[5], float strength, inout vec3 normal,
                         inout vec3 albedo) {
     vec3 relief = vec3(0.0);
     vec3 tint = vec3(0.0);
     for (int m = 0; m < 5; ++m) {
-        relief += weights[m] * TERRAIN_DETAIL_RELIEF_M[m];
-        tint += weights[m] * TERRAIN_DETAIL_TINT[m];
+        relief += (strength * weights[m]) * TERRAIN_DETAIL_RELIEF_M[m];
+        tint += (strength * weights[m]) * TERRAIN_DETAIL_TINT[m];
     }
     vec3 planes = detailPlaneWeights(up);
     DetailSample fine = detailAtScale(p, dpdx, dpdy, planes, TERRAIN_DETAIL_PERIOD_M[0]);

@@ -67,19 +67,18 @@ void main() {
     // The detail lies on the height field, not on the mesh: the mesh's point is off the true
     // surface by what its interpolation and its float heights missed, which changes with the
     // tessellation (it follows the camera), and the detail would swim and pop with it. The
-    // pixel sees the true surface where its ray meets it, found near the camera exactly to
-    // float (terrainRayHitNear); farther out the detail is filtered to its mean long before
-    // the mesh's miss matters.
-    vec3 detailPoint = tePointFromCamera;
+    // pixel sees the true surface where its ray meets it, found exactly to float within the
+    // near field's range (terrainRayHitNear); the detail fades out towards that range (placed
+    // on the mesh beyond it, it would move with the tessellation), and a ray that does not
+    // converge (one grazing a ridge) takes none.
+    float distance = length(tePointFromCamera);
     float narrowFootprint = min(length(dpdx), length(dpdy));  // the detail's filter follows it (detail.glsl)
-    bool detail = terrainDetail != 0;
-    if (detail && narrowFootprint < TERRAIN_DETAIL_PERIOD_M[TERRAIN_DETAIL_SCALES - 1] &&
-        length(tePointFromCamera) < TERRAIN_NEAR_RANGE_M) {
-        vec3 hit;
-        if (terrainRayHitNear(tePointFromCamera, terrainNear, terrainShape, hit)) detailPoint = hit;
-    }
-    if (detail)
-        applyTerrainDetail(detailPoint + terrainXyz(terrainNear.cameraPlace), dpdx, dpdy, up, weights, normal, albedo);
+    float strength = terrainDetail != 0 ? 1.0 - smoothstep(0.5 * TERRAIN_NEAR_RANGE_M, TERRAIN_NEAR_RANGE_M, distance)
+                                        : 0.0;
+    vec3 hit;
+    if (strength > 0.0 && narrowFootprint < TERRAIN_DETAIL_PERIOD_M[TERRAIN_DETAIL_SCALES - 1] &&
+        terrainRayHitNear(tePointFromCamera, terrainNear, terrainShape, hit))
+        applyTerrainDetail(hit + terrainXyz(terrainNear.cameraPlace), dpdx, dpdy, up, weights, strength, normal, albedo);
     outNormal = vec4(normal, 0.0);
     outAlbedo = vec4(albedo, 1.0);
     outMaterial = vec4(float(MATERIAL_GROUND) / 255.0, 1.0, 0.0, 0.0);
