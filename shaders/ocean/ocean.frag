@@ -88,9 +88,30 @@ void main() {
     // A pixel's footprint on the sea: its size at this distance, stretched along the view by
     // 1 / cos(incidence) (the long axis, so grazing views do not alias into sparkle; what it
     // drops becomes glitter roughness).
+    // What is not seen is not shaded (issue 15), with tests that give the same pixels as
+    // shading it would: ground surely above the highest crest (the continent value alone,
+    // src/ocean/land_cull.h) is land, and a fragment no nearer than the terrain behind it
+    // fails the depth test (the depth only grows from the seabed copy's).
+    if (ocean.landCulling != 0 && continentValue(up, uContinents) >= ocean.landContinent) discard;
     float pixelAngle = radiansPerPixel();
+    // How far the meshes may sag below the sphere here (see above), m, and what that means
+    // along this ray.
+    float edge = surfaceDistance * pixelAngle * ocean.coarsestEdgePixels;
+    float sag = edge * edge / (8.0 * frame.planetRadius);
+    float cosIncidence = max(abs(dot(view, up)), 0.05);
+    vec3 forward = -vec3(frame.worldFromView[2]);
+    float pulled = max(dot(tePosition, forward) - 2.0 * sag / cosIncidence * dot(view, forward), frame.nearPlane);
+    float fragmentDepth = depthFromViewDistance(pulled);
+    float seabed = texelFetch(seabedDepth, pixel, 0).r;
+    if (ocean.landCulling != 0 && seabed > 0.0 && !(fragmentDepth > seabed)) discard;
+
     float footprint = surfaceDistance * pixelAngle / max(abs(dot(view, up)), 0.02);
     float waterDepth = ocean.seaLevel - terrainHeight(up, terrainShape, uContinents);  // below the mean surface
+    // Land: near the camera only where no crest can reach (waves may run up a beach, and the
+    // depth test is exact there); where the meshes sag, wherever the terrain is above the sea.
+    float farness = smoothstep(0.05, 0.5, sag);
+    if (waterDepth < -ocean.maxWaveHeight * (1.0 - farness)) discard;
+    gl_FragDepth = fragmentDepth;
     float slopeVariance;
     vec3 normal = oceanNormal(up, teOffset, footprint, waterDepth, slopeVariance);
     // Seen from below only when the camera is under the sea: not from gl_FrontFacing, which
@@ -103,22 +124,8 @@ void main() {
     if (cosView < 0.01) normal = normalize(normal + view * (cosView - 0.01));
     cosView = max(dot(normal, -view), 0.01);
 
-    // How far the meshes may sag below the sphere here (see above), m, and what that means
-    // along this ray.
-    float edge = surfaceDistance * pixelAngle * ocean.coarsestEdgePixels;
-    float sag = edge * edge / (8.0 * frame.planetRadius);
-    float cosIncidence = max(abs(dot(view, up)), 0.05);
-    // Land: near the camera only where no crest can reach (waves may run up a beach, and the
-    // depth test is exact there); where the meshes sag, wherever the terrain is above the sea.
-    float farness = smoothstep(0.05, 0.5, sag);
-    if (waterDepth < -ocean.maxWaveHeight * (1.0 - farness)) discard;
-    vec3 forward = -vec3(frame.worldFromView[2]);
-    float pulled = max(dot(tePosition, forward) - 2.0 * sag / cosIncidence * dot(view, forward), frame.nearPlane);
-    gl_FragDepth = depthFromViewDistance(pulled);
-
     // Water between the surface and the seabed along this pixel's ray: from the depth
     // buffer near the camera, from the depth below the surface where the meshes sag.
-    float seabed = texelFetch(seabedDepth, pixel, 0).r;
     float seabedDistance = seabed > 0.0 ? viewDistanceFromDepth(seabed) / max(dot(view, forward), 1e-6) : 1e30;
     float meshPath = max(seabedDistance - surfaceDistance, 0.0);
     float depthPath = max(waterDepth, 0.0) / cosIncidence;

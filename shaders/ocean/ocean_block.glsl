@@ -10,4 +10,11 @@ layout(std140, binding = BLOCK_OCEAN) uniform OceanBlock {
     float fadeEnd;               // e1 of Michelic Eq. 11
     float subgridSlopeVariance;  // ripples shorter than any wave (src/ocean/ocean_gpu.h)
     int waveCount;               // records in OceanWaves
+    // Land culling (src/ocean/land_cull.h): at a continent value of landContinent or more the
+    // ground stands above the highest crest; a patch whose centre value less
+    // continentLipschitz x its angular radius is above patchLandContinent is land throughout.
+    float landContinent;
+    float patchLandContinent;
+    float continentLipschitz;    // per radian, with a safety factor
+    int landCulling;             // 0: off (tests compare with it on)
 } ocean;

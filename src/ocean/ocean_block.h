@@ -1,5 +1,5 @@
 // OceanBlock: the sea's parameters as the ocean's stages read them (BLOCK_OCEAN), C++
-// mirror of shaders/ocean/ocean_block.glsl (std140: eight scalars, 32 bytes).
+// mirror of shaders/ocean/ocean_block.glsl (std140: twelve scalars, 48 bytes).
 #pragma once
 
 #include <cstddef>
@@ -17,9 +17,18 @@ struct OceanBlock {
     float fadeEnd;               // Michelic Eq. 11 e1
     float subgridSlopeVariance;  // ripples below the shortest wave
     int waveCount;
+    // Land culling (src/ocean/land_cull.h): where the continent value is at least
+    // landContinent the ground stands above the highest crest, so no sea shows there; a
+    // patch is dropped when its centre's value, less continentLipschitz times its angular
+    // radius, is above patchLandContinent (landContinent plus the filter's rounding).
+    float landContinent;
+    float patchLandContinent;
+    float continentLipschitz;  // per radian: the filtered map's steepest slope, with a safety factor
+    int landCulling;           // 0: off (tests compare with it on)
 };
 static_assert(offsetof(OceanBlock, fadeStart) == 16 && offsetof(OceanBlock, waveCount) == 28 &&
-                  sizeof(OceanBlock) == 32,
+                  offsetof(OceanBlock, landContinent) == 32 && offsetof(OceanBlock, landCulling) == 44 &&
+                  sizeof(OceanBlock) == 48,
               "OceanBlock must match std140 (shaders/ocean/ocean_block.glsl)");
 
 OceanBlock makeOceanBlock(const Scene& scene);

@@ -5,6 +5,7 @@
 
 #include "ocean/ocean_block.h"
 #include "ocean/ocean_gpu.h"
+#include "ocean/land_cull.h"
 #include "render/bindings.h"
 
 namespace planet {
@@ -39,7 +40,8 @@ void OceanPass::uploadWaves(const Scene& scene, const Camera& camera) {
                              records.data());
 }
 
-void OceanPass::prepare(const Scene& scene, const Camera& camera) {
+void OceanPass::prepare(const Scene& scene, const Camera& camera,
+                        const std::shared_ptr<const noise::CubeMap>& continents) {
     GridParams grid;
     grid.size = scene.ocean.grid_size;
     grid.exponent = kGridExponent;
@@ -51,7 +53,17 @@ void OceanPass::prepare(const Scene& scene, const Camera& camera) {
     updateAnchor(anchor_, camera, anchorThresholdM(grid, std::abs(glm::length(camera.position) - radius)), false);
     mesh_.setProjection(makeGridBlock(gridProjection(anchor_, radius, maxHeight), grid.exponent, camera.position, radius));
     uploadWaves(scene, camera);
-    const ocean::OceanBlock block = ocean::makeOceanBlock(scene);
+    ocean::OceanBlock block = ocean::makeOceanBlock(scene);
+    if (continents != continents_) {  // a new map: measure its slope once
+        continents_ = continents;
+        lipschitz_ = continents ? ocean::continentLipschitz(*continents) : 0.0;
+        sampleSlack_ = continents ? ocean::continentSampleSlack(*continents, lipschitz_) : 0.0;
+    }
+    landContinent_ = continents ? ocean::landContinentThreshold(scene.terrain, scene.ocean.sea_level_m, maxHeight) : 2.0;
+    block.landContinent = static_cast<float>(landContinent_);
+    block.patchLandContinent = static_cast<float>(landContinent_ + sampleSlack_);
+    block.continentLipschitz = static_cast<float>(lipschitz_);
+    block.landCulling = landCulling_ && landContinent_ <= 1.0 ? 1 : 0;
     glNamedBufferSubData(block_.id(), 0, sizeof block, &block);
 }
 
@@ -63,7 +75,14 @@ void OceanPass::draw(bool elekTable) {
     glDepthMask(GL_TRUE);
     glDisable(GL_CULL_FACE);  // the surface is seen from below too
     glUseProgram(program_.get(elekTable).id());
+    if (countPrimitives_) glBeginQuery(GL_PRIMITIVES_GENERATED, primitives_.id());
     mesh_.draw();
+    if (countPrimitives_) {
+        glEndQuery(GL_PRIMITIVES_GENERATED);
+        GLuint64 count = 0;
+        glGetQueryObjectui64v(primitives_.id(), GL_QUERY_RESULT, &count);
+        lastPrimitives_ = static_cast<long long>(count);
+    }
     glDisable(GL_DEPTH_TEST);
 }
 

@@ -3,10 +3,13 @@
 // surface radiance and distance targets over the sea floor's (see shaders/ocean/ocean.frag).
 //
 //   ocean.vert   grid coordinates of the N x N vertices
-//   ocean.tesc   frustum culling with the highest crest and lowest trough, levels from edge size
+//   ocean.tesc   frustum culling with the highest crest and lowest trough, patches over land
+//                dropped (land_cull.h), levels from edge size
 //   ocean.tese   grid -> sea sphere direction (double) -> Eq. 8 displacement (in shallow water
 //                each wave no higher than 0.78 x depth) -> camera-relative position
-//   ocean.frag   Eq. 10 normal per pixel, Fresnel sky reflection, sun glitter, water body
+//   ocean.frag   fragments under land or behind the terrain discarded first (cheap tests that
+//                give the same pixels), then Eq. 10 normal per pixel, Fresnel sky reflection,
+//                sun glitter, water body
 //
 // prepare() (before the frame's passes) uploads the waves (a shader storage buffer at
 // BUFFER_OCEAN_WAVES, one record per wave, refreshed every frame with the camera's phases:
@@ -15,10 +18,13 @@
 #pragma once
 
 #include "atmosphere/tables.h"
+#include <memory>
+
 #include "gl/handle.h"
 #include "gl/program.h"
 #include "grid/grid_mesh.h"
 #include "grid/projected_grid.h"
+#include "noise/continents.h"
 #include "render/atmosphere_program.h"
 #include "scene/camera.h"
 #include "scene/scene.h"
@@ -29,13 +35,28 @@ class OceanPass {
 public:
     OceanPass(const gl::ShaderSources& sources, const atmosphere::TableSizes& tables);
 
-    void prepare(const Scene& scene, const Camera& camera);
+    // `continents`: the CPU map the GPU samples (the land culling's bounds are made from it
+    // when it changes).
+    void prepare(const Scene& scene, const Camera& camera, const std::shared_ptr<const noise::CubeMap>& continents);
     // The sea surface into the bound target (surface radiance and distance + the G-buffer's
     // depth, tested and written), reading the seabed copies, the atmosphere and the terrain's
     // height field (the sea floor), with the program for the table in use.
     void draw(bool elekTable);
 
     AtmosphereProgram& program() { return program_; }
+
+    // Land culling (on by default): patches over land dropped in the control stage, fragments
+    // under land or behind the terrain discarded before the water is shaded. Off only to
+    // compare with (tests): the pixels are the same either way.
+    void setLandCulling(bool on) { landCulling_ = on; }
+    bool landCulling() const { return landCulling_; }
+    // Counts the primitives the pass's tessellation emits (GL_PRIMITIVES_GENERATED) while on;
+    // lastPrimitives() is the last drawn frame's count (read back at once: tests, bench).
+    void setCountPrimitives(bool on) { countPrimitives_ = on; }
+    long long lastPrimitives() const { return lastPrimitives_; }
+    // The bounds in use (land_cull.h): continent value, slope per radian.
+    double landContinent() const { return landContinent_; }
+    double continentLipschitz() const { return lipschitz_; }
 
 private:
     void uploadWaves(const Scene& scene, const Camera& camera);
@@ -46,6 +67,12 @@ private:
     gl::Buffer block_;  // OceanBlock
     std::size_t waveCapacity_ = 0;
     GridAnchor anchor_;
+    bool landCulling_ = true;
+    bool countPrimitives_ = false;
+    long long lastPrimitives_ = -1;
+    gl::Query primitives_{GL_PRIMITIVES_GENERATED};
+    std::shared_ptr<const noise::CubeMap> continents_;  // the map lipschitz_ was measured on
+    double lipschitz_ = 0.0, sampleSlack_ = 0.0, landContinent_ = 2.0;
 };
 
 }  // namespace planet

@@ -237,7 +237,7 @@ void Renderer::prepare(const Scene& scene, const Camera& camera, glm::ivec2 size
     report.cloudsUpdated = clouds_.update(scene, camera, size.y);
     clouds_.bind();
     terrain_.prepare(scene, camera, *continents_->map());
-    if (scene.terrain.ocean) ocean_.prepare(scene, camera);
+    if (scene.terrain.ocean) ocean_.prepare(scene, camera, continents_->map());
     lastPrepare_ = report;
 }
 

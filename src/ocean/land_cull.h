@@ -1,0 +1,36 @@
+// Land culling for the ocean pass (issue 15): what the sea need not draw because the land
+// stands above it. The ocean's fragment shader discards a fragment where the terrain is
+// higher than the highest crest (waterDepth < -maxWaveHeight near the camera); these bounds
+// let it, and the tessellation control stage for a whole patch, know that early and for sure:
+//
+//   - landContinent: the continent value e above which the terrain's height is surely above
+//     sea level + the highest crest + a margin. On land the height is the lowlands' ramp of e
+//     plus mountains >= 0 (terrain/height.glsl), so a bound on the ramp is a bound on the
+//     height; found by bisection on the terrain's own height function (C++, the same text as
+//     the GLSL) with the mountains off, and checked monotonic above it.
+//   - continentLipschitz: the steepest slope of the map as the GPU filters it (bilinear between
+//     texel centres, per radian), from the differences of neighbouring texels and the baked
+//     analytic gradient, times a safety factor (bilinear cells, skewed texels near the cube's
+//     corners). A patch whose centre has e_c with e_c - L r > patchLandContinent, r its angular
+//     radius, has e > landContinent everywhere on it.
+//   - patchLandContinent: landContinent plus what the GPU's fixed-point filter weights may move
+//     a sample (1/32 of a texel's angle times L).
+#pragma once
+
+#include "noise/continents.h"
+#include "terrain/terrain_params.h"
+
+namespace planet::ocean {
+
+// The map's steepest slope as filtered, per radian, with the safety factor.
+double continentLipschitz(const noise::CubeMap& map);
+
+// The continent value above which the ground is surely higher than seaLevel + maxWaveHeight +
+// margin (m); 2 (above any value of the map, so nothing is culled) when no such value exists.
+double landContinentThreshold(const TerrainParams& terrain, double seaLevelM, double maxWaveHeightM);
+
+// What may move a patch's centre sample on the GPU, in continent value: the filter's weight
+// rounding (1/32 of the largest texel's angle, 2 / size radians) times the slope.
+double continentSampleSlack(const noise::CubeMap& map, double lipschitz);
+
+}  // namespace planet::ocean

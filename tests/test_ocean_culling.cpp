@@ -1,0 +1,95 @@
+// Issue 15: the sea is not drawn where there is none. Patches over land are dropped in the
+// ocean's control stage and fragments under land or behind the terrain are discarded before
+// the water is shaded (src/ocean/land_cull.h, shaders/ocean/ocean.tesc, ocean.frag): the
+// pixels must be exactly those of the frame without it, in views with sea, shore and land, and
+// the inland ground view must draw far fewer ocean primitives.
+#include <cmath>
+#include <random>
+
+#include "app/session.h"
+#include "gl_test_support.h"
+#include "noise/continents.h"
+#include "ocean/land_cull.h"
+#include "ocean/ocean_pass.h"
+#include "render/readback.h"
+#include "render/renderer.h"
+#include "terrain/height.h"
+
+using namespace planet;
+
+namespace {
+
+constexpr glm::ivec2 kSize{160, 90};
+
+class OceanCulling : public test::GLTest {
+protected:
+    void SetUp() override {
+        GLTest::SetUp();
+        renderer = std::make_unique<Renderer>(test::repoPaths().shaders(), atmosphere::TableSizes::reduced());
+    }
+    // One frame of `view` at full rate (no history: both frames alike), with or without land
+    // culling; the primitives the ocean pass emitted.
+    ImageRGBAF render(const std::string& view, bool culling, long long& primitives) {
+        Session s = loadSession(test::repoPaths(), "earth", view);
+        s.scene.render.temporal = false;
+        renderer->ocean().setLandCulling(culling);
+        renderer->ocean().setCountPrimitives(true);
+        renderer->render(s.scene, s.camera, kSize);
+        primitives = renderer->ocean().lastPrimitives();
+        return readTextureRGBAF(renderer->targets().hdr(), kSize.x, kSize.y);
+    }
+    std::unique_ptr<Renderer> renderer;
+};
+
+}  // namespace
+
+TEST_F(OceanCulling, SamePixelsWithFewerOceanPrimitivesInland) {
+    for (const std::string view : {"ground", "beach", "sea"}) {
+        long long all = 0, culled = 0;
+        const ImageRGBAF before = render(view, false, all);
+        const ImageRGBAF after = render(view, true, culled);
+        ASSERT_EQ(before.pixels.size(), after.pixels.size());
+        std::size_t differing = 0;
+        for (std::size_t i = 0; i < before.pixels.size(); ++i) differing += before.pixels[i] != after.pixels[i] ? 1 : 0;
+        std::printf("%-7s ocean primitives %lld without culling, %lld with; %zu of %zu values differ\n", view.c_str(),
+                    all, culled, differing, before.pixels.size());
+        EXPECT_EQ(differing, 0u) << view << ": land culling changed the picture";
+        EXPECT_GT(all, 0) << view;
+        if (view == "ground") EXPECT_LT(culled, all / 4) << "the inland view still draws most of its sea";
+        else EXPECT_GT(culled, 0) << view << ": the sea was culled away";
+    }
+}
+
+TEST_F(OceanCulling, TheBoundsHoldOnTheMap) {
+    Session s = loadSession(test::repoPaths(), "earth", "beach");
+    const noise::CubeMap& map = s.ground.continents();
+    const double lipschitz = ocean::continentLipschitz(map);
+    const double maxWave = 3.0;
+    const double threshold = ocean::landContinentThreshold(s.scene.terrain, 0.0, maxWave);
+    std::printf("map %d, slope bound %.3f per radian, land at e >= %.5f\n", map.size, lipschitz, threshold);
+    ASSERT_GT(threshold, 0.0);
+    ASSERT_LT(threshold, 1.0);
+    // Above the threshold the ground stands above the highest crest, whatever the mountains.
+    std::mt19937 rng(15);
+    std::uniform_real_distribution<double> unit(-1.0, 1.0);
+    int land = 0;
+    double worstSlope = 0.0;
+    for (int i = 0; i < 20000; ++i) {
+        const glm::dvec3 d = glm::normalize(glm::dvec3(unit(rng), unit(rng), unit(rng)));
+        const float e = terrain::continentValue(glm::vec3(d), map);
+        if (e >= threshold) {
+            ++land;
+            EXPECT_GT(terrain::terrainHeight(glm::vec3(d), s.ground.shape(), map), maxWave) << "e " << e;
+        }
+        // The filtered map's slope between nearby points, against the bound.
+        const double angle = 1e-3 * (1.0 + unit(rng));
+        glm::dvec3 side = glm::normalize(glm::cross(d, glm::dvec3(unit(rng), unit(rng), unit(rng))));
+        const glm::dvec3 d2 = std::cos(angle) * d + std::sin(angle) * side;
+        const double slope = std::abs(noise::sampleContinents(map, d2).x - noise::sampleContinents(map, d).x) / angle;
+        worstSlope = std::max(worstSlope, slope);
+    }
+    std::printf("%d land samples; steepest filtered slope seen %.3f per radian\n", land, worstSlope);
+    EXPECT_GT(land, 1000);
+    EXPECT_LE(worstSlope, lipschitz);
+    EXPECT_GT(worstSlope, 0.1 * lipschitz) << "the bound is far looser than it need be";
+}
