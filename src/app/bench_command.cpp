@@ -3,7 +3,9 @@
 // For each view: warm-up frames (not recorded), then N recorded frames. After
 // every frame the profiler waits for that frame's timer queries, so no sample
 // is dropped; GPU times are per pass from GL_TIMESTAMP pairs, CPU times the
-// wall time of each pass's command submission. Output: a table on stdout, a
+// submitting thread's CPU time in each pass, and waits the rest of each pass's wall time
+// (off the CPU: mostly waiting for earlier GPU work; render/profiler.h). On a software
+// renderer a note says what its timings mean. Output: a table on stdout, a
 // CSV (one row per view and pass, plus a "frame" row), and a stacked bar plot
 // of the median GPU time per pass. Compare runs as ratios on the same machine.
 // Suites: the views as they are; Michelic's terrain (Table 1) and ocean (Table 2) sweeps;
@@ -37,11 +39,26 @@ namespace {
 struct BenchRow {
     std::string view, pass;
     std::size_t frames = 0;
-    double gpuMedian = 0, gpuP95 = 0, cpuMedian = 0, cpuP95 = 0;
+    double gpuMedian = 0, gpuP95 = 0, cpuMedian = 0, cpuP95 = 0, waitMedian = 0, waitP95 = 0;
     // The clouds suite's frame rows: the sky pass's march steps (small and large) per pixel
     // of the image, and the share of them that were large steps through empty space.
     double cloudStepsPerPixel = -1, cloudSkippedShare = -1;
 };
+
+BenchRow benchRow(const std::string& view, const std::string& pass, const std::vector<double>& gpu,
+                  const std::vector<double>& cpu, const std::vector<double>& wait) {
+    BenchRow r;
+    r.view = view;
+    r.pass = pass;
+    r.frames = gpu.size();
+    r.gpuMedian = percentile(gpu, 50);
+    r.gpuP95 = percentile(gpu, 95);
+    r.cpuMedian = percentile(cpu, 50);
+    r.cpuP95 = percentile(cpu, 95);
+    r.waitMedian = percentile(wait, 50);
+    r.waitP95 = percentile(wait, 95);
+    return r;
+}
 
 // The views to measure: the session's (assets/views, loaded and warned about once, by
 // loadSession) unless --views names files or folders. A broken file in a folder is
@@ -85,17 +102,16 @@ std::vector<BenchRow> measureView(Renderer& renderer, Session& session, glm::ive
     profiler.setRecording(false);
 
     std::vector<BenchRow> rows;
-    std::vector<double> totalGpu(static_cast<std::size_t>(o.frames), 0.0), totalCpu = totalGpu;
+    std::vector<double> totalGpu(static_cast<std::size_t>(o.frames), 0.0), totalCpu = totalGpu, totalWait = totalGpu;
     for (const PassTimings& p : profiler.passes()) {
         if (p.recordedGpuMs.empty()) continue;  // not drawn in this view (the sky's full- or reduced-rate passes)
-        rows.push_back({session.view.name, p.name, p.recordedGpuMs.size(), percentile(p.recordedGpuMs, 50),
-                        percentile(p.recordedGpuMs, 95), percentile(p.recordedCpuMs, 50),
-                        percentile(p.recordedCpuMs, 95)});
+        rows.push_back(benchRow(session.view.name, p.name, p.recordedGpuMs, p.recordedCpuMs, p.recordedWaitMs));
         for (std::size_t i = 0; i < totalGpu.size() && i < p.recordedGpuMs.size(); ++i) totalGpu[i] += p.recordedGpuMs[i];
         for (std::size_t i = 0; i < totalCpu.size() && i < p.recordedCpuMs.size(); ++i) totalCpu[i] += p.recordedCpuMs[i];
+        for (std::size_t i = 0; i < totalWait.size() && i < p.recordedWaitMs.size(); ++i)
+            totalWait[i] += p.recordedWaitMs[i];
     }
-    rows.push_back({session.view.name, "frame", totalGpu.size(), percentile(totalGpu, 50), percentile(totalGpu, 95),
-                    percentile(totalCpu, 50), percentile(totalCpu, 95)});
+    rows.push_back(benchRow(session.view.name, "frame", totalGpu, totalCpu, totalWait));
     return rows;
 }
 
@@ -190,7 +206,7 @@ std::string csvField(const std::string& s) {
 std::string csvText(const std::vector<BenchRow>& rows, const std::string& renderer, glm::ivec2 size) {
     std::ostringstream csv;
     csv << "renderer,width,height,view,pass,frames,gpu_median_ms,gpu_p95_ms,cpu_median_ms,cpu_p95_ms,"
-           "cloud_steps_per_pixel,cloud_skipped_share\n";
+           "cloud_steps_per_pixel,cloud_skipped_share,wait_median_ms,wait_p95_ms\n";
     for (const BenchRow& r : rows) {
         char line[512];
         std::snprintf(line, sizeof line, ",%d,%d,", size.x, size.y);
@@ -204,7 +220,8 @@ std::string csvText(const std::vector<BenchRow>& rows, const std::string& render
         } else {
             csv << ",";
         }
-        csv << "\n";
+        std::snprintf(line, sizeof line, ",%.4f,%.4f", r.waitMedian, r.waitP95);
+        csv << line << "\n";
     }
     return csv.str();
 }
@@ -265,11 +282,11 @@ void benchTemporal(Renderer& temporal, Renderer& fullRate, Session& session, con
 
 void printTable(const std::vector<BenchRow>& rows) {
     const bool clouds = std::any_of(rows.begin(), rows.end(), [](const BenchRow& r) { return r.cloudStepsPerPixel >= 0.0; });
-    std::printf("%-12s %-12s %8s %12s %12s %12s %12s%s\n", "view", "pass", "frames", "gpu med ms", "gpu p95 ms",
-                "cpu med ms", "cpu p95 ms", clouds ? "  steps/px  skipped" : "");
+    std::printf("%-12s %-12s %8s %12s %12s %12s %12s %12s%s\n", "view", "pass", "frames", "gpu med ms", "gpu p95 ms",
+                "cpu med ms", "cpu p95 ms", "wait med ms", clouds ? "  steps/px  skipped" : "");
     for (const BenchRow& r : rows) {
-        std::printf("%-12s %-12s %8zu %12.3f %12.3f %12.3f %12.3f", r.view.c_str(), r.pass.c_str(), r.frames,
-                    r.gpuMedian, r.gpuP95, r.cpuMedian, r.cpuP95);
+        std::printf("%-12s %-12s %8zu %12.3f %12.3f %12.3f %12.3f %12.3f", r.view.c_str(), r.pass.c_str(), r.frames,
+                    r.gpuMedian, r.gpuP95, r.cpuMedian, r.cpuP95, r.waitMedian);
         if (r.cloudStepsPerPixel >= 0.0) std::printf(" %9.1f %7.1f%%", r.cloudStepsPerPixel, 100.0 * r.cloudSkippedShare);
         std::printf("\n");
     }
@@ -359,6 +376,9 @@ int runBench(const BenchOptions& o) {
         }
     }
     printTable(rows);
+    std::printf("cpu: the pass's own CPU time (the submitting thread's); wait: the rest of its wall time, off the CPU "
+                "(mostly waiting for earlier GPU work)\n");
+    if (softwareRenderer(renderer)) std::printf("%s\n", softwareTimingNote());
     for (const std::string& line : notes) std::printf("%s\n", line.c_str());
     if (!o.csv.empty()) {
         writeFileAtomic(o.csv, csvText(rows, renderer, size));

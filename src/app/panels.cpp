@@ -17,16 +17,14 @@ namespace planet {
 
 namespace {
 
-void statsRow(const char* name, const RollingStats& gpu, const RollingStats& cpu) {
+void statsRow(const char* name, const RollingStats& gpu, const RollingStats& cpu, const RollingStats& wait) {
     ImGui::TableNextRow();
     ImGui::TableNextColumn();
     ImGui::TextUnformatted(name);
-    for (const RollingStats* s : {&gpu, &cpu}) {
-        for (double v : {s->min(), s->median(), s->max()}) {
-            ImGui::TableNextColumn();
-            if (std::isnan(v)) ImGui::TextDisabled("-");
-            else ImGui::Text("%.3f", v);
-        }
+    for (double v : {gpu.min(), gpu.median(), gpu.max(), cpu.median(), cpu.max(), wait.median()}) {
+        ImGui::TableNextColumn();
+        if (std::isnan(v)) ImGui::TextDisabled("-");
+        else ImGui::Text("%.3f", v);
     }
 }
 
@@ -114,15 +112,18 @@ void drawProfilerPanel(const Profiler& profiler, const std::string& renderer) {
     placeOnFirstUse("Frame time");
     if (!ImGui::Begin("Frame time")) return ImGui::End();
     const double cpu = profiler.frameCpuMs().median();
-    ImGui::Text("%.1f FPS   frame CPU %.2f ms   GPU %.2f ms", ImGui::GetIO().Framerate, cpu,
-                profiler.frameGpuMs().median());
+    ImGui::Text("%.1f FPS   frame CPU %.2f ms   waited %.2f ms   GPU %.2f ms", ImGui::GetIO().Framerate, cpu,
+                profiler.frameWaitMs().median(), profiler.frameGpuMs().median());
     ImGui::TextDisabled("%s", renderer.c_str());
+    if (softwareRenderer(renderer)) ImGui::TextWrapped("%s", softwareTimingNote());
     historyGraph("GPU", profiler.frameGpuMs());
+    // CPU: the pass's own CPU time (submitting); wait: the rest of its wall time, off the CPU
+    // (mostly the driver waiting for earlier GPU work).
     if (ImGui::BeginTable("passes", 7, ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingFixedFit)) {
-        for (const char* h : {"pass", "GPU min", "med", "max", "CPU min", "med", "max"}) ImGui::TableSetupColumn(h);
+        for (const char* h : {"pass", "GPU min", "med", "max", "CPU med", "max", "wait med"}) ImGui::TableSetupColumn(h);
         ImGui::TableHeadersRow();
-        for (const PassTimings& p : profiler.passes()) statsRow(p.name.c_str(), p.gpuMs, p.cpuMs);
-        statsRow("frame", profiler.frameGpuMs(), profiler.frameCpuMs());
+        for (const PassTimings& p : profiler.passes()) statsRow(p.name.c_str(), p.gpuMs, p.cpuMs, p.waitMs);
+        statsRow("frame", profiler.frameGpuMs(), profiler.frameCpuMs(), profiler.frameWaitMs());
         ImGui::EndTable();
     }
     if (profiler.droppedFrames() > 0)

@@ -1,15 +1,36 @@
 #include "render/profiler.h"
 
+#include <algorithm>
+#include <ctime>
+
 namespace planet {
 
 namespace {
 double msSince(std::chrono::steady_clock::time_point start) {
     return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 }
+// This thread's CPU time, ms (user + system; not the time it slept or waited).
+double threadCpuMs() {
+    timespec t{};
+    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+    return static_cast<double>(t.tv_sec) * 1e3 + static_cast<double>(t.tv_nsec) * 1e-6;
+}
 }  // namespace
 
+bool softwareRenderer(std::string_view glRenderer) {
+    for (const char* software : {"llvmpipe", "softpipe", "swrast"})
+        if (glRenderer.find(software) != std::string_view::npos) return true;
+    return false;
+}
+
+const char* softwareTimingNote() {
+    return "software renderer (the GPU is the CPU): GPU timestamps are coarse, taken when the driver's threads reach "
+           "them rather than when the work is done (a draw that kept llvmpipe busy 141 ms read 10 ms), so read the "
+           "wait column; vertex and tessellation stages run inside the draw call, as CPU time";
+}
+
 Profiler::Scope::Scope(Profiler& profiler, int pass)
-    : profiler_(profiler), pass_(pass), start_(std::chrono::steady_clock::now()) {
+    : profiler_(profiler), pass_(pass), start_(std::chrono::steady_clock::now()), cpuStartMs_(threadCpuMs()) {
     FrameSlot& slot = profiler_.slots_[static_cast<std::size_t>(profiler_.current_)];
     if (slot.used == slot.samples.size()) slot.samples.emplace_back();
     slot.samples[slot.used].pass = pass;
@@ -20,7 +41,9 @@ Profiler::Scope::~Scope() {
     FrameSlot& slot = profiler_.slots_[static_cast<std::size_t>(profiler_.current_)];
     glQueryCounter(slot.samples[slot.used].end.id(), GL_TIMESTAMP);
     slot.used++;
-    profiler_.addCpu(pass_, msSince(start_));
+    const double wall = msSince(start_);
+    const double cpu = std::clamp(threadCpuMs() - cpuStartMs_, 0.0, wall);
+    profiler_.addCpu(pass_, cpu, wall - cpu);
 }
 
 Profiler::Profiler() = default;
@@ -35,10 +58,14 @@ int Profiler::passIndex(std::string_view name) {
 
 Profiler::Scope Profiler::pass(std::string_view name) { return Scope(*this, passIndex(name)); }
 
-void Profiler::addCpu(int pass, double ms) {
+void Profiler::addCpu(int pass, double cpuMs, double waitMs) {
     PassTimings& p = passes_[static_cast<std::size_t>(pass)];
-    p.cpuMs.push(ms);
-    if (recording_) p.recordedCpuMs.push_back(ms);
+    p.cpuMs.push(cpuMs);
+    p.waitMs.push(waitMs);
+    if (recording_) {
+        p.recordedCpuMs.push_back(cpuMs);
+        p.recordedWaitMs.push_back(waitMs);
+    }
 }
 
 void Profiler::beginFrame() {
@@ -56,6 +83,7 @@ void Profiler::beginFrame() {
     slot.used = 0;
     inFrame_ = true;
     frameStart_ = std::chrono::steady_clock::now();
+    frameCpuStartMs_ = threadCpuMs();
 }
 
 void Profiler::endFrame() {
@@ -63,7 +91,10 @@ void Profiler::endFrame() {
     inFrame_ = false;
     FrameSlot& slot = slots_[static_cast<std::size_t>(current_)];
     slot.pending = slot.used > 0;
-    frameCpuMs_.push(msSince(frameStart_));
+    const double wall = msSince(frameStart_);
+    const double cpu = std::clamp(threadCpuMs() - frameCpuStartMs_, 0.0, wall);
+    frameCpuMs_.push(cpu);
+    frameWaitMs_.push(wall - cpu);
     frameIndex_++;
 }
 
@@ -100,6 +131,7 @@ void Profiler::clearRecordings() {
     for (PassTimings& p : passes_) {
         p.recordedGpuMs.clear();
         p.recordedCpuMs.clear();
+        p.recordedWaitMs.clear();
     }
 }
 

@@ -5,7 +5,19 @@
 // they are available, so the profiler never waits for the GPU. If the GPU falls
 // so far behind that a frame slot must be reused before its results arrived,
 // that frame's GPU samples are dropped (counted in droppedFrames()) rather than
-// stalling. CPU time is the wall time spent in the pass's scope on the CPU.
+// stalling.
+//
+// CPU time is what the pass itself spends on the CPU: the submitting thread's CPU time
+// (CLOCK_THREAD_CPUTIME_ID) over the pass's scope, not its wall time. The rest of the wall
+// time, when the thread was off the CPU, is shown apart as the wait: mostly the driver
+// blocking until earlier GPU work is done (a pass that reads what an earlier one drew, a
+// copy, a readback), or the thread waiting for a core. Before issue 15 the CPU column was the
+// wall time, so a pass that waited showed the wait as its CPU time (tonemap: 866 ms "CPU").
+// A driver that spins while it waits counts the spin as CPU time.
+//
+// Software renderers (llvmpipe, softpipe, swrast; softwareRenderer()) run the whole GPU on
+// the CPU: their timestamps are coarse (softwareTimingNote() says how), and the vertex and
+// tessellation stages run inside the draw call on the submitting thread, in its CPU time.
 //
 // Each pass keeps a rolling window for the UI (min / median / max) and, when
 // recording is on (planet bench), every sample.
@@ -25,10 +37,17 @@ namespace planet {
 struct PassTimings {
     std::string name;
     RollingStats gpuMs;
-    RollingStats cpuMs;
+    RollingStats cpuMs;   // the submitting thread's CPU time
+    RollingStats waitMs;  // wall time less CPU time: off the CPU, mostly waiting for the GPU
     std::vector<double> recordedGpuMs;  // every sample while recording
     std::vector<double> recordedCpuMs;
+    std::vector<double> recordedWaitMs;
 };
+
+// Whether the GL renderer string names a software renderer (llvmpipe, softpipe, swrast).
+bool softwareRenderer(std::string_view glRenderer);
+// One line for the profiler panel and bench: what a software renderer's timings mean.
+const char* softwareTimingNote();
 
 class Profiler {
 public:
@@ -45,6 +64,7 @@ public:
         Profiler& profiler_;
         int pass_;
         std::chrono::steady_clock::time_point start_;
+        double cpuStartMs_;
     };
 
     Profiler();
@@ -60,6 +80,7 @@ public:
     const std::vector<PassTimings>& passes() const { return passes_; }
     const RollingStats& frameGpuMs() const { return frameGpuMs_; }
     const RollingStats& frameCpuMs() const { return frameCpuMs_; }
+    const RollingStats& frameWaitMs() const { return frameWaitMs_; }
     long long droppedFrames() const { return droppedFrames_; }
 
 private:
@@ -76,7 +97,7 @@ private:
 
     int passIndex(std::string_view name);
     void collect(FrameSlot& slot, bool block);
-    void addCpu(int pass, double ms);
+    void addCpu(int pass, double cpuMs, double waitMs);
 
     std::vector<PassTimings> passes_;
     std::array<FrameSlot, kFramesInFlight> slots_;
@@ -86,9 +107,10 @@ private:
     bool recording_ = false;
     bool inFrame_ = false;
     std::chrono::steady_clock::time_point frameStart_;
-    double frameCpuAccum_ = 0.0;
+    double frameCpuStartMs_ = 0.0;
     RollingStats frameGpuMs_;
     RollingStats frameCpuMs_;
+    RollingStats frameWaitMs_;
 };
 
 }  // namespace planet
