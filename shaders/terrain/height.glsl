@@ -514,15 +514,26 @@ float terrainMaterialCoverage(int material, float height, float slope, float lat
 // leave, w_i = c_i * prod_{j < i} (1 - c_j). The weights of all materials sum to 1, vary
 // smoothly, and equal the hard rule (1 for terrainMaterial's id, 0 for the others) wherever
 // every threshold is further than its blend half width. With spreads: over a footprint.
-float terrainMaterialWeightSpread(int material, float height, float slope, float latitude, float heightSpread,
-                                  float slopeSpread) {
+struct TerrainMaterialWeights {
+    float weight[TERRAIN_MATERIAL_COUNT];  // by material id
+};
+
+// Every material's weight at once (one coverage each).
+TerrainMaterialWeights terrainMaterialWeightsSpread(float height, float slope, float latitude, float heightSpread,
+                                                    float slopeSpread) {
+    TerrainMaterialWeights w;
     float remaining = 1.0f;
     for (int id = 0; id < TERRAIN_MATERIAL_COUNT; id++) {
         float coverage = terrainMaterialCoverageSpread(id, height, slope, latitude, heightSpread, slopeSpread);
-        if (id == material) return remaining * coverage;
+        w.weight[id] = remaining * coverage;
         remaining *= 1.0f - coverage;
     }
-    return 0.0f;
+    return w;
+}
+
+float terrainMaterialWeightSpread(int material, float height, float slope, float latitude, float heightSpread,
+                                  float slopeSpread) {
+    return terrainMaterialWeightsSpread(height, slope, latitude, heightSpread, slopeSpread).weight[material];
 }
 
 float terrainMaterialWeight(int material, float height, float slope, float latitude) {

@@ -1,7 +1,7 @@
 // Terrain into the G-buffer: per-pixel normal from the height field's analytic gradient
 // (independent of tessellation), material by height, slope and latitude, albedo per material
 // (terrain/height.glsl), all filtered over the pixel's footprint (terrainNormalFiltered,
-// terrainMaterialWeightSpread), then the ground's detail (terrain/detail.glsl): tri-planar
+// terrainMaterialWeightsSpread), then the ground's detail (terrain/detail.glsl): tri-planar
 // detail normals and colour variation, mip-filtered by the same footprint.
 #include "common/frame_uniforms.glsl"
 #include "common/constants.glsl"
@@ -57,12 +57,10 @@ void main() {
                                         heightSpread, slopeSpread);
     float slope = terrainSlope(normal, up);
     float latitude = terrainLatitude(up);
-    float weights[TERRAIN_MATERIAL_COUNT];
+    float weights[TERRAIN_MATERIAL_COUNT] =
+        terrainMaterialWeightsSpread(height, slope, latitude, heightSpread, slopeSpread).weight;
     vec3 albedo = vec3(0.0);
-    for (int m = 0; m < TERRAIN_MATERIAL_COUNT; ++m) {
-        weights[m] = terrainMaterialWeightSpread(m, height, slope, latitude, heightSpread, slopeSpread);
-        albedo += weights[m] * materialAlbedo(m);
-    }
+    for (int m = 0; m < TERRAIN_MATERIAL_COUNT; ++m) albedo += weights[m] * materialAlbedo(m);
     albedo *= mix(1.0, TERRAIN_WET_DARKENING, wetness(height, heightSpread));
     // The detail lies on the height field, not on the mesh: the mesh's point is off the true
     // surface by what its interpolation and its float heights missed, which changes with the

@@ -9,8 +9,7 @@ namespace planet {
 TerrainPass::TerrainPass(const gl::ShaderSources& sources)
     : program_(sources, gl::ProgramDesc{"terrain",
                                         {"terrain/terrain.vert", "terrain/terrain.tesc", "terrain/terrain.tese",
-                                         "terrain/terrain.frag"}}),
-      detail_(terrain::makeDetailGlTexture(terrain::bakeDetailTexture())) {
+                                         "terrain/terrain.frag"}}) {
     glNamedBufferStorage(block_.id(), sizeof(terrain::TerrainBlock), nullptr, GL_DYNAMIC_STORAGE_BIT);
     block_.label("TerrainBlock");
     glNamedBufferStorage(nearBlock_.id(), sizeof(terrain::TerrainNear), nullptr, GL_DYNAMIC_STORAGE_BIT);
@@ -33,7 +32,8 @@ void TerrainPass::prepare(const Scene& scene, const Camera& camera, const noise:
     const terrain::TerrainNear near = terrain::makeTerrainNear(block.shape, continents, camera.position, radius);
     glNamedBufferSubData(nearBlock_.id(), 0, sizeof near, &near);
     glBindBufferBase(GL_UNIFORM_BUFFER, binding::BLOCK_TERRAIN_NEAR, nearBlock_.id());
-    glBindTextureUnit(binding::UNIT_TERRAIN_DETAIL, detail_.id());
+    if (scene.terrain.detail && !detail_) detail_.emplace(terrain::makeDetailGlTexture(terrain::bakeDetailTexture()));
+    if (detail_) glBindTextureUnit(binding::UNIT_TERRAIN_DETAIL, detail_->id());
 }
 
 void TerrainPass::draw() const {

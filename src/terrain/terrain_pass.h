@@ -15,6 +15,8 @@
 // (terrain/continents.h) and binds at UNIT_CONTINENTS.
 #pragma once
 
+#include <optional>
+
 #include "gl/handle.h"
 #include "gl/program.h"
 #include "grid/grid_mesh.h"
@@ -42,7 +44,7 @@ private:
     GridMesh mesh_{"terrain"};
     gl::Buffer block_;      // TerrainBlock
     gl::Buffer nearBlock_;  // TerrainNear (terrain/height.h), every frame
-    gl::Texture detail_;    // terrain/detail_texture.h, baked once (a few ms)
+    std::optional<gl::Texture> detail_;  // terrain/detail_texture.h, baked when terrain.detail is first on (~0.1 s)
     GridParams grid_;
     GridAnchor anchor_;
 };
