@@ -44,4 +44,5 @@ const int UNIT_SPARSE_TRANSMITTANCE = 19;   // RGBA16F, a quarter size: its T, t
 const int UNIT_HISTORY_SKY_INSCATTER = 20;  // RGBA16F: the previous frame's S, samples in it
 const int UNIT_HISTORY_SKY_TRANSMITTANCE = 21;  // RGBA16F: the previous frame's T
 const int UNIT_HISTORY_SURFACE_DISTANCE = 22;   // R32F: the previous frame's surface distance, m
+const int UNIT_HISTORY_RADIANCE = 24;       // RGBA16F: the previous frame's hdr (anti-aliased when the explorer's TAA is on)
 const int UNIT_TERRAIN_DETAIL = 23;         // RGBA16F tiling detail height field, mipmapped, GL_REPEAT (terrain/detail_texture.h)

@@ -24,9 +24,9 @@ layout(std140, binding = BLOCK_FRAME) uniform FrameBlock {
     int frameIndex;              // frames since the renderer started
     float cameraDepthBelowSea;   // m below the mean sea surface (> 0: the camera is under water)
     float stillSincePrevious;    // 1: the camera and the clock are the previous frame's (nothing moved)
-    float padding1;
+    float previousJitterX;       // pixels: the previous frame's jitter (its clipFromView's offset), x ...
     vec3 cloudDriftSincePrevious; // m, world axes: how far the wind moved the clouds since the previous frame
-    float padding2;
+    float previousJitterY;       // ... and y
 } frame;
 
 // World-oriented direction of the view ray through a point in NDC (x, y in [-1, 1]).

@@ -341,6 +341,10 @@ void Explorer::run() {
             controller_.update(session_.camera, pollControls(window_, pending_), dt, session_.scene.planetRadiusM());
             keepAboveGround(session_);
         }
+        // Anti-aliased edges: jittered frames blended over time, with the rest of the temporal
+        // work (render.temporal; --no-temporal renders what a one-sample still shows). A path
+        // plays as `render --path` renders it.
+        renderer_.setTemporalAntialiasing(session_.scene.render.temporal && !pathPlaying_);
         renderer_.render(session_.scene, session_.camera, size, [&] {
             glBlitNamedFramebuffer(renderer_.targets().ldrFramebuffer(), 0, 0, 0, size.x, size.y, 0, 0, size.x,
                                    size.y, GL_COLOR_BUFFER_BIT, GL_NEAREST);

@@ -80,6 +80,8 @@ FrameUniforms makeFrameUniforms(const Scene& scene, const Camera& camera, glm::i
     u.viewportSize = glm::vec2(size);
     u.inverseViewportSize = 1.0f / glm::vec2(size);
     u.jitter = glm::vec2(jitterPx);
+    u.previousJitterX = static_cast<float>(beforeJitter.x);
+    u.previousJitterY = static_cast<float>(beforeJitter.y);
     u.nearPlane = static_cast<float>(camera.near_m);
     u.exposure = static_cast<float>(scene.render.exposure);
     u.frameIndex = frameIndex;

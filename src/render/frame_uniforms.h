@@ -49,9 +49,9 @@ struct FrameUniforms {
     int frameIndex;
     float cameraDepthBelowSea;        // m below the mean sea surface (> 0: under water)
     float stillSincePrevious;         // 1: the camera and the clock are the previous frame's (nothing moved)
-    float padding1 = 0.0f;
+    float previousJitterX;            // pixels: the previous frame's jitter (x; y after the drift)
     glm::vec3 cloudDriftSincePrevious; // m, world axes: how far the wind moved the clouds since the previous frame
-    float padding2 = 0.0f;
+    float previousJitterY;
 };
 static_assert(offsetof(FrameUniforms, planetCenterFromCamera) == 320 && offsetof(FrameUniforms, cameraUp) == 336 &&
                   offsetof(FrameUniforms, sunDirection) == 352 && offsetof(FrameUniforms, cameraFromPrevious) == 368 &&

@@ -86,6 +86,11 @@ bool RenderTargets::resize(glm::ivec2 size) {
     seabedDepth_ = makeTexture(GL_DEPTH_COMPONENT32F, size, "seabed depth");
     seabedRadiance_ = makeTexture(GL_RGBA16F, size, "seabed radiance");
     history_.radiance = makeTexture(GL_RGBA16F, size, "history.radiance");
+    // Read between texels by the anti-aliasing's reprojection.
+    glTextureParameteri(history_.radiance.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    glTextureParameteri(history_.radiance.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    antialiased_ = makeTexture(GL_RGBA16F, size, "antialiased");
+    antialiasFramebuffer_ = makeFramebuffer({&antialiased_}, nullptr, "antialiased");
     history_.surfaceDistance = makeTexture(GL_R32F, size, "history.surface distance");
     history_.skyInscatter = makeTexture(GL_RGBA16F, size, "history.sky inscatter");
     history_.skyTransmittance = makeTexture(GL_RGBA16F, size, "history.sky transmittance");
@@ -102,6 +107,8 @@ void RenderTargets::copySeabed() const {
     copyImage(gbuffer_.depth, seabedDepth_, size_);
     copyImage(surfaceRadiance_, seabedRadiance_, size_);
 }
+
+void RenderTargets::keepAntialiased() const { copyImage(antialiased_, hdr_, size_); }
 
 void RenderTargets::keepHistory() const {
     copyImage(hdr_, history_.radiance, size_);

@@ -14,6 +14,7 @@
 //   sparse    a quarter of the size on each side (rounded up): the reduced-rate march's
 //             samples, one pixel of each 4x4 block (render/sky_sparse.frag)
 //   ldr       RGBA8 tone-mapped sRGB bytes (what the window shows and PNGs hold)
+//   antialiased  RGBA16F: the temporal anti-aliasing's result, copied back into hdr
 //   history   the previous frame's hdr, surface distance and sky T and S, kept for temporal work
 //             (FrameUniforms: previousClipFromWorld, cameraFromPrevious, historyValid)
 //
@@ -80,6 +81,10 @@ public:
     const gl::Texture& seabedRadiance() const { return seabedRadiance_; }
     // Copies this frame's hdr, surface distance and sky T and S into history().
     void keepHistory() const;
+    // The temporal anti-aliasing's result (render/antialias.frag) and its framebuffer;
+    // keepAntialiased() copies it into hdr(), which the tone mapping and the history read.
+    GLuint antialiasFramebuffer() const { return antialiasFramebuffer_.id(); }
+    void keepAntialiased() const;
 
 private:
     glm::ivec2 size_{0, 0};
@@ -97,6 +102,8 @@ private:
     gl::Texture seabedDepth_{GL_TEXTURE_2D};
     gl::Texture seabedRadiance_{GL_TEXTURE_2D};
     FrameHistory history_;
+    gl::Texture antialiased_{GL_TEXTURE_2D};
+    gl::Framebuffer antialiasFramebuffer_;
 };
 
 }  // namespace planet

@@ -77,6 +77,7 @@ Renderer::Renderer(const std::filesystem::path& shaderRoot, const atmosphere::Ta
                  gl::ProgramDesc{"sky march", {"common/fullscreen.vert", "render/sky_sparse.frag"}}),
       skyTemporal_(sources_, atmosphereTables,
                    gl::ProgramDesc{"sky temporal", {"common/fullscreen.vert", "render/sky_temporal.frag"}}),
+      antialias_(sources_, "antialias", "render/antialias.frag"),
       tonemap_(sources_, "tonemap", "render/tonemap.frag"),
       passes_(makePasses()) {
     glNamedBufferStorage(frameUniforms_.id(), sizeof(FrameUniforms), nullptr, GL_DYNAMIC_STORAGE_BIT);
@@ -164,6 +165,18 @@ std::vector<Renderer::Pass> Renderer::makePasses() {
                           glDrawArrays(GL_TRIANGLES, 0, 3);
                       },
                       [this] { return skyTemporal_.built(); }});
+    passes.push_back({{"antialias", {R::HdrRadiance, R::SurfaceRadiance}, {R::HdrRadiance}},
+                      [this](const Scene&) { return temporalAntialiasing_; },
+                      [this](const Scene&) {
+                          glBindFramebuffer(GL_FRAMEBUFFER, targets_.antialiasFramebuffer());
+                          glBindTextureUnit(binding::UNIT_HDR_RADIANCE, targets_.hdr().id());
+                          glBindTextureUnit(binding::UNIT_SURFACE_DISTANCE, targets_.surfaceDistance().id());
+                          glBindTextureUnit(binding::UNIT_HISTORY_RADIANCE, targets_.history().radiance.id());
+                          glBindVertexArray(emptyVertexArray_.id());
+                          antialias_.draw();
+                          targets_.keepAntialiased();
+                      },
+                      [this] { return std::vector<gl::HotProgram*>{&antialias_.program()}; }});
     passes.push_back({{"tonemap", {R::HdrRadiance}, {R::LdrImage}}, always,
                       [this](const Scene&) {
                           glBindFramebuffer(GL_FRAMEBUFFER, targets_.ldrFramebuffer());
@@ -229,8 +242,9 @@ void Renderer::prepare(const Scene& scene, const Camera& camera, glm::ivec2 size
     const bool inAir = cameraDepthBelowSeaM(scene, camera) <= 0.0;
     report.reducedRate = scene.render.temporal && scene.clouds.enabled && inAir &&
                          (report.historyValid || !fullRateOnReset_);
+    frameJitterPx_ = temporalAntialiasing_ ? glm::dvec2(subPixelJitter(frameIndex_)) : jitterPx_;
     const FrameUniforms uniforms = makeFrameUniforms(scene, camera, size, frameIndex_,
-                                                     report.historyValid ? previous_ : std::nullopt, jitterPx_);
+                                                     report.historyValid ? previous_ : std::nullopt, frameJitterPx_);
     glNamedBufferSubData(frameUniforms_.id(), 0, sizeof uniforms, &uniforms);
     glBindBufferBase(GL_UNIFORM_BUFFER, binding::BLOCK_FRAME, frameUniforms_.id());
     atmosphere_.bind();
@@ -269,7 +283,7 @@ void Renderer::render(const Scene& scene, const Camera& camera, glm::ivec2 size,
     }
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     targets_.keepHistory();
-    previous_ = PreviousFrame{camera, size, scene.time_s, scene.sunDirection(), jitterPx_};
+    previous_ = PreviousFrame{camera, size, scene.time_s, scene.sunDirection(), frameJitterPx_};
     previousSceneKey_ = sceneKey_;
     ++frameIndex_;
     present_ = nullptr;

@@ -29,6 +29,8 @@
 //   sky temporal   sparse sky, surface radiance +       HDR radiance, from the sparse samples and the
 //                  distance, history                    reprojected history (render/sky_temporal.frag),
 //                                                       T and S beside it for the next frame's history
+//   antialias      HDR radiance, surface distance,      HDR radiance, anti-aliased over time (the
+//                  history                              explorer: render/antialias.frag; off by default)
 //   tonemap        HDR radiance, exposure               LDR (display-ready sRGB)
 //   ui             LDR                                  the window (explorer only: blit + panels)
 //
@@ -143,6 +145,12 @@ public:
     // The sub-pixel offset (pixels, about [-0.5, 0.5]) of the projection of the frames
     // rendered from now on; (0, 0), the default, renders unjittered.
     void setJitter(glm::dvec2 pixels) { jitterPx_ = pixels; }
+    // Temporal anti-aliasing (the explorer): every frame jittered by subPixelJitter(frame
+    // index) instead of setJitter's offset, and blended into the reprojected history of the
+    // previous results (pass "antialias", render/antialias.frag). Off by default: stills
+    // average jittered frames instead (render --samples).
+    void setTemporalAntialiasing(bool on) { temporalAntialiasing_ = on; }
+    bool temporalAntialiasing() const { return temporalAntialiasing_; }
     // Forget the frame history: the next frame is rendered as the first (at full rate when
     // setFullRateOnReset holds; historyValid 0).
     void dropHistory() { previous_.reset(); }
@@ -182,6 +190,7 @@ private:
     AtmosphereProgram sky_;
     AtmosphereProgram skySparse_;
     AtmosphereProgram skyTemporal_;
+    FullscreenPass antialias_;
     FullscreenPass tonemap_;
     gl::Buffer frameUniforms_;
     gl::VertexArray emptyVertexArray_;
@@ -193,6 +202,8 @@ private:
     int frameIndex_ = 0;
     bool fullRateOnReset_ = true;
     glm::dvec2 jitterPx_{0.0};
+    bool temporalAntialiasing_ = false;
+    glm::dvec2 frameJitterPx_{0.0};          // this frame's: jitterPx_, or the TAA's
     std::optional<PreviousFrame> previous_;  // the frame the history holds
     std::string previousSceneKey_;           // its parameters (presetToToml)
     std::string sceneKey_;                   // this frame's
