@@ -3,7 +3,11 @@
 //
 //   R_G = albedo / pi * (sun through the atmosphere * visibility + sky irradiance)
 //                                                          (Elek Eq. 17, 20; Sperlhofer Eq. 2-13)
-// Below the sea surface both are first dimmed by the water above the point (ocean/water.glsl).
+// Below the sea surface both are first dimmed by the water above the point (ocean/water.glsl),
+// how deep from the height field's height (the G-buffer normal's w), not from the mesh's
+// point: from afar the mesh's chords sag hundreds of metres below the sphere between its
+// vertices, and coastal land lit as sea floor that deep showed as blue-grey combs and dashes
+// along every coast.
 // Also writes the distance along the view ray to the point, which the sky pass and the
 // ocean read. Pixels where nothing was drawn keep the cleared 0 (no surface).
 #include "common/frame_uniforms.glsl"
@@ -30,12 +34,16 @@ void main() {
     float rayDistance = viewDistanceFromDepth(depth) / max(dot(dir, forward), 1e-6);  // m
     vec3 point = cameraFromPlanetCentreKm() + dir * (rayDistance / M_PER_KM);
 
-    vec3 normal = normalize(texelFetch(gNormal, pixel, 0).xyz);
+    vec4 normalAndHeight = texelFetch(gNormal, pixel, 0);
+    vec3 normal = normalize(normalAndHeight.xyz);
     vec3 albedo = texelFetch(gAlbedo, pixel, 0).rgb;
     vec3 skyIrradiance;
     vec3 sunIrradiance = SunAndSkyIrradiance(point, normal, frame.sunDirection, skyIrradiance);
     vec3 up = normalize(point);
-    lightUnderWater(depthBelowSeaM(dir * rayDistance), dot(up, frame.sunDirection), sunIrradiance, skyIrradiance);
+    // The sea level less the ground's height: the camera's depth below the sea plus its
+    // altitude is the sea level (both formed in double; a dry world's depth is -1e30).
+    float depthBelowSea = frame.cameraDepthBelowSea + frame.cameraAltitude - normalAndHeight.w;
+    lightUnderWater(depthBelowSea, dot(up, frame.sunDirection), sunIrradiance, skyIrradiance);
     outSurfaceRadiance = vec4(albedo / PI * (sunIrradiance + skyIrradiance), 1.0);
     outSurfaceDistance = rayDistance;
 }

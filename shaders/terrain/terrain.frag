@@ -77,7 +77,7 @@ void main() {
     if (strength > 0.0 && narrowFootprint < TERRAIN_DETAIL_PERIOD_M[TERRAIN_DETAIL_SCALES - 1] &&
         terrainRayHitNear(tePointFromCamera, terrainNear, terrainShape, hit))
         applyTerrainDetail(hit + terrainXyz(terrainNear.cameraPlace), dpdx, dpdy, up, weights, strength, normal, albedo);
-    outNormal = vec4(normal, 0.0);
+    outNormal = vec4(normal, height);
     outAlbedo = vec4(albedo, 1.0);
     outMaterial = vec4(float(MATERIAL_GROUND) / 255.0, 1.0, 0.0, 0.0);
 }
