@@ -252,8 +252,9 @@ TEST_F(AtmosphereRenderTest, SkyPassMatchesTheCpuModelOverLandSeaAndSky) {
     // radiance and distance the surface passes wrote (read back) go through the same
     // aerial perspective on the CPU, T R_G + S, or the sky where there is no surface.
     // Sea pixels included (the ocean pass wrote their distance). Within 1 % (measured: at
-    // most 0.75 % over 784 pixels, at the horizon of the sunset view; float positions and the
-    // RGBA16F targets' rounding).
+    // most 0.094 % over 784 pixels since the sky passes march from the camera's altitude
+    // (issue 14; 0.61-0.75 % before, at the horizon of the sunset view, from float positions);
+    // the rest is the RGBA16F targets' rounding).
     int checkedSea = 0, checkedLand = 0, checkedSky = 0;
     double worst = 0.0;
     for (const char* view : {"sea", "beach", "orbit", "sunset"}) {

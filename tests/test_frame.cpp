@@ -223,8 +223,8 @@ TEST_F(FrameTest, BlockMirrorsMatchTheDriversLayoutAndBindings) {
 
 TEST(FrameSources, AerialPerspectiveIsComputedInOneShaderFunctionCalledFromOnePass) {
     // Every shader under shaders/ (the atmosphere's own model files aside): only the unified
-    // march of clouds and atmosphere (clouds/cloud_march.glsl, MarchView) calls the
-    // interface's SkyRadianceToPoint, nothing outside the interface calls the model's
+    // march of clouds and atmosphere (clouds/cloud_march.glsl, MarchView / MarchViewAt) calls the
+    // interface's SkyRadianceToPoint(At), nothing outside the interface calls the model's
     // in-scattering lookups, and the only passes that march to a surface point are the sky
     // passes, through one function (render/sky_air.glsl, marchAir: at full rate and at the
     // reduced rate); the ocean marches its reflected rays to space (no surface, no aerial
@@ -233,9 +233,9 @@ TEST(FrameSources, AerialPerspectiveIsComputedInOneShaderFunctionCalledFromOnePa
     // (ocean/screen_space_reflections.glsl).
     // Probes (compute shaders that run the same functions for tests) may call anything.
     const fs::path root = test::repoPaths().shaders();
-    const std::regex toPoint(R"(\bSkyRadianceToPoint\s*\()");
+    const std::regex toPoint(R"(\bSkyRadianceToPoint(At)?\s*\()");
     const std::regex model(R"(\bGetSkyRadianceToPoint\w*\s*\()");
-    const std::regex march(R"(\bMarchView\s*\()");
+    const std::regex march(R"(\bMarchView(At)?\s*\()");  // At: the viewpoint by its up and altitude
     std::vector<std::string> toPointCallers, marchCallers;
     for (const auto& entry : fs::recursive_directory_iterator(root)) {
         if (!entry.is_regular_file()) continue;

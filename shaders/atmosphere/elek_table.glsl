@@ -48,13 +48,15 @@ Number ElekNuAtZeroAzimuth(Number mu, Number mu_s) {
 }
 
 // Texture coordinates (x: mu_s, y: mu, z: r) of Elek's table.
-vec3 GetElekTextureUvwFromRMuMuS(IN(AtmosphereParameters) atmosphere, Length r, Number mu, Number mu_s,
-                                 bool ray_r_mu_intersects_ground) {
+// r, with r^2 - R^2 given apart (rho2: exact for a camera metres above the ground, where
+// the horizon's cosine -rho / r from a float r would be off).
+vec3 GetElekTextureUvwFromRRho2MuMuS(IN(AtmosphereParameters) atmosphere, Length r, Area rho2, Number mu, Number mu_s,
+                                     bool ray_r_mu_intersects_ground) {
     Length H = sqrt((atmosphere.top_radius - atmosphere.bottom_radius) * (atmosphere.top_radius + atmosphere.bottom_radius));
-    Length rho = SafeSqrt((r - atmosphere.bottom_radius) * (r + atmosphere.bottom_radius));
+    Length rho = SafeSqrt(rho2);
     Number u_r = GetTextureCoordFromUnitRange(clamp(rho / H, Number(0.0), Number(1.0)), ELEK_TEXTURE_R_SIZE);
 
-    Number mu_horizon = ElekHorizonMu(atmosphere, r);
+    Number mu_horizon = -rho / r;
     Number u_mu;
     if (ray_r_mu_intersects_ground) {
         Number x = clamp((mu + 1.0) / (mu_horizon + 1.0), Number(0.0), Number(1.0));
@@ -67,6 +69,12 @@ vec3 GetElekTextureUvwFromRMuMuS(IN(AtmosphereParameters) atmosphere, Length r, 
     Number w = (1.0 - exp(-ELEK_W_SLOPE * mu_s - ELEK_W_OFFSET)) / (1.0 - exp(-ELEK_W_SLOPE - ELEK_W_OFFSET));
     Number u_mu_s = GetTextureCoordFromUnitRange(clamp(w, Number(0.0), Number(1.0)), ELEK_TEXTURE_MU_S_SIZE);
     return vec3(u_mu_s, u_mu, u_r);
+}
+
+vec3 GetElekTextureUvwFromRMuMuS(IN(AtmosphereParameters) atmosphere, Length r, Number mu, Number mu_s,
+                                 bool ray_r_mu_intersects_ground) {
+    return GetElekTextureUvwFromRRho2MuMuS(atmosphere, r, (r - atmosphere.bottom_radius) * (r + atmosphere.bottom_radius),
+                                           mu, mu_s, ray_r_mu_intersects_ground);
 }
 
 // The inverse, for texture coordinates in the table's range.
@@ -116,6 +124,17 @@ Spectrum GetCombinedScatteringElek(IN(AtmosphereParameters) atmosphere, IN(Scatt
                                    Number mu_s, bool ray_r_mu_intersects_ground,
                                    OUT(Spectrum) single_mie_scattering) {
     vec3 uvw = GetElekTextureUvwFromRMuMuS(atmosphere, r, mu, mu_s, ray_r_mu_intersects_ground);
+    single_mie_scattering = Spectrum(texture(elek_single_mie_scattering_texture, uvw));
+    return Spectrum(texture(elek_scattering_texture, uvw));
+}
+
+// The same with r^2 - R^2 given apart (see GetElekTextureUvwFromRRho2MuMuS).
+Spectrum GetCombinedScatteringElekRho2(IN(AtmosphereParameters) atmosphere,
+                                       IN(ScatteringTexture) elek_scattering_texture,
+                                       IN(ScatteringTexture) elek_single_mie_scattering_texture, Length r, Area rho2,
+                                       Number mu, Number mu_s, bool ray_r_mu_intersects_ground,
+                                       OUT(Spectrum) single_mie_scattering) {
+    vec3 uvw = GetElekTextureUvwFromRRho2MuMuS(atmosphere, r, rho2, mu, mu_s, ray_r_mu_intersects_ground);
     single_mie_scattering = Spectrum(texture(elek_single_mie_scattering_texture, uvw));
     return Spectrum(texture(elek_scattering_texture, uvw));
 }

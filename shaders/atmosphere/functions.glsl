@@ -358,6 +358,56 @@ Spectrum GetTransmittance(IN(AtmosphereParameters) atmosphere, IN(TransmittanceT
     return q * q;
 }
 
+// ------------------------------------ render-time lookups from rho^2 and r mu
+//
+// A camera a few metres above the ground, or the far end of a view ray there, in float:
+// r is a number of planet size (0.5 m steps on Earth), so r^2 - R^2, the horizon's
+// cosine -sqrt(r^2 - R^2) / r and the distance to the ground would lose the altitude.
+// These take the point by rho^2 = r^2 - R^2 (from the altitude h, h (h + 2R), or along
+// a ray, d (d + 2 r mu) + rho^2) and r mu, which keep it; r itself only where its
+// rounding does not matter. In double (the CPU reference) they equal the (r, mu) forms.
+
+bool RayIntersectsGroundRho2(Area rho2, Length r_mu) { return r_mu < 0.0 && r_mu * r_mu - rho2 >= 0.0; }
+
+// Distance to the ground along a ray that hits it: the nearer root of
+// d^2 + 2 r mu d + rho^2 = 0 as rho^2 / (the farther root), without the cancellation of
+// -r mu - sqrt((r mu)^2 - rho^2) (r mu is planet-sized, the distance metres).
+Length DistanceToGroundRho2(Area rho2, Length r_mu) {
+    Length far_root = -r_mu + SafeSqrt(r_mu * r_mu - rho2);
+    return far_root > 0.0 ? max(rho2, Area(0.0)) / far_root : Length(0.0);
+}
+
+Spectrum GetTransmittanceToTopAtmosphereBoundaryRho2(IN(AtmosphereParameters) atmosphere,
+                                                     IN(TransmittanceTexture) transmittance_texture, Area rho2,
+                                                     Length r_mu) {
+    vec2 uv = GetTransmittanceTextureUvFromRho2RMu(atmosphere, rho2, r_mu);
+    if (TRANSMITTANCE_LOG_LOOKUP) return exp(TransmittanceTableLog(transmittance_texture, uv));
+    Spectrum t = Spectrum(texture(transmittance_texture, uv));
+    t = t * t;
+    return t * t;
+}
+
+// GetTransmittance's (r, mu, d) with the start by rho^2 and r mu and the far end by
+// rho_d^2 = d (d + 2 r mu) + rho^2 and r_d mu_d = r mu + d.
+Spectrum GetTransmittanceRho2(IN(AtmosphereParameters) atmosphere, IN(TransmittanceTexture) transmittance_texture,
+                              Area rho2, Length r_mu, Length d, bool ray_r_mu_intersects_ground) {
+    Area rho_d2 = d * (d + 2.0 * r_mu) + rho2;
+    Length r_mu_d = r_mu + d;
+    vec2 uv_near = GetTransmittanceTextureUvFromRho2RMu(atmosphere, rho2, ray_r_mu_intersects_ground ? -r_mu : r_mu);
+    vec2 uv_far = GetTransmittanceTextureUvFromRho2RMu(atmosphere, rho_d2, ray_r_mu_intersects_ground ? -r_mu_d : r_mu_d);
+    if (TRANSMITTANCE_LOG_LOOKUP) {
+        Spectrum near_log = TransmittanceTableLog(transmittance_texture, uv_near);
+        Spectrum far_log = TransmittanceTableLog(transmittance_texture, uv_far);
+        return exp(ray_r_mu_intersects_ground ? LogTransmittanceRatio(far_log, near_log)
+                                              : LogTransmittanceRatio(near_log, far_log));
+    }
+    Spectrum t_near = Spectrum(texture(transmittance_texture, uv_near));
+    Spectrum t_far = Spectrum(texture(transmittance_texture, uv_far));
+    Spectrum q = ray_r_mu_intersects_ground ? TransmittanceRatio(t_far, t_near) : TransmittanceRatio(t_near, t_far);
+    q = q * q;
+    return q * q;
+}
+
 // Transmittance to the sun, times the visible fraction of the sun disc above
 // the horizon (Elek Eq. 17).
 // The fraction of the sun's disc above the horizon seen from radius r (altitude
@@ -610,6 +660,23 @@ Spectrum GetScattering(IN(AtmosphereParameters) atmosphere, IN(ScatteringTexture
                        Number mu, Number mu_s, Number nu, bool ray_r_mu_intersects_ground) {
     return GetScatteringAtUvwz(
         scattering_texture, GetScatteringTextureUvwzFromRMuMuSNu(atmosphere, r, mu, mu_s, nu, ray_r_mu_intersects_ground));
+}
+
+// GetScattering from rho^2 and r mu (see GetTransmittanceRho2). The ground half's
+// coordinate takes the distance to the ground without cancellation (DistanceToGroundRho2):
+// the table's own formula loses it to r mu's rounding looking down from a few metres.
+Spectrum GetScatteringRho2(IN(AtmosphereParameters) atmosphere, IN(ScatteringTexture) scattering_texture, Length r,
+                           Area rho2, Length r_mu, Number mu_s, Number nu, bool ray_r_mu_intersects_ground) {
+    vec4 uvwz = GetScatteringTextureUvwzFromRRho2RMu(atmosphere, r, rho2, r_mu, mu_s, nu, ray_r_mu_intersects_ground);
+    if (ray_r_mu_intersects_ground) {
+        Length d = DistanceToGroundRho2(rho2, r_mu);
+        Length d_min = max(rho2, Area(0.0)) / (r + atmosphere.bottom_radius);  // r - R
+        Length d_max = SafeSqrt(rho2);
+        uvwz.z = 0.5 - 0.5 * GetTextureCoordFromUnitRange(
+                                 d_max == d_min ? 0.0 : clamp((d - d_min) / (d_max - d_min), Number(0.0), Number(1.0)),
+                                 SCATTERING_TEXTURE_MU_SIZE / 2);
+    }
+    return GetScatteringAtUvwz(scattering_texture, uvwz);
 }
 
 // Radiance of a given scattering order arriving at (r, mu) with the phase

@@ -7,6 +7,11 @@
 //                               or the ground, and the ray's transmittance
 //   SkyRadianceToPoint          the same up to a point at a given distance (aerial
 //                               perspective: Elek Eq. 19-20, Sperlhofer Eq. 4-18)
+//   SkyRadianceAt,              both for a camera given by its unit up and its altitude
+//   SkyRadianceToPointAt        above the bottom radius (km, formed apart, e.g. in double on
+//                               the CPU): a float position of planet size resolves half a
+//                               metre, so from a few metres up the sky below the horizon
+//                               (and aerial perspective near the ground) needs these
 //   TransmittanceToPoint        transmittance alone along the same segment
 //   SunIrradianceAtPoint        the solar irradiance arriving at a point, through the air and
 //                               times the sun's visibility there (Elek Eq. 17)
@@ -117,13 +122,28 @@ vec3 SkyRadianceToPoint(vec3 camera, vec3 viewRay, float distance, vec3 sun, out
                                              transmittance);
 }
 
+vec3 SkyRadianceAt(vec3 up, float altitudeKm, vec3 viewRay, vec3 sun, out vec3 transmittance) {
+    return GetSkyRadianceAtFrom(atmosphereParameters(), USE_ELEK_TABLE, transmittance_texture, scattering_texture,
+                                single_mie_scattering_texture, up, altitudeKm, viewRay, sun, transmittance);
+}
+
+vec3 SkyRadianceToPointAt(vec3 up, float altitudeKm, vec3 viewRay, float distance, vec3 sun,
+                          out vec3 transmittance) {
+    return GetSkyRadianceToPointAlongRayAtFrom(atmosphereParameters(), USE_ELEK_TABLE, transmittance_texture,
+                                               scattering_texture, single_mie_scattering_texture, up, altitudeKm,
+                                               viewRay, distance, sun,
+                                               SunShadowLength(up * (atmosphereUniforms.bottomRadius + altitudeKm),
+                                                               viewRay, distance),
+                                               transmittance);
+}
+
 vec3 TransmittanceToPoint(vec3 camera, vec3 viewRay, float distance) {
     AtmosphereParameters atmosphere = atmosphereParameters();
     ViewRay ray = ViewRayInAtmosphere(atmosphere, camera, viewRay, viewRay);
     if (!ray.inside) return vec3(1.0);
     float d = max(distance - ray.skipped, 0.0);
-    return GetTransmittance(atmosphere, transmittance_texture, ray.r, ray.mu, d,
-                            RayIntersectsGround(atmosphere, ray.r, ray.mu));
+    return GetTransmittanceRho2(atmosphere, transmittance_texture, ray.rho2, ray.r * ray.mu, d,
+                                RayIntersectsGroundRho2(ray.rho2, ray.r * ray.mu));
 }
 
 vec3 SunIrradianceAtPoint(vec3 point, vec3 sun) {

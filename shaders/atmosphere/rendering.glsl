@@ -45,6 +45,21 @@ Spectrum GetCombinedScatteringFrom(IN(AtmosphereParameters) atmosphere, bool ele
                                  ray_r_mu_intersects_ground, single_mie_scattering);
 }
 
+// The same from r, rho^2 = r^2 - R^2 and mu (functions.glsl's render-time lookups from rho^2):
+// what every lookup below calls, so a camera's altitude given apart reaches the table.
+Spectrum GetCombinedScatteringRho2From(IN(AtmosphereParameters) atmosphere, bool elek_table,
+                                       IN(ScatteringTexture) scattering_texture,
+                                       IN(ScatteringTexture) single_mie_scattering_texture, Length r, Area rho2,
+                                       Number mu, Number mu_s, Number nu, bool ray_r_mu_intersects_ground,
+                                       OUT(Spectrum) single_mie_scattering) {
+    if (elek_table)
+        return GetCombinedScatteringElekRho2(atmosphere, scattering_texture, single_mie_scattering_texture, r, rho2,
+                                             mu, mu_s, ray_r_mu_intersects_ground, single_mie_scattering);
+    single_mie_scattering = GetScatteringRho2(atmosphere, single_mie_scattering_texture, r, rho2, r * mu, mu_s, nu,
+                                              ray_r_mu_intersects_ground);
+    return GetScatteringRho2(atmosphere, scattering_texture, r, rho2, r * mu, mu_s, nu, ray_r_mu_intersects_ground);
+}
+
 Spectrum ApplyPhaseFunctions(IN(AtmosphereParameters) atmosphere, IN(Spectrum) scattering,
                              IN(Spectrum) single_mie_scattering, Number nu) {
     return scattering * RenderRayleighPhaseFunction(atmosphere, nu) +
@@ -53,9 +68,12 @@ Spectrum ApplyPhaseFunctions(IN(AtmosphereParameters) atmosphere, IN(Spectrum) s
 
 // A view ray as the tables parametrize it: radius, view, sun and view-sun
 // cosines. A camera in space is moved to where its ray enters the atmosphere
-// (`skipped` km on); `inside` is false when the ray never enters it.
+// (`skipped` km on); `inside` is false when the ray never enters it. rho2 =
+// r^2 - R^2, exact where the altitude was given apart (ViewRayInAtmosphereAt): every
+// lookup takes the ray's start by rho2 and r mu, never by r - R.
 struct ViewRay {
     Length r;
+    Area rho2;
     Number mu;
     Number mu_s;
     Number nu;
@@ -82,20 +100,55 @@ ViewRay ViewRayInAtmosphere(IN(AtmosphereParameters) atmosphere, IN(vec3) camera
         ray.inside = false;
     }
     ray.r = r;
+    ray.rho2 = (r - atmosphere.bottom_radius) * (r + atmosphere.bottom_radius);
     ray.mu = rmu / r;
     ray.mu_s = dot(camera, sun_direction) / r;
     ray.nu = dot(view_ray, sun_direction);
     return ray;
 }
 
+// The same for a camera given by its unit `up` (from the planet centre) and its
+// `altitude` above the bottom radius (km), formed apart from the radius: in float a
+// radius of planet size resolves half a metre, and a camera 0.1 m up would sit on the
+// ground (its rays below the horizon of zero length). r^2 - R^2 = h (h + 2R) and mu =
+// up . view keep the altitude; r = R + h only where its rounding is harmless.
+ViewRay ViewRayInAtmosphereAt(IN(AtmosphereParameters) atmosphere, IN(vec3) up, Length altitude, IN(vec3) view_ray,
+                              IN(vec3) sun_direction) {
+    ViewRay ray;
+    altitude = max(altitude, Length(0.0));  // a camera under the ground sees from the ground
+    Length r = atmosphere.bottom_radius + altitude;
+    Area rho2 = altitude * (altitude + 2.0 * atmosphere.bottom_radius);
+    Area H2 = (atmosphere.top_radius - atmosphere.bottom_radius) * (atmosphere.top_radius + atmosphere.bottom_radius);
+    Number mu = dot(up, view_ray);
+    Length rmu = r * mu;
+    Length rmu_s = r * dot(up, sun_direction);
+    Length distance_to_top_atmosphere_boundary = -rmu - sqrt(rmu * rmu - (rho2 - H2));  // (r - T)(r + T) = rho2 - H2
+    ray.skipped = 0.0;
+    ray.inside = true;
+    ray.nu = dot(view_ray, sun_direction);
+    if (distance_to_top_atmosphere_boundary > 0.0) {
+        r = atmosphere.top_radius;
+        rho2 = H2;
+        rmu += distance_to_top_atmosphere_boundary;
+        rmu_s += distance_to_top_atmosphere_boundary * ray.nu;
+        ray.skipped = distance_to_top_atmosphere_boundary;
+    } else if (rho2 > H2) {
+        ray.inside = false;
+    }
+    ray.r = r;
+    ray.rho2 = rho2;
+    ray.mu = ClampCosine(rmu / r);
+    ray.mu_s = ClampCosine(rmu_s / r);
+    return ray;
+}
+
 // Radiance scattered towards a camera at `camera` along `view_ray` up to the
 // ground or space, without the ground's own reflected light or the sun disc.
 // `transmittance` is that of the whole ray (0 if it hits the ground).
-Spectrum GetSkyRadianceFrom(IN(AtmosphereParameters) atmosphere, bool elek_table,
-                            IN(TransmittanceTexture) transmittance_texture, IN(ScatteringTexture) scattering_texture,
-                            IN(ScatteringTexture) single_mie_scattering_texture, IN(vec3) camera_position,
-                            IN(vec3) view_ray, IN(vec3) sun_direction, OUT(Spectrum) transmittance) {
-    ViewRay ray = ViewRayInAtmosphere(atmosphere, camera_position, view_ray, sun_direction);
+Spectrum GetSkyRadianceOfRay(IN(AtmosphereParameters) atmosphere, bool elek_table,
+                             IN(TransmittanceTexture) transmittance_texture, IN(ScatteringTexture) scattering_texture,
+                             IN(ScatteringTexture) single_mie_scattering_texture, IN(ViewRay) ray,
+                             OUT(Spectrum) transmittance) {
     if (!ray.inside) {
         transmittance = Spectrum(1.0);  // the ray misses the atmosphere
         return Spectrum(0.0);
@@ -104,50 +157,84 @@ Spectrum GetSkyRadianceFrom(IN(AtmosphereParameters) atmosphere, bool elek_table
     Number mu = ray.mu;
     Number mu_s = ray.mu_s;
     Number nu = ray.nu;
-    bool ray_r_mu_intersects_ground = RayIntersectsGround(atmosphere, r, mu);
+    bool ray_r_mu_intersects_ground = RayIntersectsGroundRho2(ray.rho2, r * mu);
 
     transmittance = ray_r_mu_intersects_ground
                         ? Spectrum(0.0)
-                        : GetTransmittanceToTopAtmosphereBoundary(atmosphere, transmittance_texture, r, mu);
+                        : GetTransmittanceToTopAtmosphereBoundaryRho2(atmosphere, transmittance_texture, ray.rho2, r * mu);
     Spectrum single_mie_scattering;
     Spectrum scattering =
-        GetCombinedScatteringFrom(atmosphere, elek_table, scattering_texture, single_mie_scattering_texture, r, mu,
-                                  mu_s, nu, ray_r_mu_intersects_ground, single_mie_scattering);
+        GetCombinedScatteringRho2From(atmosphere, elek_table, scattering_texture, single_mie_scattering_texture, r,
+                                      ray.rho2, mu, mu_s, nu, ray_r_mu_intersects_ground, single_mie_scattering);
     return ApplyPhaseFunctions(atmosphere, scattering, single_mie_scattering, nu) * NightFade(atmosphere, mu_s);
+}
+
+Spectrum GetSkyRadianceFrom(IN(AtmosphereParameters) atmosphere, bool elek_table,
+                            IN(TransmittanceTexture) transmittance_texture, IN(ScatteringTexture) scattering_texture,
+                            IN(ScatteringTexture) single_mie_scattering_texture, IN(vec3) camera_position,
+                            IN(vec3) view_ray, IN(vec3) sun_direction, OUT(Spectrum) transmittance) {
+    return GetSkyRadianceOfRay(atmosphere, elek_table, transmittance_texture, scattering_texture,
+                               single_mie_scattering_texture,
+                               ViewRayInAtmosphere(atmosphere, camera_position, view_ray, sun_direction), transmittance);
+}
+
+// The same for a camera given by `up` and `altitude` (km above the bottom radius, formed
+// apart: see ViewRayInAtmosphereAt): exact below the horizon from centimetres up.
+Spectrum GetSkyRadianceAtFrom(IN(AtmosphereParameters) atmosphere, bool elek_table,
+                              IN(TransmittanceTexture) transmittance_texture, IN(ScatteringTexture) scattering_texture,
+                              IN(ScatteringTexture) single_mie_scattering_texture, IN(vec3) up, Length altitude,
+                              IN(vec3) view_ray, IN(vec3) sun_direction, OUT(Spectrum) transmittance) {
+    return GetSkyRadianceOfRay(atmosphere, elek_table, transmittance_texture, scattering_texture,
+                               single_mie_scattering_texture,
+                               ViewRayInAtmosphereAt(atmosphere, up, altitude, view_ray, sun_direction), transmittance);
 }
 
 // Transmittance from the camera to the end of its view ray: the ground where
 // the ray hits it, else the top of the atmosphere (1 for a ray missing it).
 // GetSkyRadiance reports 0 for ground rays, because the sky behind the ground
 // is hidden; this is what `planet sky-probe` reports.
+Spectrum GetViewRayTransmittanceOfRay(IN(AtmosphereParameters) atmosphere,
+                                      IN(TransmittanceTexture) transmittance_texture, IN(ViewRay) ray) {
+    if (!ray.inside) return Spectrum(1.0);
+    Length r_mu = ray.r * ray.mu;
+    if (!RayIntersectsGroundRho2(ray.rho2, r_mu))
+        return GetTransmittanceToTopAtmosphereBoundaryRho2(atmosphere, transmittance_texture, ray.rho2, r_mu);
+    return GetTransmittanceRho2(atmosphere, transmittance_texture, ray.rho2, r_mu, DistanceToGroundRho2(ray.rho2, r_mu),
+                                true);
+}
 Spectrum GetViewRayTransmittance(IN(AtmosphereParameters) atmosphere, IN(TransmittanceTexture) transmittance_texture,
                                  IN(vec3) camera_position, IN(vec3) view_ray) {
-    ViewRay ray = ViewRayInAtmosphere(atmosphere, camera_position, view_ray, view_ray);
-    if (!ray.inside) return Spectrum(1.0);
-    if (!RayIntersectsGround(atmosphere, ray.r, ray.mu))
-        return GetTransmittanceToTopAtmosphereBoundary(atmosphere, transmittance_texture, ray.r, ray.mu);
-    return GetTransmittance(atmosphere, transmittance_texture, ray.r, ray.mu,
-                            DistanceToBottomAtmosphereBoundary(atmosphere, ray.r, ray.mu), true);
+    return GetViewRayTransmittanceOfRay(atmosphere, transmittance_texture,
+                                        ViewRayInAtmosphere(atmosphere, camera_position, view_ray, view_ray));
+}
+Spectrum GetViewRayTransmittanceAt(IN(AtmosphereParameters) atmosphere, IN(TransmittanceTexture) transmittance_texture,
+                                   IN(vec3) up, Length altitude, IN(vec3) view_ray) {
+    return GetViewRayTransmittanceOfRay(atmosphere, transmittance_texture,
+                                        ViewRayInAtmosphereAt(atmosphere, up, altitude, view_ray, view_ray));
 }
 
 // In-scattering between (r, mu) and the point at distance d along the ray
 // (Sperlhofer Eq. 4-18: L(a->b) = L(a->inf) - T(a->b) L(b->inf)), phase-free.
 Spectrum ScatteringBetween(IN(AtmosphereParameters) atmosphere, bool elek_table,
                            IN(TransmittanceTexture) transmittance_texture, IN(ScatteringTexture) scattering_texture,
-                           IN(ScatteringTexture) single_mie_scattering_texture, Length r, Number mu, Number mu_s,
-                           Number nu, Length d, OUT(Spectrum) transmittance, OUT(Spectrum) single_mie_scattering) {
-    bool ray_r_mu_intersects_ground = RayIntersectsGround(atmosphere, r, mu);
-    transmittance = GetTransmittance(atmosphere, transmittance_texture, r, mu, d, ray_r_mu_intersects_ground);
+                           IN(ScatteringTexture) single_mie_scattering_texture, Length r, Area rho2, Number mu,
+                           Number mu_s, Number nu, Length d, OUT(Spectrum) transmittance,
+                           OUT(Spectrum) single_mie_scattering) {
+    bool ray_r_mu_intersects_ground = RayIntersectsGroundRho2(rho2, r * mu);
+    transmittance = GetTransmittanceRho2(atmosphere, transmittance_texture, rho2, r * mu, d, ray_r_mu_intersects_ground);
     Spectrum scattering =
-        GetCombinedScatteringFrom(atmosphere, elek_table, scattering_texture, single_mie_scattering_texture, r, mu,
-                                  mu_s, nu, ray_r_mu_intersects_ground, single_mie_scattering);
-    Length r_p = ClampRadius(atmosphere, sqrt(d * d + 2.0 * r * mu * d + r * r));
+        GetCombinedScatteringRho2From(atmosphere, elek_table, scattering_texture, single_mie_scattering_texture, r,
+                                      rho2, mu, mu_s, nu, ray_r_mu_intersects_ground, single_mie_scattering);
+    // The far point by r_p^2 - R^2 = d (d + 2 r mu) + rho^2 (no planet-sized difference).
+    Area H2 = (atmosphere.top_radius - atmosphere.bottom_radius) * (atmosphere.top_radius + atmosphere.bottom_radius);
+    Area rho2_p = clamp(d * (d + 2.0 * r * mu) + rho2, Area(0.0), H2);
+    Length r_p = ClampRadius(atmosphere, sqrt(rho2_p + atmosphere.bottom_radius * atmosphere.bottom_radius));
     Number mu_p = ClampCosine((r * mu + d) / r_p);
     Number mu_s_p = ClampCosine((r * mu_s + d * nu) / r_p);
     Spectrum single_mie_scattering_p;
     Spectrum scattering_p =
-        GetCombinedScatteringFrom(atmosphere, elek_table, scattering_texture, single_mie_scattering_texture, r_p, mu_p,
-                                  mu_s_p, nu, ray_r_mu_intersects_ground, single_mie_scattering_p);
+        GetCombinedScatteringRho2From(atmosphere, elek_table, scattering_texture, single_mie_scattering_texture, r_p,
+                                      rho2_p, mu_p, mu_s_p, nu, ray_r_mu_intersects_ground, single_mie_scattering_p);
     single_mie_scattering = max(single_mie_scattering - transmittance * single_mie_scattering_p, Spectrum(0.0));
     return max(scattering - transmittance * scattering_p, Spectrum(0.0));
 }
@@ -157,14 +244,11 @@ Spectrum ScatteringBetween(IN(AtmosphereParameters) atmosphere, bool elek_table,
 // transmittance between them. Taking the ray and distance rather than the
 // point keeps a point 2 m away exact: in float, point - camera at planet scale
 // would be rounded to half a metre.
-Spectrum GetSkyRadianceToPointAlongRayFrom(IN(AtmosphereParameters) atmosphere, bool elek_table,
-                                           IN(TransmittanceTexture) transmittance_texture,
-                                           IN(ScatteringTexture) scattering_texture,
-                                           IN(ScatteringTexture) single_mie_scattering_texture,
-                                           IN(vec3) camera_position, IN(vec3) view_ray, Length distance,
-                                           IN(vec3) sun_direction, Length shadow_length,
-                                           OUT(Spectrum) transmittance) {
-    ViewRay ray = ViewRayInAtmosphere(atmosphere, camera_position, view_ray, sun_direction);
+Spectrum GetSkyRadianceToPointOfRay(IN(AtmosphereParameters) atmosphere, bool elek_table,
+                                    IN(TransmittanceTexture) transmittance_texture,
+                                    IN(ScatteringTexture) scattering_texture,
+                                    IN(ScatteringTexture) single_mie_scattering_texture, IN(ViewRay) ray,
+                                    Length distance, Length shadow_length, OUT(Spectrum) transmittance) {
     if (!ray.inside) {
         transmittance = Spectrum(1.0);
         return Spectrum(0.0);
@@ -183,11 +267,12 @@ Spectrum GetSkyRadianceToPointAlongRayFrom(IN(AtmosphereParameters) atmosphere, 
     // difference of two large, nearly equal lookups is unreliable. Within EPS
     // of it, interpolate between rays just above and just below.
     const Number EPS = 0.004;
-    Number mu_horizon = -SafeSqrt(1.0 - (atmosphere.bottom_radius / r) * (atmosphere.bottom_radius / r));
+    Area rho2 = ray.rho2;
+    Number mu_horizon = -SafeSqrt(rho2) / r;  // not -sqrt(1 - (R / r)^2), which loses a low camera's altitude
     bool near_horizon = abs(mu - mu_horizon) < EPS;
     Spectrum single_mie_scattering;
     Spectrum scattering = ScatteringBetween(atmosphere, elek_table, transmittance_texture, scattering_texture,
-                                            single_mie_scattering_texture, r,
+                                            single_mie_scattering_texture, r, rho2,
                                             near_horizon ? mu_horizon - EPS : mu, mu_s, nu, d, transmittance,
                                             single_mie_scattering);
     if (near_horizon) {  // one more lookup, written once, so the shader holds two copies of it and not three
@@ -195,7 +280,7 @@ Spectrum GetSkyRadianceToPointAlongRayFrom(IN(AtmosphereParameters) atmosphere, 
         Spectrum transmittance_above;
         Spectrum mie_above;
         Spectrum above = ScatteringBetween(atmosphere, elek_table, transmittance_texture, scattering_texture,
-                                           single_mie_scattering_texture, r, mu_horizon + EPS, mu_s, nu, d,
+                                           single_mie_scattering_texture, r, rho2, mu_horizon + EPS, mu_s, nu, d,
                                            transmittance_above, mie_above);
         scattering = mix(scattering, above, a);
         single_mie_scattering = mix(single_mie_scattering, mie_above, a);
@@ -203,17 +288,44 @@ Spectrum GetSkyRadianceToPointAlongRayFrom(IN(AtmosphereParameters) atmosphere, 
     }
     if (shadow_length > Length(0.0)) {  // the whole segment's transmittance, blended as above
         Number mu_t = near_horizon ? mu_horizon - EPS : mu;
-        transmittance = GetTransmittance(atmosphere, transmittance_texture, r, mu_t, d_full,
-                                         RayIntersectsGround(atmosphere, r, mu_t));
+        transmittance = GetTransmittanceRho2(atmosphere, transmittance_texture, rho2, r * mu_t, d_full,
+                                             RayIntersectsGroundRho2(rho2, r * mu_t));
         if (near_horizon)
             transmittance = mix(transmittance,
-                                GetTransmittance(atmosphere, transmittance_texture, r, mu_horizon + EPS, d_full,
-                                                 RayIntersectsGround(atmosphere, r, mu_horizon + EPS)),
+                                GetTransmittanceRho2(atmosphere, transmittance_texture, rho2, r * (mu_horizon + EPS),
+                                                     d_full, RayIntersectsGroundRho2(rho2, r * (mu_horizon + EPS))),
                                 (mu - mu_horizon + EPS) / (2.0 * EPS));
     }
     // Sperlhofer 5.1.3: single Mie scattering is unreliable once the sun has set.
     single_mie_scattering = single_mie_scattering * smoothstep(Number(0.0), Number(0.01), mu_s);
     return ApplyPhaseFunctions(atmosphere, scattering, single_mie_scattering, nu) * NightFade(atmosphere, mu_s);
+}
+
+Spectrum GetSkyRadianceToPointAlongRayFrom(IN(AtmosphereParameters) atmosphere, bool elek_table,
+                                           IN(TransmittanceTexture) transmittance_texture,
+                                           IN(ScatteringTexture) scattering_texture,
+                                           IN(ScatteringTexture) single_mie_scattering_texture,
+                                           IN(vec3) camera_position, IN(vec3) view_ray, Length distance,
+                                           IN(vec3) sun_direction, Length shadow_length,
+                                           OUT(Spectrum) transmittance) {
+    return GetSkyRadianceToPointOfRay(atmosphere, elek_table, transmittance_texture, scattering_texture,
+                                      single_mie_scattering_texture,
+                                      ViewRayInAtmosphere(atmosphere, camera_position, view_ray, sun_direction),
+                                      distance, shadow_length, transmittance);
+}
+
+// The same for a camera given by `up` and `altitude` (see ViewRayInAtmosphereAt).
+Spectrum GetSkyRadianceToPointAlongRayAtFrom(IN(AtmosphereParameters) atmosphere, bool elek_table,
+                                             IN(TransmittanceTexture) transmittance_texture,
+                                             IN(ScatteringTexture) scattering_texture,
+                                             IN(ScatteringTexture) single_mie_scattering_texture, IN(vec3) up,
+                                             Length altitude, IN(vec3) view_ray, Length distance,
+                                             IN(vec3) sun_direction, Length shadow_length,
+                                             OUT(Spectrum) transmittance) {
+    return GetSkyRadianceToPointOfRay(atmosphere, elek_table, transmittance_texture, scattering_texture,
+                                      single_mie_scattering_texture,
+                                      ViewRayInAtmosphereAt(atmosphere, up, altitude, view_ray, sun_direction),
+                                      distance, shadow_length, transmittance);
 }
 
 // The lookups above with Bruneton's 4D table and with Elek's 3D table, by name.

@@ -4,7 +4,9 @@
 // [firstRow, firstRow + rowCount) per dispatch.
 //
 // Inputs per row (std430, 3 vec4): camera position (km, from the planet
-// centre), unit view ray, unit sun direction; w unused.
+// centre) with, in w, its altitude above the bottom radius (km, formed in double: the
+// position's length in float resolves only half a metre), unit view ray, unit sun
+// direction; w unused.
 // Outputs per row (2 vec4): sky radiance (rgb, W m^-2 sr^-1 nm^-1: scattered
 // light only, no ground, no sun disc), and the whole ray's transmittance (rgb).
 #include "atmosphere/interface.glsl"
@@ -23,12 +25,13 @@ layout(std430, binding = BUFFER_PROBE_OUTPUT) writeonly buffer ProbeResults {
 void main() {
     int row = firstRow + int(gl_GlobalInvocationID.x);
     if (row >= firstRow + rowCount) return;
-    vec3 camera = rays[3 * row].xyz;
+    vec3 up = normalize(rays[3 * row].xyz);
+    float altitude = rays[3 * row].w;
     vec3 view_ray = rays[3 * row + 1].xyz;
     vec3 sun_direction = rays[3 * row + 2].xyz;
     vec3 transmittance;
-    vec3 radiance = SkyRadiance(camera, view_ray, sun_direction, transmittance);
-    transmittance = GetViewRayTransmittance(atmosphereParameters(), transmittance_texture, camera, view_ray);  // to the ground too
+    vec3 radiance = SkyRadianceAt(up, altitude, view_ray, sun_direction, transmittance);
+    transmittance = GetViewRayTransmittanceAt(atmosphereParameters(), transmittance_texture, up, altitude, view_ray);  // to the ground too
     results[2 * row] = vec4(radiance, 0.0);
     results[2 * row + 1] = vec4(transmittance, 0.0);
 }

@@ -141,13 +141,35 @@ struct ViewMarch {
                            // the opacity it added (the temporal march reprojects clouds from there); 0: none
 };
 
-// Everything between `origin` (km from the planet centre) and the point `distance` km along
-// `dir`, or space when `distance` <= 0 (then the sky behind is in `inscatter`, and
+// The air from the point `t` km along the ray to `span` km further on: from a viewpoint inside
+// the atmosphere itself (t = 0, `inside`) by its up and altitude (SkyRadianceToPointAt: exact
+// from centimetres above the ground, where `origin`'s float length is rounded to half a
+// metre), else by position (from space as before: the altitude form changed the space
+// reference view's mean luminance by 2 %, cause not found).
+struct AirSlice {
+    vec3 inscatter;
+    vec3 transmittance;
+};
+AirSlice AirSliceFrom(vec3 up, Length altitude, bool inside, vec3 origin, vec3 dir, Length t, Length span,
+                      vec3 sun) {
+    AirSlice a;
+    if (t <= 0.0 && inside)
+        a.inscatter = SkyRadianceToPointAt(up, altitude, dir, span, sun, a.transmittance);
+    else
+        a.inscatter = SkyRadianceToPoint(origin + dir * t, dir, span, sun, a.transmittance);
+    return a;
+}
+
+// Everything between the viewpoint (unit `up` from the planet centre, `altitude` km above the
+// bottom radius, formed apart: the sky pass's from the camera's altitude in double) and the
+// point `distance` km along `dir`, or space when `distance` <= 0 (then the sky behind is in `inscatter`, and
 // `transmittance` is that of the whole ray, for the sun disc), marched as finely as `quality`
 // says: the sky pass gives the preset's with a per-pixel jitter; the sea's reflection one
 // slice, fewer steps and sun samples and the far field (its few steps would alias the
 // volume, and waves and Fresnel blur the reflection anyway).
-ViewMarch MarchView(vec3 origin, vec3 dir, Length distance, vec3 sun, MarchQuality quality) {
+// `inside`: the air from the viewpoint by `up` and `altitude` (see AirSliceFrom), else by `origin`.
+ViewMarch MarchViewFrom(vec3 origin, vec3 up, Length altitude, bool inside, vec3 dir, Length distance, vec3 sun,
+                        MarchQuality quality) {
     ViewMarch m;
     m.transmittance = vec3(1.0);
     m.inscatter = vec3(0.0);
@@ -169,19 +191,18 @@ ViewMarch MarchView(vec3 origin, vec3 dir, Length distance, vec3 sun, MarchQuali
     for (int k = 0; k < count; ++k) {
         vec2 crossing = crossings[k];
         if (crossing.x > t) {  // air up to the layer: one slice, T_C = 1, I_C = 0 (Eq. 17-18)
-            vec3 sliceTransmittance;
-            vec3 slice = SkyRadianceToPoint(origin + dir * t, dir, crossing.x - t, sun, sliceTransmittance);
-            CombineSlice(sliceTransmittance, slice, vec3(1.0), vec3(0.0), m.transmittance, m.inscatter);
+            AirSlice slice = AirSliceFrom(up, altitude, inside, origin, dir, t, crossing.x - t, sun);
+            CombineSlice(slice.transmittance, slice.inscatter, vec3(1.0), vec3(0.0), m.transmittance, m.inscatter);
         }
         int slices = max(quality.slicesPerCrossing, 1);
         Length width = (crossing.y - crossing.x) / Number(slices);
         int budget = max(quality.stepBudget / (slices * count), 1);
         for (int s = 0; s < slices; ++s) {  // inside the layer: slices of air with clouds in them (Eq. 19-20)
             Length a = crossing.x + Number(s) * width;
-            vec3 sliceTransmittance;
-            vec3 slice = SkyRadianceToPoint(origin + dir * a, dir, width, sun, sliceTransmittance);
+            AirSlice slice = AirSliceFrom(up, altitude, inside, origin, dir, a, width, sun);
             CloudSegmentResult c = MarchCloudSegment(origin, dir, a, a + width, sun, budget, quality);
-            CombineSlice(sliceTransmittance, slice, c.transmittance, c.inscatter, m.transmittance, m.inscatter);
+            CombineSlice(slice.transmittance, slice.inscatter, c.transmittance, c.inscatter, m.transmittance,
+                         m.inscatter);
             m.steps += c.steps;
             m.skipped += c.skipped;
             depthSum += cloudTransmittance * c.depthSum;
@@ -190,11 +211,27 @@ ViewMarch MarchView(vec3 origin, vec3 dir, Length distance, vec3 sun, MarchQuali
         t = crossing.y;
     }
     // The rest: air to the surface point, or the sky beyond.
-    vec3 restTransmittance;
-    vec3 rest = toSpace ? SkyRadiance(origin + dir * t, dir, sun, restTransmittance)
-                        : SkyRadianceToPoint(origin + dir * t, dir, max(distance - t, 0.0), sun, restTransmittance);
-    CombineSlice(restTransmittance, rest, vec3(1.0), vec3(0.0), m.transmittance, m.inscatter);
+    AirSlice rest;
+    if (!toSpace)
+        rest = AirSliceFrom(up, altitude, inside, origin, dir, t, max(distance - t, 0.0), sun);
+    else if (t <= 0.0 && inside)
+        rest.inscatter = SkyRadianceAt(up, altitude, dir, sun, rest.transmittance);
+    else
+        rest.inscatter = SkyRadiance(origin + dir * t, dir, sun, rest.transmittance);
+    CombineSlice(rest.transmittance, rest.inscatter, vec3(1.0), vec3(0.0), m.transmittance, m.inscatter);
     m.cloudOpacity = 1.0 - cloudTransmittance;
     if (m.cloudOpacity > 0.0) m.cloudDistance = depthSum / m.cloudOpacity;
     return m;
+}
+
+ViewMarch MarchViewAt(vec3 up, Length altitude, vec3 dir, Length distance, vec3 sun, MarchQuality quality) {
+    AtmosphereParameters atmosphere = atmosphereParameters();
+    return MarchViewFrom(up * (atmosphere.bottom_radius + altitude), up, altitude,
+                         altitude < atmosphere.top_radius - atmosphere.bottom_radius, dir, distance, sun, quality);
+}
+
+// The same from a viewpoint given by its position `origin` (km from the planet centre): the
+// sea's reflected rays, the cloud probe.
+ViewMarch MarchView(vec3 origin, vec3 dir, Length distance, vec3 sun, MarchQuality quality) {
+    return MarchViewFrom(origin, origin, 0.0, false, dir, distance, sun, quality);
 }

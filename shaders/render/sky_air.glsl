@@ -32,7 +32,10 @@ struct AirMarch {
 };
 
 AirMarch marchAir(vec3 dir, float distanceM, float jitter) {
-    ViewMarch m = MarchView(cameraFromPlanetCentreKm(), dir, distanceM / M_PER_KM, frame.sunDirection, MarchQualityOf(jitter));
+    // The camera by its up and altitude, both formed in double (not its float position, whose
+    // radius is rounded to half a metre: the air below the horizon from a few metres up).
+    ViewMarch m = MarchViewAt(frame.cameraUp, frame.cameraAltitude / M_PER_KM, dir, distanceM / M_PER_KM,
+                              frame.sunDirection, MarchQualityOf(jitter));
     if (clouds.statistics != 0) {
         atomicAdd(statistics.marchSteps, uint(m.steps));
         atomicAdd(statistics.skippedSteps, uint(m.skipped));

@@ -223,7 +223,8 @@ std::vector<ProbeResult> probeOnGpu(const std::vector<ProbeRow>& rows, const Sce
     std::vector<glm::vec4> rayData(rows.size() * 3 + 3, glm::vec4(0.0f));  // +3: never an empty buffer
     for (std::size_t i = 0; i < rows.size(); ++i) {
         const Rays r = raysFor(rows[i], params);
-        rayData[3 * i] = glm::vec4(glm::vec3(r.camera), 0.0f);
+        // w: the altitude (km) formed in double, apart from the radius (sky_probe.comp).
+        rayData[3 * i] = glm::vec4(glm::vec3(r.camera), static_cast<float>(rows[i].altitudeM / 1000.0));
         rayData[3 * i + 1] = glm::vec4(glm::vec3(r.view), 0.0f);
         rayData[3 * i + 2] = glm::vec4(glm::vec3(r.sun), 0.0f);
     }

@@ -118,6 +118,18 @@ vec3 CloudMarchModel::SkyRadianceToPoint(vec3 camera, vec3 viewRay, Length dista
                                              Length(0.0), transmittance);
 }
 
+// The same for a viewpoint given by its up and altitude (interface.glsl).
+vec3 CloudMarchModel::SkyRadianceAt(vec3 up, Length altitudeKm, vec3 viewRay, vec3 sun, vec3& transmittance) {
+    return GetSkyRadianceAtFrom(atmosphere_, false, transmittance_texture, scattering_texture,
+                                single_mie_scattering_texture, up, altitudeKm, viewRay, sun, transmittance);
+}
+vec3 CloudMarchModel::SkyRadianceToPointAt(vec3 up, Length altitudeKm, vec3 viewRay, Length distance, vec3 sun,
+                                           vec3& transmittance) {
+    return GetSkyRadianceToPointAlongRayAtFrom(atmosphere_, false, transmittance_texture, scattering_texture,
+                                               single_mie_scattering_texture, up, altitudeKm, viewRay, distance, sun,
+                                               Length(0.0), transmittance);
+}
+
 }  // namespace glsl
 
 double largeStepKmOf(const CloudParams& c) {

@@ -108,6 +108,9 @@ public:
     const atmosphere::Table2D& irradiance_texture;
     vec3 SkyRadiance(vec3 camera, vec3 viewRay, vec3 sun, vec3& transmittance);
     vec3 SkyRadianceToPoint(vec3 camera, vec3 viewRay, Length distance, vec3 sun, vec3& transmittance);
+    vec3 SkyRadianceAt(vec3 up, Length altitudeKm, vec3 viewRay, vec3 sun, vec3& transmittance);
+    vec3 SkyRadianceToPointAt(vec3 up, Length altitudeKm, vec3 viewRay, Length distance, vec3 sun,
+                              vec3& transmittance);
 
 #include "shaders/clouds/cloud_density.glsl"
 #include "shaders/clouds/cloud_march.glsl"
