@@ -114,3 +114,48 @@ TEST_F(SeaAndLand, FromSpaceNoLandIsLitAsSeaFloor) {
                 land.size(), 100.0 * dark / double(land.size()));
     EXPECT_LT(dark / double(land.size()), 0.01);
 }
+
+// From afar the sky's march ends where the ray meets the height field, not the sagging mesh:
+// a mesh point hundreds of metres inside the ground ended the clouds' march below cloud tops
+// it should have stopped under, and land reaching into the cloud layer showed speckle and
+// dashes. The `space` view with clouds at 640x360: the share of land pixels (as above) that
+// differ from the median of their 3x3 neighbourhood by more than 20 % (cloud edges and coasts
+// are most of what remains). Measured: 1.4 % ending at the mesh, 0.8 % at the height field.
+TEST_F(SeaAndLand, FromSpaceCloudsOverLandHaveNoSpeckle) {
+    using namespace planet;
+    Session session = loadSession(test::repoPaths(), "earth", "space");
+    session.scene.time_s = 0.0;
+    const glm::ivec2 size(640, 360);
+    Renderer renderer(test::repoPaths().shaders(), atmosphere::TableSizes::reduced(), session.continents);
+    renderer.render(session.scene, session.camera, size);
+    const ImageRGBAF image = readTextureRGBAF(renderer.targets().hdr(), size.x, size.y);
+    const FrameUniforms frame = makeFrameUniforms(session.scene, session.camera, size, 0, std::nullopt);
+    const double radius = session.scene.planetRadiusM();
+    const glm::dvec3 sun = session.scene.sunDirection();
+    auto luminanceAt = [&](int x, int y) {
+        const float* p = &image.pixels[(static_cast<std::size_t>(y) * size.x + x) * 4];
+        return 0.2126 * p[0] + 0.7152 * p[1] + 0.0722 * p[2];
+    };
+    int land = 0, speckle = 0;
+    for (int y = 1; y + 1 < size.y; ++y)
+        for (int x = 1; x + 1 < size.x; ++x) {
+            const glm::vec2 ndc((x + 0.5f) / size.x * 2.0f - 1.0f, 1.0f - (y + 0.5f) / size.y * 2.0f);
+            const glm::vec4 view = frame.viewFromClip * glm::vec4(ndc, 0.5f, 1.0f);
+            const glm::dvec3 dir = glm::normalize(glm::dvec3(glm::mat3(frame.worldFromView) * (glm::vec3(view) / view.w)));
+            glm::dvec3 hit;
+            if (!hitSphere(session.camera.position, dir, radius, hit)) continue;
+            if (session.ground.height(glm::vec3(glm::normalize(hit))) < 20.0f) continue;
+            if (glm::dot(glm::normalize(hit), sun) < 0.5) continue;
+            double around[9];
+            int n = 0;
+            for (int dy = -1; dy <= 1; ++dy)
+                for (int dx = -1; dx <= 1; ++dx) around[n++] = luminanceAt(x + dx, y + dy);
+            std::nth_element(around, around + 4, around + 9);
+            ++land;
+            speckle += std::abs(luminanceAt(x, y) - around[4]) > 0.2 * around[4];
+        }
+    ASSERT_GT(land, 1000);
+    std::printf("space with clouds, 640x360: %d land pixels, %.1f %% off their 3x3 median by > 20 %%\n", land,
+                100.0 * speckle / land);
+    EXPECT_LT(double(speckle) / land, 0.01);
+}

@@ -24,6 +24,29 @@ layout(binding = UNIT_GBUFFER_DEPTH) uniform sampler2D gDepth;
 layout(location = 0) out vec4 outSurfaceRadiance;
 layout(location = 1) out float outSurfaceDistance;
 
+// From afar, the distance along the ray to the height field rather than to the mesh: the
+// terrain's chords sag below the sphere between vertices by (edge length)^2 / 8r (hundreds
+// of metres from space), and a point that deep inside the ground ended the clouds' march
+// below the cloud tops it should have stopped under (speckle and dashes over land wherever
+// the terrain reaches into the cloud layer) and lit the ground from the wrong place. The
+// mesh's point is moved along the ray by its altitude above the ground's height (the
+// G-buffer's) over the rate the ray descends; near the camera, where the sag is far below a
+// metre, nothing changes (the half-float height would add its own rounding there).
+float onTheHeightField(vec3 dir, float meshDistance, float groundHeight) {
+    float edge = meshDistance * radiansPerPixel() * 2.0 * terrainTargetEdgePixels;  // fractional tessellation: up to 2x
+    float sag = edge * edge / (8.0 * frame.planetRadius);
+    float weight = smoothstep(1.0, 10.0, sag);
+    if (weight <= 0.0) return meshDistance;
+    vec3 fromCamera = dir * meshDistance;
+    vec3 camera = -frame.planetCenterFromCamera;
+    float rise = (2.0 * dot(camera, fromCamera) + dot(fromCamera, fromCamera)) /
+                 (length(camera + fromCamera) + length(camera));
+    float meshAltitude = frame.cameraAltitude + rise;
+    float descent = max(-dot(dir, normalize(camera + fromCamera)), 0.05);  // altitude lost per metre along the ray
+    float limit = 2.0 * sag / descent + 50.0;
+    return meshDistance + weight * clamp((meshAltitude - groundHeight) / descent, -limit, limit);
+}
+
 void main() {
     ivec2 pixel = ivec2(gl_FragCoord.xy);
     float depth = texelFetch(gDepth, pixel, 0).r;
@@ -32,9 +55,10 @@ void main() {
     vec3 dir = worldRayFromNdc(vNdc);
     vec3 forward = -vec3(frame.worldFromView[2]);
     float rayDistance = viewDistanceFromDepth(depth) / max(dot(dir, forward), 1e-6);  // m
+    vec4 normalAndHeight = texelFetch(gNormal, pixel, 0);
+    rayDistance = onTheHeightField(dir, rayDistance, normalAndHeight.w);
     vec3 point = cameraFromPlanetCentreKm() + dir * (rayDistance / M_PER_KM);
 
-    vec4 normalAndHeight = texelFetch(gNormal, pixel, 0);
     vec3 normal = normalize(normalAndHeight.xyz);
     vec3 albedo = texelFetch(gAlbedo, pixel, 0).rgb;
     vec3 skyIrradiance;
