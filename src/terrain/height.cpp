@@ -22,32 +22,7 @@
 
 namespace planet::terrain {
 namespace glsl {
-using vec3 = glm::vec3;
-using vec4 = glm::vec4;
-using samplerCube = const noise::CubeMap&;
-using glm::abs;
-using glm::asin;
-using glm::clamp;
-using glm::cross;
-using glm::dot;
-using glm::floor;
-using glm::inversesqrt;
-using glm::length;
-using glm::max;
-using glm::min;
-using glm::normalize;
-using glm::sign;
-using glm::sqrt;
-using glm::smoothstep;
-using glm::step;
-using std::abs;
-using std::asin;
-using std::floor;
-using std::sqrt;
-vec4 textureLod(samplerCube map, vec3 direction, float /*level: the map has one*/) {
-    return noise::sampleContinents(map, glm::dvec3(direction));
-}
-#define OUT(x) x&
+#include "terrain/glsl_as_cpp.h"
 #include "shaders/noise/simplex.glsl"
 #include "shaders/terrain/height.glsl"
 #undef OUT
