@@ -41,18 +41,29 @@ const float M_PER_KM = 1000.0;
 // radial up and the altitude formed in double on the CPU.
 vec3 cameraFromPlanetCentreKm() { return frame.cameraUp * ((frame.planetRadius + frame.cameraAltitude) / M_PER_KM); }
 
-// How far a point (m, relative to the camera, world axes) lies below the mean sea surface, m
-// (< 0 above it): the camera's depth less the point's rise, |C + p| - |C| = (2 C.p + p.p) /
-// (|C + p| + |C|), which subtracts nothing of planet size.
-float depthBelowSeaM(vec3 pointFromCamera) {
+// How much farther from the planet centre than the camera a point (m, relative to the camera,
+// world axes) lies, m: |C + p| - |C| = (2 C.p + p.p) / (|C + p| + |C|), which subtracts
+// nothing of planet size.
+float riseFromCameraM(vec3 pointFromCamera) {
     vec3 c = -frame.planetCenterFromCamera;
-    float rise = (2.0 * dot(c, pointFromCamera) + dot(pointFromCamera, pointFromCamera)) /
-                 (length(c + pointFromCamera) + length(c));
-    return frame.cameraDepthBelowSea - rise;
+    return (2.0 * dot(c, pointFromCamera) + dot(pointFromCamera, pointFromCamera)) /
+           (length(c + pointFromCamera) + length(c));
 }
+
+// How far a point (m, relative to the camera, world axes) lies below the mean sea surface, m
+// (< 0 above it): the camera's depth less the point's rise.
+float depthBelowSeaM(vec3 pointFromCamera) { return frame.cameraDepthBelowSea - riseFromCameraM(pointFromCamera); }
 
 // Angle one pixel subtends vertically, rad (from the vertical field of view).
 float radiansPerPixel() { return 2.0 * atan(1.0 / frame.clipFromView[1][1]) * frame.inverseViewportSize.y; }
+
+// How far a mesh drawn with triangle edges of `edgePixels` on screen sags below the sphere it
+// approximates between its vertices at `distanceM` from the camera, m: its chords are
+// (edge length)^2 / 8r below the sphere (a kilometre from space; nothing near the camera).
+float meshSagM(float distanceM, float edgePixels) {
+    float edge = distanceM * radiansPerPixel() * edgePixels;
+    return edge * edge / (8.0 * frame.planetRadius);
+}
 
 // Reversed-Z infinite projection: depth = near / distance along the view axis.
 float depthFromViewDistance(float viewDistance) { return frame.nearPlane / viewDistance; }

@@ -96,8 +96,7 @@ void main() {
     float pixelAngle = radiansPerPixel();
     // How far the meshes may sag below the sphere here (see above), m, and what that means
     // along this ray.
-    float edge = surfaceDistance * pixelAngle * ocean.coarsestEdgePixels;
-    float sag = edge * edge / (8.0 * frame.planetRadius);
+    float sag = meshSagM(surfaceDistance, ocean.coarsestEdgePixels);
     float cosIncidence = max(abs(dot(view, up)), 0.05);
     vec3 forward = -vec3(frame.worldFromView[2]);
     float pulled = max(dot(tePosition, forward) - 2.0 * sag / cosIncidence * dot(view, forward), frame.nearPlane);

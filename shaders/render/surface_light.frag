@@ -33,15 +33,12 @@ layout(location = 1) out float outSurfaceDistance;
 // G-buffer's) over the rate the ray descends; near the camera, where the sag is far below a
 // metre, nothing changes (the half-float height would add its own rounding there).
 float onTheHeightField(vec3 dir, float meshDistance, float groundHeight) {
-    float edge = meshDistance * radiansPerPixel() * 2.0 * terrainTargetEdgePixels;  // fractional tessellation: up to 2x
-    float sag = edge * edge / (8.0 * frame.planetRadius);
+    float sag = meshSagM(meshDistance, 2.0 * terrainTargetEdgePixels);  // fractional tessellation: edges up to 2x
     float weight = smoothstep(1.0, 10.0, sag);
     if (weight <= 0.0) return meshDistance;
     vec3 fromCamera = dir * meshDistance;
     vec3 camera = -frame.planetCenterFromCamera;
-    float rise = (2.0 * dot(camera, fromCamera) + dot(fromCamera, fromCamera)) /
-                 (length(camera + fromCamera) + length(camera));
-    float meshAltitude = frame.cameraAltitude + rise;
+    float meshAltitude = frame.cameraAltitude + riseFromCameraM(fromCamera);
     float descent = max(-dot(dir, normalize(camera + fromCamera)), 0.05);  // altitude lost per metre along the ray
     float limit = 2.0 * sag / descent + 50.0;
     return meshDistance + weight * clamp((meshAltitude - groundHeight) / descent, -limit, limit);
