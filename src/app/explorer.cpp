@@ -157,11 +157,29 @@ ControlInput pollControls(GLFWwindow* window, PendingInput& pending) {
     return in;
 }
 
+// The window does not wait for the atmosphere tables: unless the cache holds the target sizes,
+// it starts with starter tables made at once and refines them in the background
+// (atmosphere/atmosphere.h).
+atmosphere::TablePlan explorerTables(const ExploreOptions& options, const DataPaths& paths, const Scene& scene) {
+    const atmosphere::TableSizes target = atmosphere::tableSizesFor(options.common.tables, gl::rendererDescription());
+    return atmosphere::startPlan(scene, target, atmosphere::defaultStarterTables(), paths.shaders());
+}
+
+// What the status line says while the tables are refined: which sizes, how far.
+std::string refiningStatus(const atmosphere::Atmosphere& a) {
+    if (!a.refining()) return {};
+    const atmosphere::TableSizes& t = a.targetSizes();
+    return "atmosphere: refining the tables to " + std::to_string(t.scattering_nu * t.scattering_mu_s) + "x" +
+           std::to_string(t.scattering_mu) + "x" + std::to_string(t.scattering_r) + " in the background";
+}
+
 class Explorer {
 public:
-    Explorer(const ExploreOptions& options, GLFWwindow* window, const DataPaths& paths, Session session)
-        : options_(options), window_(window), session_(std::move(session)), renderer_(paths.shaders(), atmosphere::tableSizesFor(options.common.tables, gl::rendererDescription()),
-                    session_.continents),
+    Explorer(const ExploreOptions& options, GLFWwindow* window, const DataPaths& paths, Session session,
+             std::chrono::steady_clock::time_point started)
+        : options_(options), window_(window), session_(std::move(session)),
+          renderer_(paths.shaders(), explorerTables(options, paths, session_.scene), session_.continents),
+          started_(started),
           rendererName_(gl::rendererDescription()),
           presetPath_("out/presets/" + session_.presetName + ".toml"),  // never the shipped preset by default
           lastValidScene_(session_.scene),
@@ -202,6 +220,7 @@ private:
     GLFWwindow* window_;
     Session session_;
     Renderer renderer_;
+    std::chrono::steady_clock::time_point started_;  // when the command started: the first frame's time
     CameraController controller_;
     std::string rendererName_;
     std::string presetPath_;
@@ -303,7 +322,10 @@ void Explorer::drawUi() {
     ImGui::NewFrame();
     if (showUi_) {
         drawProfilerPanel(renderer_.profiler(), rendererName_);
-        if (drawSceneParams(session_.scene, renderer_.atmosphere().rebuildProgress(), renderer_.cloudBakeProgress())) acceptOrRevertEdit();
+        const atmosphere::Atmosphere& air = renderer_.atmosphere();
+        if (drawSceneParams(session_.scene, air.rebuildProgress(), renderer_.cloudBakeProgress(),
+                            air.refining() ? "refining tables" : "rebuilding tables"))
+            acceptOrRevertEdit();
         if (session_.scene.terrain.ocean && drawWavePanel(session_.scene, clock_)) acceptOrRevertEdit();
         const CameraPanelResult r =
             drawCameraPanel(session_.camera, controller_, session_.scene, session_.views, presetPath_, status_);
@@ -312,6 +334,7 @@ void Explorer::drawUi() {
         if (r.savePreset) savePreset();
     }
     drawShaderErrors(renderer_.shaderErrors());
+    drawStatusLine(refiningStatus(renderer_.atmosphere()), renderer_.atmosphere().rebuildProgress());
     ImGui::Render();
     ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
 }
@@ -360,6 +383,10 @@ void Explorer::run() {
             screenshotRequested_ = false;
         }
         glfwSwapBuffers(window_);
+        if (frame == 0)
+            logInfo("first frame on screen " +
+                    std::to_string(std::chrono::duration<double>(std::chrono::steady_clock::now() - started_).count()) +
+                    " s after the start");
         if (lastFrame) break;
     }
 }
@@ -367,6 +394,7 @@ void Explorer::run() {
 }  // namespace
 
 int runExplore(const ExploreOptions& options) {
+    const auto started = std::chrono::steady_clock::now();
     if (options.frames < 0) throw InputError("--frames must be >= 0");
     if (!displayAvailable()) {
         std::cout << "No display found (DISPLAY and WAYLAND_DISPLAY are unset): rendering a still instead."
@@ -385,7 +413,7 @@ int runExplore(const ExploreOptions& options) {
     WindowPtr window = openWindow(size, options.common.glDebug);
     gl::installDebugOutput(&messages, options.common.glDebug);  // always to the log; --gl-debug: debug context, synchronous
     logInfo("OpenGL: " + gl::rendererDescription());
-    Explorer explorer(options, window.get(), paths, std::move(session));  // installs callbacks before ImGui chains them
+    Explorer explorer(options, window.get(), paths, std::move(session), started);  // installs callbacks before ImGui chains them
     ImGuiLayer imgui(window.get());
     explorer.run();
     return 0;

@@ -131,7 +131,7 @@ void drawProfilerPanel(const Profiler& profiler, const std::string& renderer) {
     ImGui::End();
 }
 
-bool drawSceneParams(Scene& scene, double rebuildProgress, double cloudBakeProgress) {
+bool drawSceneParams(Scene& scene, double rebuildProgress, double cloudBakeProgress, const char* rebuildLabel) {
     placeOnFirstUse("Scene");
     bool changed = false;
     if (!ImGui::Begin("Scene")) {
@@ -146,7 +146,7 @@ bool drawSceneParams(Scene& scene, double rebuildProgress, double cloudBakeProgr
             section = spec.section;
             open = ImGui::CollapsingHeader(section.c_str(), ImGuiTreeNodeFlags_DefaultOpen);
             if (open && section == "atmosphere" && rebuildProgress < 1.0)
-                ImGui::ProgressBar(static_cast<float>(rebuildProgress), ImVec2(-1.0f, 0.0f), "rebuilding tables");
+                ImGui::ProgressBar(static_cast<float>(rebuildProgress), ImVec2(-1.0f, 0.0f), rebuildLabel);
             if (open && section == "clouds" && cloudBakeProgress < 1.0)
                 ImGui::ProgressBar(static_cast<float>(cloudBakeProgress), ImVec2(-1.0f, 0.0f),
                                    "baking the cloud volume and weather map");
@@ -311,6 +311,20 @@ void drawShaderErrors(const std::vector<std::string>& errors) {
     for (const std::string& e : errors) ImGui::TextWrapped("%s", e.c_str());
     ImGui::End();
     ImGui::PopStyleColor();
+}
+
+void drawStatusLine(const std::string& text, double progress) {
+    if (text.empty()) return;
+    // Bottom right, out of the way of the panels' starting places and of the shader errors (bottom centre).
+    const ImVec2 display = ImGui::GetIO().DisplaySize;
+    ImGui::SetNextWindowPos(ImVec2(display.x - 10, display.y - 10), ImGuiCond_Always, ImVec2(1.0f, 1.0f));
+    ImGui::SetNextWindowBgAlpha(0.6f);
+    ImGui::Begin("##status", nullptr,
+                 ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoSavedSettings |
+                     ImGuiWindowFlags_NoFocusOnAppearing | ImGuiWindowFlags_NoNav | ImGuiWindowFlags_NoInputs);
+    ImGui::TextUnformatted(text.c_str());
+    if (progress >= 0.0) ImGui::ProgressBar(static_cast<float>(progress), ImVec2(260.0f, 0.0f));
+    ImGui::End();
 }
 
 }  // namespace planet

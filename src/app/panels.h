@@ -33,9 +33,10 @@ void drawProfilerPanel(const Profiler& profiler, const std::string& renderer);
 // One widget per row of the parameter table, grouped by section. Returns true
 // when a value changed (already clamped to its valid range). While the
 // atmosphere tables are being rebuilt, `rebuildProgress` in [0, 1) shows as a
-// bar (the old tables stay in use until then); pass 1 when idle. `cloudBakeProgress`
-// likewise for a background bake of the clouds' volume and weather map.
-bool drawSceneParams(Scene& scene, double rebuildProgress, double cloudBakeProgress);
+// bar labelled `rebuildLabel` (the old tables stay in use until then); pass 1 when idle.
+// `cloudBakeProgress` likewise for a background bake of the clouds' volume and weather map.
+bool drawSceneParams(Scene& scene, double rebuildProgress, double cloudBakeProgress,
+                     const char* rebuildLabel = "rebuilding tables");
 
 // Camera: altitude and place, fly/orbit and speed, the view bookmarks, the time of day at
 // the camera (moves the sun: scene.sun's longitude), and saving the preset.
@@ -57,6 +58,12 @@ struct WaveClock {
 // wave's fields (origin, amplitude, wavelength, steepness, speed, phase) to edit, add or
 // remove. Returns true when the waves changed.
 bool drawWavePanel(Scene& scene, WaveClock& clock);
+
+// A line of status at the bottom right of the window (work going on in the background, e.g.
+// the atmosphere tables being refined), with a progress bar when `progress` is in [0, 1];
+// nothing when `text` is empty. Drawn with the panels hidden too: it says why the picture
+// is about to change.
+void drawStatusLine(const std::string& text, double progress = -1.0);
 
 // Shader compile errors from hot reload, in a red window; nothing when empty.
 void drawShaderErrors(const std::vector<std::string>& errors);

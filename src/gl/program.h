@@ -45,6 +45,9 @@ public:
     // Rebuilds if a source file changed (or `force`). Returns true when a new
     // program is in use. On failure the previous program stays and error() is set.
     bool reloadIfChanged(bool force = false);
+    // Other sources for the next (re)build, e.g. a preamble with other #defines; the program in
+    // use stays until reloadIfChanged(true) builds from them.
+    void setSources(const ShaderSources& sources) { sources_ = sources; }
     GLuint id() const { return program_.id(); }
     const std::string& error() const { return error_; }
     const std::string& name() const { return desc_.name; }

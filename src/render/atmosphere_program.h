@@ -31,6 +31,14 @@ public:
         }
         return *elek3D_;
     }
+    // Other table sizes (the explorer's tables refined to their target): the programs take them
+    // at their next rebuild (reloadIfChanged(true) on built()), the variant not built yet when
+    // it is first asked for.
+    void setTableSizes(const atmosphere::TableSizes& sizes) {
+        sizes_ = sizes;
+        bruneton4D_.setSources(variant(false));
+        if (elek3D_) elek3D_->setSources(variant(true));
+    }
     // The programs built so far, for hot reload.
     std::vector<gl::HotProgram*> built() {
         std::vector<gl::HotProgram*> p{&bruneton4D_};

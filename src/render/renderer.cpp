@@ -1,6 +1,8 @@
 #include "render/renderer.h"
 
 #include <algorithm>
+#include <chrono>
+#include <cstdio>
 #include <cmath>
 #include <set>
 #include <stdexcept>
@@ -8,6 +10,7 @@
 #include "gl/debug.h"
 #include "render/bindings.h"
 #include "scene/preset.h"
+#include "util/log.h"
 
 namespace planet {
 
@@ -64,18 +67,19 @@ std::vector<std::string> checkPassOrder(const std::vector<PassDeclaration>& pass
     return problems;
 }
 
-Renderer::Renderer(const std::filesystem::path& shaderRoot, const atmosphere::TableSizes& atmosphereTables,
+Renderer::Renderer(const std::filesystem::path& shaderRoot, const atmosphere::TablePlan& atmosphereTables,
                    std::shared_ptr<terrain::Continents> continents)
     : sources_{shaderRoot, gl::shaderPreamble()},
       atmosphere_(shaderRoot, atmosphereTables),
+      programTables_(atmosphereTables.firstSizes()),
       continents_(continents ? std::move(continents) : std::make_shared<terrain::Continents>()),
       terrain_(sources_),
-      surfaceLight_(withAtmosphere(sources_, atmosphereTables), "surface light", "render/surface_light.frag"),
-      ocean_(sources_, atmosphereTables),
-      sky_(sources_, atmosphereTables, gl::ProgramDesc{"sky", {"common/fullscreen.vert", "render/sky.frag"}}),
-      skySparse_(sources_, atmosphereTables,
+      surfaceLight_(withAtmosphere(sources_, programTables_), "surface light", "render/surface_light.frag"),
+      ocean_(sources_, programTables_),
+      sky_(sources_, programTables_, gl::ProgramDesc{"sky", {"common/fullscreen.vert", "render/sky.frag"}}),
+      skySparse_(sources_, programTables_,
                  gl::ProgramDesc{"sky march", {"common/fullscreen.vert", "render/sky_sparse.frag"}}),
-      skyTemporal_(sources_, atmosphereTables,
+      skyTemporal_(sources_, programTables_,
                    gl::ProgramDesc{"sky temporal", {"common/fullscreen.vert", "render/sky_temporal.frag"}}),
       antialias_(sources_, "antialias", "render/antialias.frag"),
       tonemap_(sources_, "tonemap", "render/tonemap.frag"),
@@ -229,6 +233,7 @@ void Renderer::prepare(const Scene& scene, const Camera& camera, glm::ivec2 size
         atmosphere_.update(scene);  // usually nothing to do; starts a rebuild when the atmosphere changed
         report.atmosphereTablesMade = first;
     }
+    report.atmosphereProgramsRebuilt = matchAtmosphereTables();
     gl::DebugGroup group("prepare");
     auto timing = profiler_.pass("prepare");
     continents_->update(scene.terrain);  // nothing when the session's ground already brought it up to date
@@ -310,6 +315,27 @@ void Renderer::tonemapRadiance(const ImageRGBAF& radiance) {
     glBindVertexArray(emptyVertexArray_.id());
     tonemap_.draw();
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
+}
+
+bool Renderer::matchAtmosphereTables() {
+    const atmosphere::TableSizes& sizes = atmosphere_.sizes();
+    if (sizes == programTables_) return false;
+    // The table sizes are #defines in every program that reads the tables: the same forced
+    // rebuild as a hot reload (a program that fails keeps the last good one and shows its error).
+    const auto started = std::chrono::steady_clock::now();
+    programTables_ = sizes;
+    surfaceLight_.program().setSources(withAtmosphere(sources_, sizes));
+    std::vector<gl::HotProgram*> rebuilt{&surfaceLight_.program()};
+    for (AtmosphereProgram* p : {&ocean_.program(), &sky_, &skySparse_, &skyTemporal_}) {
+        p->setTableSizes(sizes);
+        const std::vector<gl::HotProgram*> built = p->built();
+        rebuilt.insert(rebuilt.end(), built.begin(), built.end());
+    }
+    for (gl::HotProgram* p : rebuilt) p->reloadIfChanged(true);
+    char seconds[32];
+    std::snprintf(seconds, sizeof seconds, "%.2f", std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count());
+    logInfo("atmosphere: " + std::to_string(rebuilt.size()) + " programs rebuilt for the new table sizes in " + seconds + " s");
+    return true;
 }
 
 std::vector<gl::HotProgram*> Renderer::programs() {

@@ -1,10 +1,11 @@
 // The frame: prepare, then a short list of declared passes (STYLE habits 6 and 15).
 //
 // prepare   brings every baked resource up to date before anything draws: the atmosphere
-//           tables (loaded or made on first use; while tuning, one chunk of a rebuild a
-//           frame, profiled as "atmosphere tables"), the continents map on the GPU and its
-//           CPU copy (terrain/continents.h, one owner), the clouds' density volume and
-//           weather map (clouds/cloud_resources.h: cached or baked; rebaked in the background
+//           tables (loaded or made on first use, or the explorer's starter tables; while
+//           tuning or refining the starter, chunks of a rebuild each frame, profiled as
+//           "atmosphere tables"; the programs that read them rebuilt when their sizes
+//           change), the continents map on the GPU and its CPU copy (terrain/continents.h,
+//           one owner), the clouds' density volume and weather map (clouds/cloud_resources.h: cached or baked; rebaked in the background
 //           for the explorer); then uploads the frame's blocks (FrameBlock, TerrainBlock,
 //           GridBlocks, OceanBlock, CloudBlock) and packs the waves, and binds what every pass
 //           reads at the units of shaders/common/bindings.glsl.
@@ -97,6 +98,7 @@ std::vector<std::string> checkPassOrder(const std::vector<PassDeclaration>& pass
 struct PrepareReport {
     bool atmosphereTablesMade = false;   // loaded or computed at once (first use)
     bool atmosphereRebuildStep = false;  // one chunk of a rebuild ran
+    bool atmosphereProgramsRebuilt = false;  // the tables' sizes changed (refined): their readers rebuilt
     bool continentsUpdated = false;      // the continents map was loaded or baked, and uploaded
     bool cloudsUpdated = false;          // the cloud volume or weather map was made and uploaded
     bool historyValid = false;           // the previous frame may be reprojected
@@ -109,7 +111,10 @@ public:
     // continents (from the cache when they are there). `continents` is the map's owner the
     // caller shares with its CPU height queries (Session::continents), so the map is loaded
     // once per process for both; without one the renderer makes its own (default cache).
-    Renderer(const std::filesystem::path& shaderRoot, const atmosphere::TableSizes& atmosphereTables,
+    // `atmosphereTables`: the table sizes, or a plan that starts with smaller tables and
+    // refines them in the background (the explorer; atmosphere/atmosphere.h). The programs
+    // that read the tables are built for the sizes in use, rebuilt when they change.
+    Renderer(const std::filesystem::path& shaderRoot, const atmosphere::TablePlan& atmosphereTables,
              std::shared_ptr<terrain::Continents> continents = nullptr);
     // Releases the continents' GL texture: the map may outlive this renderer's GL context
     // (a Session owns it), its texture must not.
@@ -178,10 +183,14 @@ private:
     std::vector<Pass> makePasses();
     void prepare(const Scene& scene, const Camera& camera, glm::ivec2 size);
     bool historyUsable(const Scene& scene, const Camera& camera, bool resized) const;
+    // Rebuilds the programs that read the atmosphere tables when the tables' sizes changed
+    // (a starter refined to its target). Returns whether it did.
+    bool matchAtmosphereTables();
     std::vector<gl::HotProgram*> programs();
 
     gl::ShaderSources sources_;
     atmosphere::Atmosphere atmosphere_;
+    atmosphere::TableSizes programTables_;  // the sizes the programs reading the tables were built for
     std::shared_ptr<terrain::Continents> continents_;
     clouds::CloudResources clouds_;
     TerrainPass terrain_;
