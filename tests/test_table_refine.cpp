@@ -6,7 +6,7 @@
 // sizes). The refined tables are cached, so the next plan needs no starter.
 //
 // Small sizes keep it quick on two cores: the target is the reduced tables, the starter a
-// smaller set defined here, with fewer scattering orders.
+// explorer's (smaller, and fewer scattering orders where the scene asks for more).
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
@@ -27,9 +27,10 @@ using namespace planet::atmosphere;
 
 namespace {
 
-// Half the reduced sizes along every axis but nu (which must stay at least 2).
-const TableSizes kStarterSizes{32, 8, 4, 16, 4, 2, 8, 2, 4, 16, 4};
-const StarterTables kStarter{kStarterSizes, 1};
+// The explorer's starter (half the reduced sizes, 2 orders), and one with a single order.
+const StarterTables kStarter = defaultStarterTables();
+const TableSizes kStarterSizes = kStarter.sizes;
+const StarterTables kSingleOrderStarter{kStarterSizes, 1};
 const TableSizes kTarget = TableSizes::reduced();
 constexpr int kTargetOrders = 2;
 constexpr int kMaxUpdates = 2000;  // a bound on the loops, not a time limit
@@ -160,7 +161,7 @@ TEST_F(TableRefineTest, PlanStartsFromTheCheapestCachedEntryOrTheStarter) {
 TEST_F(TableRefineTest, AnEditWhileRefiningRetargetsTheRefinement) {
     const fs::path root = freshRoot("edit");
     Session s = earthSession();
-    Atmosphere atmosphere(test::repoPaths().shaders(), TablePlan(kTarget, kStarter, root));
+    Atmosphere atmosphere(test::repoPaths().shaders(), TablePlan(kTarget, kSingleOrderStarter, root));
     atmosphere.update(s.scene);
     for (int i = 0; i < 5; ++i) atmosphere.update(s.scene);
     ASSERT_TRUE(atmosphere.rebuilding());

@@ -64,8 +64,8 @@ struct TablePlan {
     const TableSizes& firstSizes() const { return starter ? starter->sizes : target; }
 };
 
-// The starter the explorer computes when nothing better is cached: the reduced sizes with 2
-// scattering orders (the measured cost on llvmpipe: docs/PERFORMANCE.md, issue 14).
+// The starter the explorer computes when nothing better is cached: half the reduced sizes,
+// 2 scattering orders (the measured cost on llvmpipe: docs/PERFORMANCE.md, issue 14).
 StarterTables defaultStarterTables();
 
 // The explorer's plan for `scene`: the target alone when the cache holds an entry for it (the
