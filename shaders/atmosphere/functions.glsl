@@ -721,6 +721,18 @@ Spectrum GetIrradiance(IN(AtmosphereParameters) atmosphere, IN(IrradianceTexture
     return Spectrum(texture(irradiance_texture, uv));
 }
 
+// GetIrradiance(atmosphere, irradiance_texture, bottom_radius, mu_s) by two texel
+// fetches: at r = bottom_radius the table's v is the bottom row's centre, so the
+// filtered lookup is a lerp along that row, which this is (cheaper on a CPU rasterizer).
+Spectrum GetGroundIrradiance(IN(IrradianceTexture) irradiance_texture, Number mu_s) {
+    Number x = clamp((mu_s * 0.5 + 0.5) * Number(IRRADIANCE_TEXTURE_WIDTH - 1), Number(0.0),
+                     Number(IRRADIANCE_TEXTURE_WIDTH - 1));
+    int i = min(int(floor(x)), IRRADIANCE_TEXTURE_WIDTH - 2);
+    Number f = x - Number(i);
+    return Spectrum(texelFetch(irradiance_texture, ivec2(i, 0), 0)) * (1.0 - f) +
+           Spectrum(texelFetch(irradiance_texture, ivec2(i + 1, 0), 0)) * f;
+}
+
 // Direct sun irradiance on a horizontal surface, with the sun disc partly
 // below the horizon approximated by the average cosine over the disc.
 Spectrum ComputeDirectIrradiance(IN(AtmosphereParameters) atmosphere, IN(TransmittanceTexture) transmittance_texture,
@@ -787,13 +799,31 @@ Spectrum ComputeIndirectIrradianceTexture(IN(AtmosphereParameters) atmosphere,
 // Radiance scattered at a point towards -omega by light of the previous order
 // arriving from all directions, ground reflection included (Elek Eq. 12,
 // Sperlhofer Eq. 2-10). Directions are in a frame with the zenith along z.
+//
+// Quadrature: the midpoint rule on a 16 x 32 grid in (theta, phi), omega at
+// phi = 0 (unchanged; tests/test_scattering_density_quadrature.cpp measures it
+// against a 128 x 256 grid). The cost was in reading the previous order, not in
+// the sum, so the reads are hoisted out of the grid without moving a node:
+//  - on a ring (fixed theta) only nu1, the angle to the sun, varies, and a
+//    scattering table is linear in nu between its SCATTERING_TEXTURE_NU_SIZE
+//    slices (GetScatteringAtUvwz): the ring reads each slice once and every
+//    direction interpolates between two of them as GetScatteringAtUvwz would
+//    (NU_SIZE fetches per ring and table instead of 2 per direction);
+//  - the ground seen along a ring is at one distance and transmittance, and the
+//    sun's cosine there is (r mu_s + d nu1) / |r z + d omega_i|, one norm per
+//    ring; its irradiance is a lerp along the table's bottom row;
+//  - the phase functions depend on omega . omega_i, equal at phi and -phi: one
+//    evaluation serves both directions of a pair.
+// Same nodes, same weights: the result is the per-direction form's to rounding
+// (1e-14 in double; full GPU tables within 2.7e-6 of it), 2.3-2.9 times faster
+// on llvmpipe (docs/PERFORMANCE.md, 2026-12-02). MAX_NU_SIZE bounds
+// SCATTERING_TEXTURE_NU_SIZE (checked in C++: kMaxScatteringNuSize, reference_tables.h).
 Spectrum ComputeScatteringDensity(IN(AtmosphereParameters) atmosphere, IN(TransmittanceTexture) transmittance_texture,
                                   IN(ScatteringTexture) single_rayleigh_scattering_texture,
                                   IN(ScatteringTexture) single_mie_scattering_texture,
                                   IN(ScatteringTexture) multiple_scattering_texture,
                                   IN(IrradianceTexture) irradiance_texture, Length r, Number mu, Number mu_s,
                                   Number nu, int scattering_order) {
-    vec3 zenith_direction = vec3(0.0, 0.0, 1.0);
     vec3 omega = vec3(sqrt(1.0 - mu * mu), 0.0, mu);
     Number sun_dir_x = omega.x == 0.0 ? 0.0 : (nu - mu * mu_s) / omega.x;
     Number sun_dir_y = sqrt(max(1.0 - sun_dir_x * sun_dir_x - mu_s * mu_s, 0.0));
@@ -802,6 +832,9 @@ Spectrum ComputeScatteringDensity(IN(AtmosphereParameters) atmosphere, IN(Transm
     const int SAMPLE_COUNT = 16;
     const Number dphi = PI / Number(SAMPLE_COUNT);
     const Number dtheta = PI / Number(SAMPLE_COUNT);
+    const Number cos_dphi = cos(dphi);
+    const Number sin_dphi = sin(dphi);
+    const int MAX_NU_SIZE = 16;
     // The phase functions are integrated on the same grid as the light and each
     // sum divided by the grid's integral of its phase function: the grid's cells
     // (11 degrees) are as wide as a Mie forward peak (g = 0.8), whose sum over them
@@ -814,6 +847,12 @@ Spectrum ComputeScatteringDensity(IN(AtmosphereParameters) atmosphere, IN(Transm
     Number mie_norm = 0.0;
     Number rayleigh_density = GetProfileDensity(atmosphere.rayleigh_density, r - atmosphere.bottom_radius);
     Number mie_density = GetProfileDensity(atmosphere.mie_density, r - atmosphere.bottom_radius);
+    bool single = scattering_order == 2;  // the previous order is single scattering (phase not folded in)
+    // The previous order on the current ring, slice by slice in nu: Rayleigh (or
+    // the multiple scattering table after order 2) and Mie.
+    Spectrum ring_a[MAX_NU_SIZE];
+    Spectrum ring_b[MAX_NU_SIZE];
+    Number nu_scale = 0.5 * Number(SCATTERING_TEXTURE_NU_SIZE - 1);
 
     for (int l = 0; l < SAMPLE_COUNT; ++l) {
         Number theta = (Number(l) + 0.5) * dtheta;
@@ -821,40 +860,76 @@ Spectrum ComputeScatteringDensity(IN(AtmosphereParameters) atmosphere, IN(Transm
         Number sin_theta = sin(theta);
         bool ray_r_theta_intersects_ground = RayIntersectsGround(atmosphere, r, cos_theta);
 
-        // Light reflected by the ground in this direction, if the ray hits it.
-        Length distance_to_ground = 0.0;
-        Spectrum transmittance_to_ground = Spectrum(0.0);
-        Spectrum ground_albedo = Spectrum(0.0);
-        if (ray_r_theta_intersects_ground) {
-            distance_to_ground = DistanceToBottomAtmosphereBoundary(atmosphere, r, cos_theta);
-            transmittance_to_ground =
-                GetTransmittance(atmosphere, transmittance_texture, r, cos_theta, distance_to_ground, true);
-            ground_albedo = atmosphere.ground_albedo;
+        vec4 uvwz = GetScatteringTextureUvwzFromRMuMuSNu(atmosphere, r, cos_theta, mu_s, -1.0,
+                                                         ray_r_theta_intersects_ground);
+        for (int k = 0; k < SCATTERING_TEXTURE_NU_SIZE; ++k) {
+            vec3 uvw = vec3((Number(k) + uvwz.y) / Number(SCATTERING_TEXTURE_NU_SIZE), uvwz.z, uvwz.w);
+            if (single) {
+                ring_a[k] = Spectrum(texture(single_rayleigh_scattering_texture, uvw));
+                ring_b[k] = Spectrum(texture(single_mie_scattering_texture, uvw));
+            } else {
+                ring_a[k] = Spectrum(texture(multiple_scattering_texture, uvw));
+            }
         }
 
-        for (int m = 0; m < 2 * SAMPLE_COUNT; ++m) {
-            Number phi = (Number(m) + 0.5) * dphi;
-            vec3 omega_i = vec3(cos(phi) * sin_theta, sin(phi) * sin_theta, cos_theta);
-            Number domega_i = dtheta * dphi * sin(theta);
+        // Light reflected by the ground in this direction, if the ray hits it:
+        // albedo / pi times the irradiance there, seen through the transmittance.
+        Length distance_to_ground = 0.0;
+        Length ground_point_radius = atmosphere.bottom_radius;
+        Spectrum ground_reflectance = Spectrum(0.0);
+        if (ray_r_theta_intersects_ground) {
+            distance_to_ground = DistanceToBottomAtmosphereBoundary(atmosphere, r, cos_theta);
+            ground_point_radius = sqrt(r * r + 2.0 * r * cos_theta * distance_to_ground +
+                                       distance_to_ground * distance_to_ground);
+            ground_reflectance =
+                GetTransmittance(atmosphere, transmittance_texture, r, cos_theta, distance_to_ground, true) *
+                atmosphere.ground_albedo * (1.0 / PI);
+        }
 
-            Number nu1 = dot(omega_s, omega_i);
-            Spectrum incident_radiance = GetScatteringOfOrder(
-                atmosphere, single_rayleigh_scattering_texture, single_mie_scattering_texture,
-                multiple_scattering_texture, r, omega_i.z, mu_s, nu1, ray_r_theta_intersects_ground,
-                scattering_order - 1);
+        Number domega_i = dtheta * dphi * sin_theta;
+        Number cos_phi = cos(0.5 * dphi);  // phi = (m + 0.5) dphi, stepped by a rotation
+        Number sin_phi = sin(0.5 * dphi);
+        for (int m = 0; m < SAMPLE_COUNT; ++m) {
+            // The directions at phi and -phi: omega_i = (cos phi sin theta, +-sin phi sin theta, cos theta).
+            Number x_i = cos_phi * sin_theta;
+            Number y_i = sin_phi * sin_theta;
+            Number cos_next = cos_phi * cos_dphi - sin_phi * sin_dphi;
+            sin_phi = sin_phi * cos_dphi + cos_phi * sin_dphi;
+            cos_phi = cos_next;
+            Number nu1_even = omega_s.x * x_i + omega_s.z * cos_theta;
+            Number nu1_odd = omega_s.y * y_i;
+            Spectrum incident_radiance = Spectrum(0.0);
+            for (int side = 0; side < 2; ++side) {
+                Number nu1 = side == 0 ? nu1_even + nu1_odd : nu1_even - nu1_odd;
+                // GetScatteringAtUvwz's interpolation between the nu slices, as hat
+                // weights over all of them (constant indices: the arrays stay in registers).
+                Number x = clamp((nu1 + 1.0) * nu_scale, Number(0.0), Number(SCATTERING_TEXTURE_NU_SIZE - 1));
+                Spectrum a = Spectrum(0.0);
+                Spectrum b = Spectrum(0.0);
+                for (int k = 0; k < SCATTERING_TEXTURE_NU_SIZE; ++k) {
+                    Number w = max(1.0 - abs(x - Number(k)), Number(0.0));
+                    a += ring_a[k] * w;
+                    if (single) b += ring_b[k] * w;
+                }
+                if (single) {
+                    incident_radiance += a * RayleighPhaseFunction(nu1) +
+                                         b * MiePhaseFunction(atmosphere.mie_phase_function_g, nu1);
+                } else {
+                    incident_radiance += a;
+                }
+                if (ray_r_theta_intersects_ground) {
+                    Number ground_mu_s = (r * mu_s + distance_to_ground * nu1) / ground_point_radius;
+                    incident_radiance += ground_reflectance * GetGroundIrradiance(irradiance_texture, ground_mu_s);
+                }
+            }
 
-            vec3 ground_normal = normalize(zenith_direction * r + omega_i * distance_to_ground);
-            Spectrum ground_irradiance =
-                GetIrradiance(atmosphere, irradiance_texture, atmosphere.bottom_radius, dot(ground_normal, omega_s));
-            incident_radiance += transmittance_to_ground * ground_albedo * (1.0 / PI) * ground_irradiance;
-
-            Number nu2 = dot(omega, omega_i);
+            Number nu2 = omega.x * x_i + omega.z * cos_theta;
             Number rayleigh_phase = RayleighPhaseFunction(nu2) * domega_i;
             Number mie_phase = MiePhaseFunction(atmosphere.mie_phase_function_g, nu2) * domega_i;
             rayleigh_sum += incident_radiance * rayleigh_phase;
             mie_sum += incident_radiance * mie_phase;
-            rayleigh_norm += rayleigh_phase;
-            mie_norm += mie_phase;
+            rayleigh_norm += 2.0 * rayleigh_phase;
+            mie_norm += 2.0 * mie_phase;
         }
     }
     return atmosphere.rayleigh_scattering * rayleigh_density * (rayleigh_sum / rayleigh_norm) +

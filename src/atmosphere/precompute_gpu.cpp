@@ -36,9 +36,11 @@ enum SamplerUnit : GLuint {
 constexpr double kTransmittanceCost = 3 * 501;
 constexpr double kDirectIrradianceCost = 2;
 constexpr double kSingleScatteringCost = 51 * 4;
-constexpr double kScatteringDensityCost = 16 * 32 * 5;
 constexpr double kIndirectIrradianceCost = 16 * 64 * 4;
 constexpr double kMultipleScatteringCost = 51 * 4;
+// 16 rings of 8 nu-slice lookups and 512 directions' arithmetic: measured at about
+// twice the multiple scattering pass (full tables, llvmpipe, 2026-12-02).
+constexpr double kScatteringDensityCost = 2 * kMultipleScatteringCost;
 constexpr double kElekTableCost = 4;
 
 gl::Texture makeTable2D(int width, int height, const char* label) {
@@ -248,7 +250,7 @@ gl::Program buildPass(const std::filesystem::path& root, const TableSizes& sizes
 }  // namespace
 
 GpuPrecompute::GpuPrecompute(const std::filesystem::path& shaderRoot, const TableSizes& sizes)
-    : sizes_(sizes),
+    : sizes_((checkScatteringNuSize(sizes), sizes)),
       transmittance_(buildPass(shaderRoot, sizes, "atmosphere transmittance", "atmosphere/precompute/transmittance.comp")),
       directIrradiance_(buildPass(shaderRoot, sizes, "atmosphere direct irradiance",
                                   "atmosphere/precompute/direct_irradiance.comp")),

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <atomic>
 #include <chrono>
+#include <stdexcept>
 #include <thread>
 
 namespace planet::atmosphere {
@@ -64,8 +65,16 @@ private:
 
 }  // namespace
 
+void checkScatteringNuSize(const TableSizes& sizes) {
+    if (sizes.scattering_nu < 1 || sizes.scattering_nu > kMaxScatteringNuSize)
+        throw std::invalid_argument("atmosphere tables: scattering_nu must be in [1, " +
+                                    std::to_string(kMaxScatteringNuSize) + "], got " +
+                                    std::to_string(sizes.scattering_nu));
+}
+
 ReferenceResult computeReferenceTables(const AtmosphereParameters& atmosphere, const TableSizes& sizes,
                                        int scatteringOrders, const ProgressFn& progress, int threads) {
+    checkScatteringNuSize(sizes);
     if (threads <= 0) threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
     Model model(sizes, /*precompute=*/true);
     ReferenceResult result;

@@ -32,6 +32,12 @@ struct ReferenceResult {
 
 using ProgressFn = std::function<void(const PrecomputeStep&)>;
 
+// The most nu slices ComputeScatteringDensity (functions.glsl, MAX_NU_SIZE) holds
+// for one ring of directions; both precomputations throw std::invalid_argument
+// for a larger TableSizes::scattering_nu (or one under 1).
+constexpr int kMaxScatteringNuSize = 16;
+void checkScatteringNuSize(const TableSizes& sizes);
+
 ReferenceResult computeReferenceTables(const AtmosphereParameters& atmosphere, const TableSizes& sizes,
                                        int scatteringOrders, const ProgressFn& progress = {}, int threads = 0);
 
