@@ -815,8 +815,8 @@ Spectrum ComputeIndirectIrradianceTexture(IN(AtmosphereParameters) atmosphere,
 //  - the phase functions depend on omega . omega_i, equal at phi and -phi: one
 //    evaluation serves both directions of a pair.
 // Same nodes, same weights: the result is the per-direction form's to rounding
-// (1e-14 in double; full GPU tables within 2.7e-6 of it), 2.3-2.9 times faster
-// on llvmpipe (docs/PERFORMANCE.md, 2026-12-02). MAX_NU_SIZE bounds
+// (1e-14 in double; full GPU tables within 2.7e-6 of it); on llvmpipe the pass
+// takes a third of the time, an order 2.3-2.5 times less (docs/PERFORMANCE.md, 2026-12-02). MAX_NU_SIZE bounds
 // SCATTERING_TEXTURE_NU_SIZE (checked in C++: kMaxScatteringNuSize, reference_tables.h).
 Spectrum ComputeScatteringDensity(IN(AtmosphereParameters) atmosphere, IN(TransmittanceTexture) transmittance_texture,
                                   IN(ScatteringTexture) single_rayleigh_scattering_texture,
