@@ -320,9 +320,9 @@ void Explorer::drawUi() {
     ImGui_ImplOpenGL3_NewFrame();
     ImGui_ImplGlfw_NewFrame();
     ImGui::NewFrame();
+    const atmosphere::Atmosphere& air = renderer_.atmosphere();
     if (showUi_) {
         drawProfilerPanel(renderer_.profiler(), rendererName_);
-        const atmosphere::Atmosphere& air = renderer_.atmosphere();
         if (drawSceneParams(session_.scene, air.rebuildProgress(), renderer_.cloudBakeProgress(),
                             air.refining() ? "refining tables" : "rebuilding tables"))
             acceptOrRevertEdit();
@@ -334,7 +334,7 @@ void Explorer::drawUi() {
         if (r.savePreset) savePreset();
     }
     drawShaderErrors(renderer_.shaderErrors());
-    drawStatusLine(refiningStatus(renderer_.atmosphere()), renderer_.atmosphere().rebuildProgress());
+    drawStatusLine(refiningStatus(air), air.rebuilding() ? air.rebuildProgress() : 0.0);  // 0 until it starts
     ImGui::Render();
     ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
 }
