@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <exception>
@@ -110,9 +111,14 @@ bool Atmosphere::stepJob() {
     const Clock::time_point start = Clock::now();
     const double period = lastUpdate_ ? std::chrono::duration<double>(start - *lastUpdate_).count() : 0.0;
     lastUpdate_ = start;
+    const double before = job_->progress();
     bool done = job_->step();
     while (!done && std::chrono::duration<double>(Clock::now() - start).count() < kChunkShareOfFrame * period)
         done = job_->step();
+    // A step of a full-size refinement lasts minutes on a software renderer: a line every tenth.
+    if (refining_ && !done && std::floor(10.0 * job_->progress()) > std::floor(10.0 * before))
+        logInfo("  refining: " + std::to_string(static_cast<int>(100.0 * job_->progress())) + " % (" +
+                job_->currentStep() + ")");
     return done;
 }
 
