@@ -266,36 +266,39 @@ Spectrum GetSkyRadianceToPointOfRay(IN(AtmosphereParameters) atmosphere, bool el
     // Sperlhofer 5.1.2: the table's two halves meet at the horizon, where the
     // difference of two large, nearly equal lookups is unreliable. Within EPS
     // of it, interpolate between rays just above and just below.
+    // Written as a loop of one or two samples, not as an `if` around a second lookup: a
+    // software renderer (llvmpipe) runs an `if` body for every pixel, masked, whether or
+    // not one takes it, but leaves a loop once no pixel of its group wants another turn.
+    // So the common ray costs one ScatteringBetween and only groups touching the horizon
+    // (|mu - mu_horizon| < EPS) pay for the second; a GPU does the same per warp. The
+    // sum (1 - a) S(mu_horizon - EPS) + a S(mu_horizon + EPS) is mix()'s formula, and a
+    // ray away from the horizon takes one sample at weight 1 (the unblended value).
     const Number EPS = 0.004;
     Area rho2 = ray.rho2;
     Number mu_horizon = -SafeSqrt(rho2) / r;  // not -sqrt(1 - (R / r)^2), which loses a low camera's altitude
     bool near_horizon = abs(mu - mu_horizon) < EPS;
-    Spectrum single_mie_scattering;
-    Spectrum scattering = ScatteringBetween(atmosphere, elek_table, transmittance_texture, scattering_texture,
-                                            single_mie_scattering_texture, r, rho2,
-                                            near_horizon ? mu_horizon - EPS : mu, mu_s, nu, d, transmittance,
-                                            single_mie_scattering);
-    if (near_horizon) {  // one more lookup, written once, so the shader holds two copies of it and not three
-        Number a = (mu - mu_horizon + EPS) / (2.0 * EPS);
-        Spectrum transmittance_above;
-        Spectrum mie_above;
-        Spectrum above = ScatteringBetween(atmosphere, elek_table, transmittance_texture, scattering_texture,
-                                           single_mie_scattering_texture, r, rho2, mu_horizon + EPS, mu_s, nu, d,
-                                           transmittance_above, mie_above);
-        scattering = mix(scattering, above, a);
-        single_mie_scattering = mix(single_mie_scattering, mie_above, a);
-        transmittance = mix(transmittance, transmittance_above, a);
+    Number a = (mu - mu_horizon + EPS) / (2.0 * EPS);
+    int samples = near_horizon ? 2 : 1;
+    Spectrum scattering = Spectrum(0.0);
+    Spectrum single_mie_scattering = Spectrum(0.0);
+    Spectrum transmittance_sum = Spectrum(0.0);
+    for (int i = 0; i < samples; ++i) {
+        // Below the horizon first: without the blend the one sample is mu itself.
+        Number mu_i = near_horizon ? (i == 0 ? mu_horizon - EPS : mu_horizon + EPS) : mu;
+        Number weight = near_horizon ? (i == 0 ? 1.0 - a : a) : Number(1.0);
+        Spectrum transmittance_i;
+        Spectrum mie_i;
+        Spectrum scattering_i = ScatteringBetween(atmosphere, elek_table, transmittance_texture, scattering_texture,
+                                                  single_mie_scattering_texture, r, rho2, mu_i, mu_s, nu, d,
+                                                  transmittance_i, mie_i);
+        if (shadow_length > Length(0.0))  // the whole segment's transmittance, blended as the rest
+            transmittance_i = GetTransmittanceRho2(atmosphere, transmittance_texture, rho2, r * mu_i, d_full,
+                                                   RayIntersectsGroundRho2(rho2, r * mu_i));
+        scattering = scattering + scattering_i * weight;
+        single_mie_scattering = single_mie_scattering + mie_i * weight;
+        transmittance_sum = transmittance_sum + transmittance_i * weight;
     }
-    if (shadow_length > Length(0.0)) {  // the whole segment's transmittance, blended as above
-        Number mu_t = near_horizon ? mu_horizon - EPS : mu;
-        transmittance = GetTransmittanceRho2(atmosphere, transmittance_texture, rho2, r * mu_t, d_full,
-                                             RayIntersectsGroundRho2(rho2, r * mu_t));
-        if (near_horizon)
-            transmittance = mix(transmittance,
-                                GetTransmittanceRho2(atmosphere, transmittance_texture, rho2, r * (mu_horizon + EPS),
-                                                     d_full, RayIntersectsGroundRho2(rho2, r * (mu_horizon + EPS))),
-                                (mu - mu_horizon + EPS) / (2.0 * EPS));
-    }
+    transmittance = transmittance_sum;
     // Sperlhofer 5.1.3: single Mie scattering is unreliable once the sun has set.
     single_mie_scattering = single_mie_scattering * smoothstep(Number(0.0), Number(0.01), mu_s);
     return ApplyPhaseFunctions(atmosphere, scattering, single_mie_scattering, nu) * NightFade(atmosphere, mu_s);
