@@ -329,7 +329,7 @@ TEST_F(RenderPathTest, TheExplorerPlaysAPathAsRenderRendersIt) {
     const auto render = test::runCommand(planet("render --path turn.toml --size 160x90 --out f_%d.png"));
     ASSERT_EQ(render.exitCode, 0) << render.output;
     const auto r = test::runCommand("cd '" + dir.string() + "' && XDG_CONFIG_HOME='" + (dir / "config").string() +
-                                    "' xvfb-run -a -s '-screen 0 640x480x24' '" PLANET_EXE
+                                    "' PLANET_TABLES=reduced xvfb-run -a -s '-screen 0 640x480x24' '" PLANET_EXE
                                     "' explore --no-panels --path turn.toml --size 160x90 --frames 3 --screenshot w.png");
     ASSERT_EQ(r.exitCode, 0) << r.output;
     EXPECT_TRUE(test::contains(r.output, "playing path 'turn': 9 frames")) << r.output;

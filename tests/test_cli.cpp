@@ -322,7 +322,7 @@ TEST_F(CliTest, WindowShowsTheSamePixelsAsTheStill) {
                       .exitCode,
                   0);
         const auto r = runCommand("cd '" + dir.string() + "' && XDG_CONFIG_HOME='" + (dir / "config").string() +
-                                  "' xvfb-run -a -s '-screen 0 640x480x24' '" PLANET_EXE
+                                  "' PLANET_TABLES=reduced xvfb-run -a -s '-screen 0 640x480x24' '" PLANET_EXE
                                   "' explore --no-panels --no-temporal --view " + view + " --size 160x90 --frames 3 --screenshot " +
                                   shot);
         ASSERT_EQ(r.exitCode, 0) << r.output;
@@ -346,7 +346,7 @@ TEST_F(CliTest, ExplorerWindowRunsUnderXvfbAndShowsPanels) {
     // against the still of the same view, at most 30 % of the pixels differ. The layout is
     // kept in the user's config folder ($XDG_CONFIG_HOME/planet/imgui.ini), not here.
     const std::string cmd = "cd '" + dir.string() + "' && XDG_CONFIG_HOME='" + (dir / "config").string() +
-                            "' xvfb-run -a -s '-screen 0 1400x900x24' '" PLANET_EXE
+                            "' PLANET_TABLES=reduced xvfb-run -a -s '-screen 0 1400x900x24' '" PLANET_EXE
                             "' explore --view space --size 1280x720 --frames 4 --screenshot window.png";
     const auto r = runCommand(cmd);
     ASSERT_EQ(r.exitCode, 0) << r.output;

@@ -15,7 +15,7 @@ struct CommonOptions {
     std::string view = "orbit";    // bookmark name under assets/views
     std::string size = "1280x720"; // WIDTHxHEIGHT
     bool glDebug = false;          // KHR_debug output (synchronous)
-    std::string tables = "auto";   // atmosphere table sizes: full, reduced, auto (reduced on software GL)
+    std::string tables = "auto";   // atmosphere table sizes: full, reduced, auto, or explicit (tables.h)
     double time = 0.0;             // the ocean's clock at the first frame, s
     bool noTemporal = false;       // render.temporal off: every pixel marched every frame
 };
@@ -68,6 +68,7 @@ struct SkyProbeOptions {
     std::string out;         // the same columns + radiance_rgb (1/sr) + transmittance_rgb
     bool reference = false;  // Model (double) on CPU reference tables instead of the GPU
     std::string cache;       // as PrecomputeOptions::cache
+    std::string against;     // a reference output CSV of the same rays: print the error (sky_accuracy.h)
 };
 
 struct BakeOptions {

@@ -5,8 +5,10 @@
 #include <cmath>
 #include <cstdlib>
 #include <iostream>
+#include <stdexcept>
 
 #include "app/commands.h"
+#include "atmosphere/tables.h"
 
 namespace {
 
@@ -44,8 +46,18 @@ void addCommon(CLI::App& cmd, planet::CommonOptions& o) {
         ->capture_default_str();
     cmd.add_option("--size", o.size, "Image size WIDTHxHEIGHT")->capture_default_str();
     cmd.add_option("--tables", o.tables,
-                   "Atmosphere table sizes: full, reduced, or auto (reduced on software renderers such as llvmpipe)")
-        ->check(CLI::IsMember({"auto", "full", "reduced"}))
+                   "Atmosphere table sizes: full, medium, reduced, auto (medium on software renderers such as llvmpipe, "
+                   "else full), or explicit RxMUxMU_SxNU[,TWxTH[,IWxIH]] (scattering r, mu, mu_s, nu; transmittance; "
+                   "irradiance); default: $PLANET_TABLES, else auto")
+        ->envname("PLANET_TABLES")
+        ->check([](const std::string& choice) -> std::string {
+            try {
+                planet::atmosphere::tableSizesFor(choice, "");
+                return {};
+            } catch (const std::invalid_argument& e) {
+                return e.what();
+            }
+        })
         ->capture_default_str();
     cmd.add_option("--time", o.time, "Clock of the first frame, s (the ocean's waves move with it)")
         ->check(finiteIn(-1e9, 1e9, "a finite number of seconds in [-1e9, 1e9]").name("SECONDS"))
@@ -155,6 +167,10 @@ int main(int argc, char** argv) {
     skyProbeCmd->add_flag("--reference", skyProbe.reference,
                           "Evaluate on the CPU (double) with CPU reference tables instead of the GPU (with clouds: "
                           "the same march compiled as C++, clouds/cloud_reference.h)");
+    skyProbeCmd->add_option("--against", skyProbe.against,
+                            "A reference output CSV of the same rays (e.g. from --reference --tables full): print "
+                            "the radiance error's median and worst, daylight and twilight/horizon rays apart")
+        ->check(CLI::ExistingFile);
     skyProbeCmd->add_option("--cache", skyProbe.cache,
                             "Table cache root (default: $PLANET_CACHE, else cache/atmosphere)");
 

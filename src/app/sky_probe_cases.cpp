@@ -4,6 +4,7 @@
 #include <charconv>
 #include <cmath>
 #include <cstdio>
+#include <iterator>
 
 #include "scene/toml_error.h"
 #include "util/file_util.h"
@@ -62,12 +63,16 @@ ProbeRow parseRow(const std::vector<std::string>& fields, const std::string& sou
 
 }  // namespace
 
-std::vector<ProbeRow> parseProbeCases(std::string_view csvText, const std::string& sourceName) {
-    std::string expectedHeader;
-    for (const char* c : kProbeInputColumns) expectedHeader += std::string(expectedHeader.empty() ? "" : ",") + c;
+namespace {
 
+// Calls row(fields, lineNo) for each data line of a CSV whose header is `columns`
+// and whose lines have that many fields.
+template <class RowFn>
+void forEachRow(std::string_view csvText, const std::string& sourceName, const std::vector<std::string>& columns,
+                RowFn row) {
+    std::string expectedHeader;
+    for (const std::string& c : columns) expectedHeader += (expectedHeader.empty() ? "" : ",") + c;
     bool sawHeader = false;
-    std::vector<ProbeRow> rows;
     int lineNo = 0;
     for (std::size_t start = 0; start < csvText.size();) {
         const std::size_t newline = csvText.find('\n', start);
@@ -86,14 +91,51 @@ std::vector<ProbeRow> parseProbeCases(std::string_view csvText, const std::strin
             sawHeader = true;
             continue;
         }
-        if (fields.size() != 4)
+        if (fields.size() != columns.size())
             throw InputError(sourceName, lineNo, "",
-                             "expected 4 columns (" + expectedHeader + "), found " + std::to_string(fields.size()));
-        rows.push_back(parseRow(fields, sourceName, lineNo));
+                             "expected " + std::to_string(columns.size()) + " columns (" + expectedHeader +
+                                 "), found " + std::to_string(fields.size()));
+        row(fields, lineNo);
     }
     if (!sawHeader)
         throw InputError(sourceName, 0, "", "empty file: expected the header '" + expectedHeader + "'");
+}
+
+std::vector<std::string> inputColumns() { return {std::begin(kProbeInputColumns), std::end(kProbeInputColumns)}; }
+
+}  // namespace
+
+std::vector<ProbeRow> parseProbeCases(std::string_view csvText, const std::string& sourceName) {
+    std::vector<ProbeRow> rows;
+    forEachRow(csvText, sourceName, inputColumns(),
+               [&](const std::vector<std::string>& fields, int lineNo) {
+                   rows.push_back(parseRow(fields, sourceName, lineNo));
+               });
     return rows;
+}
+
+std::vector<ProbeResultRow> parseProbeResults(std::string_view csvText, const std::string& sourceName) {
+    std::vector<std::string> columns = inputColumns();
+    for (const char* c : kProbeOutputColumns) columns.push_back(c);
+    std::vector<ProbeResultRow> rows;
+    forEachRow(csvText, sourceName, columns, [&](const std::vector<std::string>& fields, int lineNo) {
+        ProbeResultRow row{parseRow(fields, sourceName, lineNo), {}, {}};
+        for (int c = 0; c < 6; ++c) {
+            const std::string& f = fields[static_cast<std::size_t>(4 + c)];
+            double v = 0.0;
+            const auto [end, ec] = std::from_chars(f.data(), f.data() + f.size(), v);
+            if (f.empty() || ec != std::errc() || end != f.data() + f.size() || !std::isfinite(v) || v < 0.0)
+                throw InputError(sourceName, lineNo, kProbeOutputColumns[c],
+                                 "'" + f + "' is not a finite number >= 0");
+            (c < 3 ? row.radiance : row.transmittance)[c % 3] = v;
+        }
+        rows.push_back(row);
+    });
+    return rows;
+}
+
+std::vector<ProbeResultRow> readProbeResults(const std::filesystem::path& file) {
+    return parseProbeResults(readFile(file), file.string());
 }
 
 std::vector<ProbeRow> readProbeCases(const std::filesystem::path& file) {

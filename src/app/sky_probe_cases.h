@@ -15,10 +15,16 @@
 #include <string_view>
 #include <vector>
 
+#include <glm/glm.hpp>
+
 namespace planet {
 
 inline constexpr const char* kProbeInputColumns[4] = {"altitude_m", "sun_zenith_deg", "view_zenith_deg",
                                                       "view_azimuth_deg"};
+
+// The columns `planet sky-probe` adds after the input's.
+inline constexpr const char* kProbeOutputColumns[6] = {"radiance_r",      "radiance_g",      "radiance_b",
+                                                       "transmittance_r", "transmittance_g", "transmittance_b"};
 
 struct ProbeRow {
     std::string text[4];   // the input fields as written, echoed to the output
@@ -30,5 +36,17 @@ std::vector<ProbeRow> parseProbeCases(std::string_view csvText, const std::strin
 
 // Reads and parses a CSV file. Throws FileError when it cannot be read, InputError when malformed.
 std::vector<ProbeRow> readProbeCases(const std::filesystem::path& file);
+
+// A row of sky-probe's output: the input row, the radiance / solar irradiance (1/sr)
+// and the transmittance per channel.
+struct ProbeResultRow {
+    ProbeRow ray;
+    glm::dvec3 radiance, transmittance;
+};
+
+// Parses / reads sky-probe's output CSV (its header, 10 columns, finite values >= 0).
+// Throws InputError naming the line, FileError when the file cannot be read.
+std::vector<ProbeResultRow> parseProbeResults(std::string_view csvText, const std::string& sourceName);
+std::vector<ProbeResultRow> readProbeResults(const std::filesystem::path& file);
 
 }  // namespace planet

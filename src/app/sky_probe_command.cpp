@@ -46,6 +46,7 @@
 
 #include "app/commands.h"
 #include "app/session.h"
+#include "app/sky_accuracy.h"
 #include "app/sky_probe_cases.h"
 #include "atmosphere/parameters.h"
 #include "atmosphere/precompute_gpu.h"
@@ -72,7 +73,6 @@ using namespace atmosphere;
 
 namespace {
 
-constexpr const char* kOutputColumns = "radiance_r,radiance_g,radiance_b,transmittance_r,transmittance_g,transmittance_b";
 constexpr int kRowsPerDispatch = 1 << 16;  // GPU rows per chunk (progress and watchdog granularity)
 constexpr std::size_t kProgressRows = 100000;  // report progress for inputs at least this long
 
@@ -313,6 +313,13 @@ int runSkyProbe(const SkyProbeOptions& options) {
     if (options.in.empty()) throw InputError("--in: give the input CSV");
     if (options.out.empty()) throw InputError("--out: give the output CSV");
     const std::vector<ProbeRow> rows = readProbeCases(options.in);
+    std::vector<ProbeResultRow> against;
+    if (!options.against.empty()) {
+        against = readProbeResults(options.against);  // checked before any work
+        if (against.size() != rows.size())
+            throw InputError("--against " + options.against + " has " + std::to_string(against.size()) +
+                             " rays, --in " + std::to_string(rows.size()) + ": not the same rays");
+    }
     checkOutputsWritable({options.out});
     const DataPaths paths = findDataPaths(options.common.root);
     const NamedPreset preset = loadNamedPreset(paths, options.common.preset);  // rays in a local frame: no view
@@ -328,14 +335,16 @@ int runSkyProbe(const SkyProbeOptions& options) {
     const std::vector<ProbeResult> results =
         options.reference ? probeOnCpu(rows, scene, options) : probeOnGpu(rows, scene, options, paths);
 
+    std::vector<ProbeResultRow> got;
+    for (std::size_t i = 0; i < rows.size(); ++i)
+        got.push_back({rows[i], results[i].radiance / irradiance, results[i].transmittance});
     std::string csv;
     for (const char* c : kProbeInputColumns) csv += std::string(c) + ",";
-    csv += std::string(kOutputColumns) + "\n";
+    for (const char* c : kProbeOutputColumns) csv += std::string(c) + (c == kProbeOutputColumns[5] ? "\n" : ",");
     for (std::size_t i = 0; i < rows.size(); ++i) {
         for (const std::string& field : rows[i].text) csv += field + ",";
-        const glm::dvec3 perSr = results[i].radiance / irradiance;
-        for (int c = 0; c < 3; ++c) csv += csvNumber(perSr[c]) + ",";
-        for (int c = 0; c < 3; ++c) csv += csvNumber(results[i].transmittance[c]) + (c < 2 ? "," : "\n");
+        for (int c = 0; c < 3; ++c) csv += csvNumber(got[i].radiance[c]) + ",";
+        for (int c = 0; c < 3; ++c) csv += csvNumber(got[i].transmittance[c]) + (c < 2 ? "," : "\n");
     }
     writeFileAtomic(options.out, csv);
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -343,6 +352,13 @@ int runSkyProbe(const SkyProbeOptions& options) {
                 scene.clouds.enabled ? " through the clouds" : "", options.reference ? "the CPU (reference)" : "the GPU",
                 seconds,
                 fs::absolute(options.out).lexically_normal().c_str());
+    if (!against.empty()) {
+        // The csv's own rounding (9 digits), as a later comparison of the two files would see it.
+        const std::vector<ProbeResultRow> written = parseProbeResults(csv, options.out);
+        const double radiusM = makeAtmosphereParameters(scene).bottom_radius * 1000.0;
+        std::printf("against %s:\n%s\n", options.against.c_str(),
+                    describe(compareSkyProbes(written, against, radiusM), written).c_str());
+    }
     return 0;
 }
 
