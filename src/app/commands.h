@@ -27,6 +27,7 @@ struct ExploreOptions {
     bool noPanels = false;             // start with the panels hidden (F1 shows them)
     std::string headlessOut = "out/planet.png";  // still written when there is no display
     std::string path;                  // camera path to play (name under assets/paths or a file); P pauses
+    std::string renderScale = "auto";  // share of the window's width and height rendered (render_scale.h)
 };
 
 struct RenderOptions {

@@ -13,12 +13,15 @@
 #include <imgui_impl_opengl3.h>
 
 #include <chrono>
+#include <cstdio>
 #include <cstdlib>
 #include <iostream>
 #include <memory>
+#include <optional>
 
 #include "app/camera_controller.h"
 #include "app/panels.h"
+#include "app/render_scale.h"
 #include "app/session.h"
 #include "gl/context.h"
 #include "gl/debug.h"
@@ -183,7 +186,8 @@ public:
           rendererName_(gl::rendererDescription()),
           presetPath_("out/presets/" + session_.presetName + ".toml"),  // never the shipped preset by default
           lastValidScene_(session_.scene),
-          showUi_(!options.noPanels) {
+          showUi_(!options.noPanels),
+          renderScale_(parseRenderScale(options.renderScale)) {
         session_.scene.time_s = options.common.time;
         renderer_.setBackgroundBakes(true);  // a cloud rebake shows as progress in the Scene panel
         // A reset (a slider dragged, a jump) costs a reduced-rate frame and converges in 16; a
@@ -209,12 +213,13 @@ public:
 
 private:
     void handleKeys();
-    void drawUi();
+    void drawUi(glm::ivec2 window);
     void acceptOrRevertEdit();
     void jumpToView(std::size_t index);
     void savePreset();
     void pollShaders();
     void followPath();
+    glm::ivec2 frameSizeFor(glm::ivec2 window);
 
     const ExploreOptions& options_;
     GLFWwindow* window_;
@@ -237,6 +242,8 @@ private:
     int pathFrame_ = 0;
     int pathFrames_ = 0;
     bool pathPlaying_ = false;
+    std::optional<double> renderScale_;  // nullopt: auto (render_scale.h)
+    glm::ivec2 frameSize_{0};            // the last frame's size, to log a change once
 };
 
 void Explorer::handleKeys() {
@@ -271,6 +278,26 @@ void Explorer::followPath() {
         pathPlaying_ = false;
         logInfo("path '" + path_->file().name + "' ended (P plays it again)");
     }
+}
+
+// The frame's size for a window of `window` pixels at the render scale; logged when it changes
+// (the first frame, a resize, the panel's slider): a new size also restarts the history.
+glm::ivec2 Explorer::frameSizeFor(glm::ivec2 window) {
+    const double scale = renderScaleFor(renderScale_, rendererName_, window);
+    const glm::ivec2 size = scaledSize(window, scale);
+    if (size != frameSize_) {
+        frameSize_ = size;
+        std::string line = "the frame is " + std::to_string(size.x) + "x" + std::to_string(size.y);
+        if (size != window) {
+            char scaleText[16];
+            std::snprintf(scaleText, sizeof scaleText, "%.3g", scale);
+            line += ", shown at " + std::to_string(window.x) + "x" + std::to_string(window.y) + " (render scale " +
+                    scaleText + (renderScale_ ? "" : ", auto on a software renderer; --render-scale 1 for every pixel") +
+                    ")";
+        }
+        logInfo(line);
+    }
+    return size;
 }
 
 void Explorer::pollShaders() {
@@ -316,13 +343,14 @@ void Explorer::acceptOrRevertEdit() {
     logWarning(status_);
 }
 
-void Explorer::drawUi() {
+void Explorer::drawUi(glm::ivec2 window) {
     ImGui_ImplOpenGL3_NewFrame();
     ImGui_ImplGlfw_NewFrame();
     ImGui::NewFrame();
     const atmosphere::Atmosphere& air = renderer_.atmosphere();
     if (showUi_) {
-        drawProfilerPanel(renderer_.profiler(), rendererName_);
+        RenderScaleUi scale{renderScale_, renderScaleFor(renderScale_, rendererName_, window), frameSize_};
+        drawProfilerPanel(renderer_.profiler(), rendererName_, &scale);
         if (drawSceneParams(session_.scene, air.rebuildProgress(), renderer_.cloudBakeProgress(),
                             air.refining() ? "refining tables" : "rebuilding tables"))
             acceptOrRevertEdit();
@@ -368,12 +396,13 @@ void Explorer::run() {
         // work (render.temporal; --no-temporal renders what a one-sample still shows). A path
         // plays as `render --path` renders it.
         renderer_.setTemporalAntialiasing(session_.scene.render.temporal && !pathPlaying_);
-        renderer_.render(session_.scene, session_.camera, size, [&] {
-            glBlitNamedFramebuffer(renderer_.targets().ldrFramebuffer(), 0, 0, 0, size.x, size.y, 0, 0, size.x,
-                                   size.y, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+        const glm::ivec2 rendered = frameSizeFor(size);
+        renderer_.render(session_.scene, session_.camera, rendered, [&] {
+            glBlitNamedFramebuffer(renderer_.targets().ldrFramebuffer(), 0, 0, 0, rendered.x, rendered.y, 0, 0, size.x,
+                                   size.y, GL_COLOR_BUFFER_BIT, rendered == size ? GL_NEAREST : GL_LINEAR);
             glBindFramebuffer(GL_FRAMEBUFFER, 0);
             glViewport(0, 0, size.x, size.y);
-            drawUi();
+            drawUi(size);
         });
         const bool lastFrame = options_.frames > 0 && frame + 1 >= options_.frames;
         if (screenshotRequested_ || (lastFrame && !options_.screenshot.empty())) {

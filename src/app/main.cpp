@@ -8,6 +8,7 @@
 #include <stdexcept>
 
 #include "app/commands.h"
+#include "app/render_scale.h"
 #include "atmosphere/tables.h"
 
 namespace {
@@ -82,6 +83,19 @@ int main(int argc, char** argv) {
     exploreCmd->add_option("--screenshot", explore.screenshot, "Write a PNG of the window, panels included, at the end")
         ->check(kPngFile);
     exploreCmd->add_flag("--no-panels", explore.noPanels, "Start with the panels hidden (F1 toggles them)");
+    exploreCmd->add_option("--render-scale", explore.renderScale,
+                           "Share of the window's width and height the frame is rendered at, shown scaled up: 0.1-1, "
+                           "or auto (1 on a GPU; on a software renderer such as llvmpipe, about 320x180 pixels, so "
+                           "the window stays interactive). The Frame time panel changes it live")
+        ->check([](const std::string& choice) -> std::string {
+            try {
+                planet::parseRenderScale(choice);
+                return {};
+            } catch (const std::invalid_argument& e) {
+                return e.what();
+            }
+        })
+        ->capture_default_str();
     exploreCmd->add_option("--path", explore.path,
                            "Play a camera path (name under assets/paths or a file), one path frame (1 / fps) per "
                            "window frame, as planet render --path renders it; P pauses and resumes, the camera is "

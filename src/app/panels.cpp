@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "app/render_scale.h"
 #include "ocean/ocean_gpu.h"
 #include "ocean/ocean_params_table.h"
 #include "ocean/wave_spectrum.h"
@@ -108,9 +109,29 @@ double panelCoverage(const std::vector<PanelPlacement>& layout, float w, float h
     return static_cast<double>(count) / static_cast<double>(covered.size());
 }
 
-void drawProfilerPanel(const Profiler& profiler, const std::string& renderer) {
+namespace {
+
+// A slider for the share of the window rendered (each new size restarts the frame's
+// history), and a button back to auto.
+void renderScaleRow(RenderScaleUi& scale) {
+    float value = static_cast<float>(scale.effective);
+    ImGui::SetNextItemWidth(140.0f);
+    if (ImGui::SliderFloat("render scale", &value, static_cast<float>(kMinRenderScale), 1.0f, "%.2f"))
+        scale.chosen = std::clamp(static_cast<double>(value), kMinRenderScale, 1.0);
+    ImGui::SameLine();
+    ImGui::TextDisabled("%dx%d%s", scale.frame.x, scale.frame.y, scale.chosen ? "" : " (auto)");
+    if (scale.chosen) {
+        ImGui::SameLine();
+        if (ImGui::SmallButton("auto")) scale.chosen.reset();
+    }
+}
+
+}  // namespace
+
+void drawProfilerPanel(const Profiler& profiler, const std::string& renderer, RenderScaleUi* scale) {
     placeOnFirstUse("Frame time");
     if (!ImGui::Begin("Frame time")) return ImGui::End();
+    if (scale) renderScaleRow(*scale);
     const double cpu = profiler.frameCpuMs().median();
     ImGui::Text("%.1f FPS   frame CPU %.2f ms   waited %.2f ms   GPU %.2f ms", ImGui::GetIO().Framerate, cpu,
                 profiler.frameWaitMs().median(), profiler.frameGpuMs().median());

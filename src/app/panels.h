@@ -2,8 +2,11 @@
 // state it is given and reports what the user changed; none owns state.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
+
+#include <glm/vec2.hpp>
 
 #include "app/camera_controller.h"
 #include "app/views.h"
@@ -27,8 +30,18 @@ std::vector<PanelPlacement> initialPanelLayout(float displayWidth, float display
 double panelCoverage(const std::vector<PanelPlacement>& layout, float displayWidth, float displayHeight,
                      float titleHeight);
 
-// Frame time: FPS, frame GPU/CPU graph, and a per-pass min/median/max table.
-void drawProfilerPanel(const Profiler& profiler, const std::string& renderer);
+// The explorer's render scale (app/render_scale.h) as the Frame time panel shows it:
+// `chosen` (nullopt: auto) is what the slider and its Auto button change; `effective` the
+// scale in use and `frame` the frame's size, shown beside it.
+struct RenderScaleUi {
+    std::optional<double>& chosen;
+    double effective = 1.0;
+    glm::ivec2 frame{0};
+};
+
+// Frame time: FPS, frame GPU/CPU graph, and a per-pass min/median/max table; with `scale`,
+// the render scale's slider too.
+void drawProfilerPanel(const Profiler& profiler, const std::string& renderer, RenderScaleUi* scale = nullptr);
 
 // One widget per row of the parameter table, grouped by section. Returns true
 // when a value changed (already clamped to its valid range). While the
