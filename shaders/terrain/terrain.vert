@@ -1,5 +1,25 @@
-// Terrain: one vertex per grid point; the tessellation stages do the rest.
+// Terrain: one vertex per grid point. Its direction (grid.glsl, in double) and height
+// (height.glsl) are evaluated here, once per grid point, for the control stage's culling and
+// levels (terrain.tesc): a grid point is a corner of up to four patches, and the control
+// stage used to evaluate all four corners of every patch itself. The evaluation stage
+// (terrain.tese) still evaluates its own points, the corners included, so the mesh is what
+// it was, bit for bit.
+#include "common/frame_uniforms.glsl"
+#include "terrain/grid.glsl"
+#include "noise/simplex.glsl"
+#include "terrain/height.glsl"
+#include "terrain/terrain_block.glsl"
+
 layout(location = 0) in vec2 gridCoordinate;
 out vec2 vGrid;
+out vec3 vGround;  // m, camera-relative (world axes): the point on the terrain
+out vec3 vLow;     // m, camera-relative: the lowest sea floor below it
+out vec3 vHigh;    // m, camera-relative: the highest possible terrain above it
 
-void main() { vGrid = gridCoordinate; }
+void main() {
+    vGrid = gridCoordinate;
+    dvec3 d = gridDirection(gridCoordinate);
+    vGround = cameraRelative(d, gridSphereRadius() + double(terrainHeight(vec3(d), terrainShape, uContinents)));
+    vLow = cameraRelative(d, gridSphereRadius() - double(terrainShape.oceanDepth));
+    vHigh = cameraRelative(d, gridSphereRadius() + double(terrainShape.maxHeight));
+}

@@ -2,6 +2,8 @@
 
 #include "render/bindings.h"
 
+#include <algorithm>
+#include <cstdlib>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -9,6 +11,14 @@
 #include "grid/projected_grid.h"
 
 namespace planet {
+
+void GridMesh::setOrder(PatchOrder order) {
+    if (order == order_) return;
+    order_ = order;
+    const int size = size_;
+    size_ = 0;
+    if (size > 0) resize(size);
+}
 
 void GridMesh::resize(int size) {
     if (size == size_) return;
@@ -19,8 +29,29 @@ void GridMesh::resize(int size) {
     std::vector<GLuint> patches;
     patches.reserve(static_cast<std::size_t>(size - 1) * (size - 1) * 4);
     const auto at = [size](int x, int y) { return static_cast<GLuint>(y * size + x); };
-    for (int j = 0; j + 1 < size; ++j)
-        for (int i = 0; i + 1 < size; ++i) patches.insert(patches.end(), {at(i, j), at(i + 1, j), at(i + 1, j + 1), at(i, j + 1)});
+    const auto add = [&](int i, int j) { patches.insert(patches.end(), {at(i, j), at(i + 1, j), at(i + 1, j + 1), at(i, j + 1)}); };
+    const int n = size - 1;  // patches per side
+    if (order_ == PatchOrder::Rows) {
+        for (int j = 0; j < n; ++j)
+            for (int i = 0; i < n; ++i) add(i, j);
+    } else {
+        // Blocks of 8 x 8 patches, ring by ring from the centre (a block's ring: the larger
+        // of its centre's offsets from the grid's centre, in blocks), each block row by row:
+        // a block's 9 x 9 corners stay in llvmpipe's vertex cache, so the vertex stage runs
+        // 1.18 times per grid point at the ground view (1.38 in row order; rings of single patches took 1.9).
+        constexpr int kBlock = 8;
+        const int blocks = (n + kBlock - 1) / kBlock;
+        std::vector<std::vector<glm::ivec2>> rings(static_cast<std::size_t>(blocks));
+        for (int bj = 0; bj < blocks; ++bj)
+            for (int bi = 0; bi < blocks; ++bi) {
+                const int ring = std::max(std::abs(2 * bi - (blocks - 1)), std::abs(2 * bj - (blocks - 1))) / 2;
+                rings[static_cast<std::size_t>(ring)].push_back({bi, bj});
+            }
+        for (const std::vector<glm::ivec2>& ring : rings)
+            for (glm::ivec2 b : ring)
+                for (int j = b.y * kBlock; j < std::min(n, (b.y + 1) * kBlock); ++j)
+                    for (int i = b.x * kBlock; i < std::min(n, (b.x + 1) * kBlock); ++i) add(i, j);
+    }
     vertices_ = gl::Buffer();
     indices_ = gl::Buffer();
     vertexArray_ = gl::VertexArray();
@@ -49,7 +80,7 @@ GridBlock makeGridBlock(const GridProjection& projection, int exponent, const gl
     return b;
 }
 
-GridMesh::GridMesh(std::string label) : label_(std::move(label)) {
+GridMesh::GridMesh(std::string label, PatchOrder order) : label_(std::move(label)), order_(order) {
     glNamedBufferStorage(block_.id(), sizeof(GridBlock), nullptr, GL_DYNAMIC_STORAGE_BIT);
     block_.label((label_ + " GridBlock").c_str());
 }

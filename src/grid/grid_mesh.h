@@ -31,12 +31,20 @@ static_assert(offsetof(GridBlock, cameraPositionAndRadius) == 96 && offsetof(Gri
 GridBlock makeGridBlock(const GridProjection& projection, int exponent, const glm::dvec3& cameraPosition,
                         double radius);
 
+// The order the patches are drawn in. Rows: row by row. NearFirst: ring by ring (of 8 x 8 patch blocks) outwards
+// from the grid's centre, the point below the grid's projection camera (Eq. 2-4), which
+// stays within a few percent of its altitude of the camera: near ground is drawn before the
+// ground it hides, so the depth test rejects hidden fragments before they are shaded.
+// Opaque passes draw the same pixels in either order (the nearest fragment wins).
+enum class PatchOrder { Rows, NearFirst };
+
 class GridMesh {
 public:
-    explicit GridMesh(std::string label);
+    explicit GridMesh(std::string label, PatchOrder order = PatchOrder::Rows);
 
-    // Rebuilds the buffers when the size changed; size in [2, 4096].
+    // Rebuilds the buffers when the size or the order changed; size in [2, 4096].
     void resize(int size);
+    void setOrder(PatchOrder order);
     // Uploads the grid's projection (the prepare step).
     void setProjection(const GridBlock& block);
     // Binds the grid's block at BLOCK_GRID and draws the patches (GL_PATCHES, 4 vertices
@@ -49,6 +57,7 @@ private:
     gl::Buffer vertices_;
     gl::Buffer indices_;
     gl::Buffer block_;  // GridBlock
+    PatchOrder order_;
     int size_ = 0;
     GLsizei indexCount_ = 0;
 };

@@ -143,6 +143,7 @@ public:
     // Count the sky pass's cloud march steps from the next frame on (planet bench).
     void setCloudStatistics(bool on) { clouds_.setStatistics(on); }
     OceanPass& ocean() { return ocean_; }
+    TerrainPass& terrain() { return terrain_; }
     // What a reduced-rate frame without history does: march at full rate (true, the default:
     // stills and sequences start exact) or reconstruct from its sparse samples alone (the
     // explorer: a reset costs no more than any other frame, and converges in 16 frames).

@@ -1,5 +1,7 @@
 #include "terrain/terrain_pass.h"
 
+#include <string_view>
+
 #include "render/bindings.h"
 #include "terrain/detail_texture.h"
 #include "terrain/terrain_block.h"
@@ -36,12 +38,64 @@ void TerrainPass::prepare(const Scene& scene, const Camera& camera, const noise:
     if (detail_) glBindTextureUnit(binding::UNIT_TERRAIN_DETAIL, detail_->id());
 }
 
-void TerrainPass::draw() const {
+namespace {
+
+bool pipelineStatistics() {
+    GLint major = 0, minor = 0;
+    glGetIntegerv(GL_MAJOR_VERSION, &major);
+    glGetIntegerv(GL_MINOR_VERSION, &minor);
+    if (major > 4 || (major == 4 && minor >= 6)) return true;
+    GLint count = 0;
+    glGetIntegerv(GL_NUM_EXTENSIONS, &count);
+    for (GLint i = 0; i < count; ++i)
+        if (std::string_view(reinterpret_cast<const char*>(glGetStringi(GL_EXTENSIONS, static_cast<GLuint>(i)))) ==
+            "GL_ARB_pipeline_statistics_query")
+            return true;
+    return false;
+}
+
+long long queryResult(GLuint query) {
+    GLuint64 count = 0;
+    glGetQueryObjectui64v(query, GL_QUERY_RESULT, &count);
+    return static_cast<long long>(count);
+}
+
+}  // namespace
+
+void TerrainPass::draw() {
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_GREATER);  // reversed-Z
     glDepthMask(GL_TRUE);
     glUseProgram(program_.id());
+    const bool stages = statistics_ && pipelineStatistics();
+    if (statistics_) glBeginQuery(GL_PRIMITIVES_GENERATED, primitives_.id());
+    if (stages) {
+        glBeginQuery(GL_VERTEX_SHADER_INVOCATIONS, vertices_.id());
+        glBeginQuery(GL_CLIPPING_OUTPUT_PRIMITIVES, clipped_.id());
+        glBeginQuery(GL_TESS_CONTROL_SHADER_PATCHES, patches_.id());
+        glBeginQuery(GL_TESS_EVALUATION_SHADER_INVOCATIONS, evaluations_.id());
+        glBeginQuery(GL_FRAGMENT_SHADER_INVOCATIONS, fragments_.id());
+    }
     mesh_.draw();
+    if (stages) {
+        glEndQuery(GL_VERTEX_SHADER_INVOCATIONS);
+        glEndQuery(GL_CLIPPING_OUTPUT_PRIMITIVES);
+        glEndQuery(GL_TESS_CONTROL_SHADER_PATCHES);
+        glEndQuery(GL_TESS_EVALUATION_SHADER_INVOCATIONS);
+        glEndQuery(GL_FRAGMENT_SHADER_INVOCATIONS);
+    }
+    if (statistics_) {
+        glEndQuery(GL_PRIMITIVES_GENERATED);
+        lastStatistics_ = Statistics{};
+        lastStatistics_.primitives = queryResult(primitives_.id());
+        if (stages) {
+            lastStatistics_.vertices = queryResult(vertices_.id());
+            lastStatistics_.clipped = queryResult(clipped_.id());
+            lastStatistics_.patches = queryResult(patches_.id());
+            lastStatistics_.evaluations = queryResult(evaluations_.id());
+            lastStatistics_.fragments = queryResult(fragments_.id());
+        }
+    }
     glDisable(GL_DEPTH_TEST);
 }
 

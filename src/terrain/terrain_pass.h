@@ -27,6 +27,15 @@
 
 namespace planet {
 
+// A query name from glGenQueries, its object made at the first glBeginQuery: Mesa's 4.5
+// contexts refuse glCreateQueries for ARB_pipeline_statistics_query's targets, which
+// glBeginQuery takes.
+struct GenQueryKind {
+    static constexpr GLenum labelNamespace = GL_QUERY;
+    static GLuint create() { GLuint n = 0; glGenQueries(1, &n); return n; }
+    static void destroy(GLuint n) { glDeleteQueries(1, &n); }
+};
+
 class TerrainPass {
 public:
     explicit TerrainPass(const gl::ShaderSources& sources);
@@ -36,17 +45,41 @@ public:
     // Also the TerrainNearBlock, from the CPU copy of the continents map the GPU samples.
     void prepare(const Scene& scene, const Camera& camera, const noise::CubeMap& continents);
     // Draws into the bound G-buffer (depth test on, reversed-Z).
-    void draw() const;
+    void draw();
     gl::HotProgram& program() { return program_; }
+
+    // What the pass's stages did in the last drawn frame, counted while setStatistics(true)
+    // (read back at once: tests, profiling). -1 where not counted: the three invocation
+    // counts need GL 4.6 or ARB_pipeline_statistics_query (llvmpipe has it).
+    struct Statistics {
+        long long primitives = -1;  // triangles the tessellation emitted (GL_PRIMITIVES_GENERATED)
+        long long vertices = -1;    // vertex-stage invocations (one height each)
+        long long clipped = -1;     // triangles out of clipping: those at least partly in the view
+        long long patches = -1;     // control-stage patches (each its four corners' heights)
+        long long evaluations = -1; // evaluation-stage invocations (one height each)
+        long long fragments = -1;   // fragment-stage invocations
+    };
+    void setStatistics(bool on) { statistics_ = on; }
+    // The patches' draw order (grid/grid_mesh.h; NearFirst by default). Tests compare.
+    void setPatchOrder(PatchOrder order) { mesh_.setOrder(order); }
+    const Statistics& lastStatistics() const { return lastStatistics_; }
 
 private:
     gl::HotProgram program_;
-    GridMesh mesh_{"terrain"};
+    GridMesh mesh_{"terrain", PatchOrder::NearFirst};
     gl::Buffer block_;      // TerrainBlock
     gl::Buffer nearBlock_;  // TerrainNear (terrain/height.h), every frame
     std::optional<gl::Texture> detail_;  // terrain/detail_texture.h, baked when terrain.detail is first on (~0.1 s)
     GridParams grid_;
     GridAnchor anchor_;
+    bool statistics_ = false;
+    Statistics lastStatistics_;
+    gl::Query primitives_{GL_PRIMITIVES_GENERATED};
+    gl::GlObject<GenQueryKind> vertices_;
+    gl::GlObject<GenQueryKind> clipped_;
+    gl::GlObject<GenQueryKind> patches_;
+    gl::GlObject<GenQueryKind> evaluations_;
+    gl::GlObject<GenQueryKind> fragments_;
 };
 
 }  // namespace planet

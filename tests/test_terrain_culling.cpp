@@ -1,0 +1,84 @@
+// Issue 15: the terrain at the ground view does no work twice and draws near ground first.
+// The control stage takes its corners' points from the vertex stage, which evaluates each
+// grid point's height once (shaders/terrain/terrain.vert, terrain.tesc), instead of four
+// heights per patch; the patches are drawn ring by ring from the grid's centre outwards
+// (grid/grid_mesh.h PatchOrder::NearFirst), so the depth test rejects hidden ground before it
+// is shaded. Neither changes a pixel. The stage counts are TerrainPass::Statistics
+// (GL pipeline statistics queries).
+#include <cstdio>
+#include <fstream>
+#include <regex>
+#include <sstream>
+
+#include "app/session.h"
+#include "gl_test_support.h"
+#include "render/readback.h"
+#include "render/renderer.h"
+
+using namespace planet;
+
+namespace {
+
+class TerrainCulling : public test::GLTest {
+protected:
+    void SetUp() override {
+        GLTest::SetUp();
+        renderer = std::make_unique<Renderer>(test::repoPaths().shaders(), atmosphere::TableSizes::reduced());
+    }
+    // One frame of `view` at full rate; the terrain pass's counts, and the HDR image.
+    TerrainPass::Statistics render(const std::string& view, glm::ivec2 size, PatchOrder order, ImageRGBAF& image) {
+        Session s = loadSession(test::repoPaths(), "earth", view);
+        s.scene.render.temporal = false;
+        renderer->terrain().setStatistics(true);
+        renderer->terrain().setPatchOrder(order);
+        renderer->render(s.scene, s.camera, size);
+        image = readTextureRGBAF(renderer->targets().hdr(), size.x, size.y);
+        return renderer->terrain().lastStatistics();
+    }
+    std::unique_ptr<Renderer> renderer;
+};
+
+// A shader's text without its comments.
+std::string shaderCode(const std::string& name) {
+    std::ifstream in(test::repoPaths().shaders() / name);
+    std::stringstream text;
+    text << in.rdbuf();
+    return std::regex_replace(text.str(), std::regex("//[^\n]*"), "");
+}
+
+}  // namespace
+
+TEST_F(TerrainCulling, SamePixelsInEitherPatchOrder) {
+    const glm::ivec2 size{160, 90};
+    for (const std::string view : {"ground", "beach", "orbit"}) {
+        ImageRGBAF rows, near;
+        const TerrainPass::Statistics a = render(view, size, PatchOrder::Rows, rows);
+        const TerrainPass::Statistics b = render(view, size, PatchOrder::NearFirst, near);
+        ASSERT_EQ(rows.pixels.size(), near.pixels.size());
+        std::size_t differing = 0;
+        for (std::size_t i = 0; i < rows.pixels.size(); ++i) differing += rows.pixels[i] != near.pixels[i] ? 1 : 0;
+        std::printf("%-6s %lld primitives (%lld in view), %lld patches, vertex stage %lld rows / %lld near first, "
+                    "evaluation stage %lld, fragments %lld; %zu values differ\n",
+                    view.c_str(), b.primitives, b.clipped, b.patches, a.vertices, b.vertices, b.evaluations,
+                    b.fragments, differing);
+        EXPECT_EQ(differing, 0u) << view << ": the patch order changed the picture";
+        EXPECT_EQ(a.primitives, b.primitives) << view;
+    }
+}
+
+// The heights behind the levels and the culling are evaluated once per grid point: the
+// control stage evaluates none, and the vertex stage runs about once per grid point (vertex
+// reuse), not once per patch corner. The ground view at 320x180: 100 x 100 grid points,
+// 9801 patches; before, 4 x 9801 = 39204 heights in the control stage.
+TEST_F(TerrainCulling, HeightsOncePerGridPointAtTheGround) {
+    EXPECT_EQ(shaderCode("terrain/terrain.tesc").find("terrainHeight"), std::string::npos)
+        << "the control stage evaluates heights again";
+    EXPECT_NE(shaderCode("terrain/terrain.vert").find("terrainHeight("), std::string::npos);
+    ImageRGBAF image;
+    const TerrainPass::Statistics st = render("ground", {320, 180}, PatchOrder::NearFirst, image);
+    std::printf("ground 320x180: %lld vertex invocations, %lld patches, %lld evaluations, %lld primitives\n",
+                st.vertices, st.patches, st.evaluations, st.primitives);
+    if (st.vertices < 0) GTEST_SKIP() << "no pipeline statistics queries";
+    EXPECT_EQ(st.patches, 99 * 99);
+    EXPECT_LE(st.vertices, 13000) << "the vertex stage's results are not reused between patches";
+}
