@@ -6,7 +6,11 @@
 
 #include <cmath>
 #include <cstdlib>
+#include <filesystem>
+#include <fstream>
 #include <memory>
+#include <sstream>
+#include <string>
 
 #include "app/session.h"
 #include "gl/context.h"
@@ -45,6 +49,27 @@ inline bool allFinite(const ImageRGBAF& image) {
 
 inline const float* pixelAt(const ImageRGBAF& image, int x, int y) {
     return &image.pixels[(static_cast<std::size_t>(y) * image.width + x) * 4];
+}
+
+// A copy of the repository's shader tree in a temporary folder named `name`, with `from`
+// replaced by `to` in the shader `file` (e.g. a #define switch turned off), for a test that
+// renders a scene with and without one piece. Fails the test when `from` is not in the file.
+inline std::filesystem::path shadersWith(const std::string& name, const std::string& file, const std::string& from,
+                                         const std::string& to) {
+    namespace fs = std::filesystem;
+    const fs::path root = fs::temp_directory_path() / name;
+    fs::remove_all(root);
+    fs::create_directories(root);
+    fs::copy(repoPaths().shaders(), root / "shaders", fs::copy_options::recursive);
+    const fs::path path = root / "shaders" / file;
+    std::stringstream text;
+    text << std::ifstream(path).rdbuf();
+    std::string source = text.str();
+    const std::size_t at = source.find(from);
+    EXPECT_NE(at, std::string::npos) << "'" << from << "' is gone from " << path;
+    if (at != std::string::npos) source.replace(at, from.size(), to);
+    std::ofstream(path) << source;
+    return root / "shaders";
 }
 
 }  // namespace planet::test

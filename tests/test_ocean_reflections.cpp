@@ -71,20 +71,8 @@ Session mountainLake() {
 
 // The shader tree with the screen-space reflections compiled out, in a temporary folder.
 fs::path shadersWithoutReflections() {
-    const fs::path root = fs::temp_directory_path() / "planet_test_ssr_off";
-    fs::remove_all(root);
-    fs::create_directories(root);
-    fs::copy(test::repoPaths().shaders(), root / "shaders", fs::copy_options::recursive);
-    const fs::path file = root / "shaders" / "ocean" / "screen_space_reflections.glsl";
-    std::stringstream text;
-    text << std::ifstream(file).rdbuf();
-    std::string source = text.str();
-    const std::string on = "#define OCEAN_SCREEN_SPACE_REFLECTIONS 1";
-    const std::size_t at = source.find(on);
-    EXPECT_NE(at, std::string::npos) << "the switch is gone from " << file;
-    if (at != std::string::npos) source.replace(at, on.size(), "#define OCEAN_SCREEN_SPACE_REFLECTIONS 0");
-    std::ofstream(file) << source;
-    return root / "shaders";
+    return test::shadersWith("planet_test_ssr_off", "ocean/screen_space_reflections.glsl",
+                             "#define OCEAN_SCREEN_SPACE_REFLECTIONS 1", "#define OCEAN_SCREEN_SPACE_REFLECTIONS 0");
 }
 
 class OceanReflections : public test::GLTest {

@@ -24,10 +24,14 @@
 //                               terrain's (terrain/terrain_shadow.glsl, preset
 //                               terrain.shadows) in programs that define
 //                               SUN_VISIBILITY_TERRAIN before including this file (the
-//                               surface light); every sun irradiance above uses it. The
-//                               others (the sky passes' sea surface above a diver, the sea,
-//                               the probes) and the cloud march do not pay for the march:
+//                               surface light, the sea); every sun irradiance above uses it.
+//                               The others (the sky passes' sea surface above a diver, the
+//                               probes) and the cloud march do not pay for the march:
 //                               software renderers run it even in a branch not taken.
+//                               TerrainSunVisibilityAbove starts the terrain's march at a
+//                               height (the sea's surface over the sea floor); the
+//                               *Unshadowed irradiances leave the visibility out for a
+//                               caller that forms it once for several terms (the sea).
 //   SunShadowLength             the hook through which they enter the in-scattering: how much
 //                               of the far end of a view segment lies in shadow (Bruneton's
 //                               shadow_length, light shafts); 0 today; SkyRadianceToPoint uses it.
@@ -85,16 +89,20 @@ const float CLOUD_SHADOW_MAX_KM = 100.0;
 // the resolution of the pixel's footprint on the ground (from the frame's camera; shadows
 // shorter than a pixel are not marched). 1 when the preset's terrain.shadows is off, or the
 // program did not ask for SUN_VISIBILITY_TERRAIN.
-float TerrainSunVisibility(vec3 point, vec3 sun) {
+// TerrainSunVisibilityAbove: from `startM` metres above sea level where the ground is lower
+// (the sea's surface: its light is shadowed from there, not from the sea floor).
+float TerrainSunVisibilityAbove(vec3 point, float startM, vec3 sun) {
 #if SUN_VISIBILITY_TERRAIN
     float footprintKm = distance(point, cameraFromPlanetCentreKm()) * radiansPerPixel();
     int samples = terrainShadows != 0 ? TERRAIN_SHADOW_SAMPLES : 0;  // from the uniform: see terrainSunVisibility
-    return terrainSunVisibility(point, sun, frame.planetRadius / M_PER_KM, atmosphereUniforms.sunAngularRadius,
-                                footprintKm, samples, terrainShape, uContinents);
+    return terrainSunVisibilityAbove(point, startM, sun, frame.planetRadius / M_PER_KM,
+                                     atmosphereUniforms.sunAngularRadius, footprintKm, samples, terrainShape,
+                                     uContinents);
 #else
     return 1.0;
 #endif
 }
+float TerrainSunVisibility(vec3 point, vec3 sun) { return TerrainSunVisibilityAbove(point, -1.0e9, sun); }
 
 // The fraction of the sun's disc seen from `point` (km from the planet centre) on a surface:
 // the clouds' transmittance towards the sun (Michelic §6 takes one density sample
@@ -146,18 +154,23 @@ vec3 TransmittanceToPoint(vec3 camera, vec3 viewRay, float distance) {
                                 RayIntersectsGroundRho2(ray.rho2, ray.r * ray.mu));
 }
 
-vec3 SunIrradianceAtPoint(vec3 point, vec3 sun) {
+// The sun's irradiance at `point` on a surface facing it, through the atmosphere; the
+// Unshadowed forms leave out SunVisibility, for a caller that forms it once for several terms.
+vec3 SunIrradianceUnshadowed(vec3 point, vec3 sun) {
     AtmosphereParameters atmosphere = atmosphereParameters();
     float r = length(point);
-    return atmosphere.solar_irradiance * GetTransmittanceToSun(atmosphere, transmittance_texture, r, dot(point, sun) / r) *
-           SunVisibility(point, sun);
+    return atmosphere.solar_irradiance * GetTransmittanceToSun(atmosphere, transmittance_texture, r, dot(point, sun) / r);
 }
+vec3 SunIrradianceAtPoint(vec3 point, vec3 sun) { return SunIrradianceUnshadowed(point, sun) * SunVisibility(point, sun); }
 
+vec3 SunAndSkyIrradianceUnshadowed(vec3 point, vec3 normal, vec3 sun, out vec3 skyIrradiance) {
+    return GetSunAndSkyIrradiance(atmosphereParameters(), transmittance_texture, irradiance_texture, point, normal, sun,
+                                  skyIrradiance);
+}
 // The visibility only where the sun lights the surface at all (a slope facing away from it
 // pays no shadow march).
 vec3 SunAndSkyIrradiance(vec3 point, vec3 normal, vec3 sun, out vec3 skyIrradiance) {
-    vec3 sunIrradiance = GetSunAndSkyIrradiance(atmosphereParameters(), transmittance_texture, irradiance_texture,
-                                                point, normal, sun, skyIrradiance);
+    vec3 sunIrradiance = SunAndSkyIrradianceUnshadowed(point, normal, sun, skyIrradiance);
     return dot(normal, sun) > 0.0 ? sunIrradiance * SunVisibility(point, sun) : sunIrradiance;
 }
 

@@ -30,6 +30,7 @@
 // is discarded where the terrain stands above it, and its water path comes from the depth
 // below the surface. Near the camera the sag is far below a millimetre and nothing changes.
 #include "common/frame_uniforms.glsl"
+#define SUN_VISIBILITY_TERRAIN 1  // the terrain's shadows on the water (terrain/terrain_shadow.glsl)
 #include "atmosphere/interface.glsl"
 #include "clouds/cloud_march.glsl"
 #include "terrain/grid.glsl"
@@ -144,11 +145,27 @@ void main() {
     vec3 reflected = reflect(view, normal);
     reflected = normalize(reflected + up * max(0.0, 0.01 - dot(reflected, up)));  // keep it above the horizon
     vec3 sky = reflectedRadiance(point, reflected, up, pixel, sun);
+    // The sun's visibility from the water's surface (the clouds' shadows and the terrain's, the
+    // march starting at sea level, not on the sea floor), formed once for the light into the
+    // water and the glitter.
+    float sunVisibility = 1.0;
+    if (dot(up, sun) > 0.0) {
+        sunVisibility = CloudSunTransmittance(point, sun, CLOUD_SHADOW_MAX_KM);
+        // The terrain's march only where it may find land: a loop of one turn or none, not an
+        // if, because a software renderer runs an if's body for every pixel (masked) but leaves
+        // a loop that no pixel of its group wants to enter (the open sea then pays nothing).
+        bool mayReach = terrainShadowMayReachSea(up, sun, ocean.seaLevel, frame.planetRadius / M_PER_KM,
+                                                 ocean.continentLipschitz,
+                                                 2.0 / 32.0 / float(textureSize(uContinents, 0).x), terrainShape,
+                                                 uContinents);
+        for (int i = 0; i < (mayReach ? 1 : 0); ++i)
+            sunVisibility *= TerrainSunVisibilityAbove(point, ocean.seaLevel, sun);
+    }
     vec3 skyIrradiance;
-    vec3 sunIrradiance = SunAndSkyIrradiance(point, up, sun, skyIrradiance);
+    vec3 sunIrradiance = SunAndSkyIrradianceUnshadowed(point, up, sun, skyIrradiance) * sunVisibility;
     // The sun's irradiance on a surface facing it: through the atmosphere, not yet weighted by a normal.
     vec3 glitter = dot(up, sun) > 0.0
-                       ? SunIrradianceAtPoint(point, sun) *
+                       ? SunIrradianceUnshadowed(point, sun) * sunVisibility *
                              sunGlitter(normal, -view, sun, slopeVariance + ocean.subgridSlopeVariance)
                        : vec3(0.0);
 

@@ -90,11 +90,13 @@ float terrainShadowHeight(vec3 direction, TerrainShape shape, samplerCube contin
 // a constant trip count lets the compiler unroll the march, 26 inlined height fields with
 // their octaves, which took llvmpipe minutes to compile; and a software renderer skips a
 // loop of 0 iterations, where it would run the march in a branch not taken.
-float terrainSunVisibility(vec3 point, vec3 sun, float planetRadiusKm, float sunAngularRadius, float footprintKm,
-                           int samples, TerrainShape shape, samplerCube continents) {
+// `startM`: the march starts that many metres above sea level where the ground is lower (the
+// sea's surface over the sea floor); terrainSunVisibility below starts on the ground.
+float terrainSunVisibilityAbove(vec3 point, float startM, vec3 sun, float planetRadiusKm, float sunAngularRadius,
+                                float footprintKm, int samples, TerrainShape shape, samplerCube continents) {
     vec3 up = normalize(point);
     float sinElevation = dot(up, sun);
-    float groundM = terrainHeight(up, shape, continents);
+    float groundM = max(terrainHeight(up, shape, continents), startM);
     float reliefKm = (shape.maxHeight - groundM) * 0.001f;  // how far the terrain can rise above the point
     if (reliefKm <= 0.0f) return 1.0f;
     // Tangent-plane bound: the ray is above maxHeight after reliefKm / sin(elevation), sooner
@@ -121,4 +123,27 @@ float terrainSunVisibility(vec3 point, vec3 sun, float planetRadiusKm, float sun
         t *= growth;
     }
     return terrainShadowDiscShare(clearance, sunAngularRadius);
+}
+
+// The ground's own visibility: the march starts on the analytic surface under `point`.
+float terrainSunVisibility(vec3 point, vec3 sun, float planetRadiusKm, float sunAngularRadius, float footprintKm,
+                           int samples, TerrainShape shape, samplerCube continents) {
+    return terrainSunVisibilityAbove(point, -1.0e9f, sun, planetRadiusKm, sunAngularRadius, footprintKm, samples,
+                                     shape, continents);
+}
+
+// Whether the terrain may shadow the sea's surface at `up` (the march from `seaLevelM`, at or
+// above 0): false where the continent value stays below 0 (the sea floor, never above sea
+// level 0) all along the sun's ray as far as the march reaches (until the ray clears the
+// highest terrain, at most TERRAIN_SHADOW_MAX_KM), by the map's slope bound
+// `continentLipschitz` (per radian; src/ocean/land_cull.h) over the reach x 1.25 (the ray's
+// curve over the sphere) plus `sampleSlackRad` (the filter's rounding of a sample's place).
+// The open sea then pays no march: a dozen height fields a pixel, which doubled the ocean pass
+// where nothing could shadow it. A sea level below 0, or no slope bound, always marches.
+bool terrainShadowMayReachSea(vec3 up, vec3 sun, float seaLevelM, float planetRadiusKm, float continentLipschitz,
+                              float sampleSlackRad, TerrainShape shape, samplerCube continents) {
+    if (seaLevelM < 0.0f || !(continentLipschitz > 0.0f)) return true;
+    float reachKm = min(TERRAIN_SHADOW_MAX_KM, (shape.maxHeight - seaLevelM) * 0.001f / max(dot(up, sun), 1e-4f));
+    float reach = 1.25f * reachKm / planetRadiusKm + sampleSlackRad;
+    return continentValue(up, continents) + continentLipschitz * reach >= 0.0f;
 }

@@ -41,6 +41,13 @@ float terrainSunVisibility(glm::vec3 pointKm, glm::vec3 sun, float planetRadiusK
                                              shadow_glsl::TERRAIN_SHADOW_SAMPLES, toGlsl(shape), continents);
 }
 
+bool terrainShadowMayReachSea(glm::vec3 up, glm::vec3 sun, float seaLevelM, float planetRadiusKm,
+                              float continentLipschitz, float sampleSlackRad, const TerrainShape& shape,
+                              const noise::CubeMap& continents) {
+    return shadow_glsl::terrainShadowMayReachSea(up, sun, seaLevelM, planetRadiusKm, continentLipschitz, sampleSlackRad,
+                                                 toGlsl(shape), continents);
+}
+
 float terrainShadowDiscShare(float clearance, float sunAngularRadius) {
     return shadow_glsl::terrainShadowDiscShare(clearance, sunAngularRadius);
 }

@@ -24,6 +24,13 @@ TerrainShadowConstants terrainShadowConstants();
 float terrainSunVisibility(glm::vec3 pointKm, glm::vec3 sun, float planetRadiusKm, float sunAngularRadius,
                            float footprintKm, const TerrainShape& shape, const noise::CubeMap& continents);
 
+// Whether the terrain may shadow the sea's surface at `up` from `seaLevelM`: false only where
+// the map's slope bound keeps the continent value below 0 as far as the march reaches.
+// GLSL: terrainShadowMayReachSea (the ocean pass skips the march where it is false).
+bool terrainShadowMayReachSea(glm::vec3 up, glm::vec3 sun, float seaLevelM, float planetRadiusKm,
+                              float continentLipschitz, float sampleSlackRad, const TerrainShape& shape,
+                              const noise::CubeMap& continents);
+
 // The share of a disc of angular radius `sunAngularRadius` above a straight horizon
 // `clearance` rad below its centre. GLSL: terrainShadowDiscShare.
 float terrainShadowDiscShare(float clearance, float sunAngularRadius);
