@@ -36,6 +36,8 @@
 #include <gtest/gtest.h>
 
 #include <cstdio>
+#include <fstream>
+#include <iterator>
 #include <string>
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -82,11 +84,11 @@ protected:
         double singleSample = 0.0;  // --samples 1
         double accumulated = 0.0;   // the default
     };
-    Errors measure(const std::string& view) {
+    Errors measure(const std::string& view, const std::string& args = "") {
         const planet::ImageRGBAF reference =
-            planet::boxDownsample(render(view, "640x360", "--samples 1", view + "-reference"), 4);
-        const planet::ImageRGBAF single = render(view, "160x90", "--samples 1", view + "-s1");
-        const planet::ImageRGBAF accumulated = render(view, "160x90", "", view + "-default");
+            planet::boxDownsample(render(view, "640x360", args + " --samples 1", view + "-reference"), 4);
+        const planet::ImageRGBAF single = render(view, "160x90", args + " --samples 1", view + "-s1");
+        const planet::ImageRGBAF accumulated = render(view, "160x90", args, view + "-default");
         const planet::ImageComparison a = planet::compareImages(single, reference);
         const planet::ImageComparison b = planet::compareImages(accumulated, reference);
         EXPECT_EQ(a.nonFinitePixels, 0u);
@@ -167,6 +169,25 @@ TEST_F(AliasingTest, MountainsStillIsAntiAliased) {
     const Errors e = measure("mountains");
     EXPECT_LT(e.accumulated, kMountainsBound);
     EXPECT_LT(e.accumulated, e.singleSample);
+}
+
+// With the ground detail on (terrain.detail, off by default): not yet within the bound above.
+// 5.85 % before its filter handed the slopes' removed spread to the lighting (the expected
+// clamped cosine, terrain/rough_cosine.glsl) and before the tile's longest waves were
+// dropped (the lattice); 4.95 % after (docs/PERFORMANCE.md, 2026-12-03, issue 13 LEAN). The
+// bound holds that gain; lower it as the detail's remaining error (where the ray meets the
+// height field, and the tints) is found.
+constexpr double kMountainsWithDetailBound = 0.054;
+
+TEST_F(AliasingTest, MountainsStillWithTheGroundDetailKeepsItsLighting) {
+    std::ifstream in(std::string(PLANET_SOURCE_DIR) + "/assets/presets/earth.toml");
+    std::string preset((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    const std::size_t at = preset.find("\ndetail = false\n");
+    ASSERT_NE(at, std::string::npos) << "earth.toml has no 'detail = false' line";
+    preset.replace(at, 16, "\ndetail = true\n");
+    std::ofstream(dir / "detail.toml") << preset;
+    const Errors e = measure("mountains", "--preset " + (dir / "detail.toml").string());
+    EXPECT_LT(e.accumulated, kMountainsWithDetailBound);
 }
 
 TEST_F(AliasingTest, SpaceStillIsAntiAliased) {

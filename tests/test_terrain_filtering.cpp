@@ -5,6 +5,7 @@
 // And the detail texture (terrain/detail_texture.h): tiling, zero mean, exact slopes.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <random>
@@ -186,4 +187,80 @@ TEST(TerrainDetailTexture, TilesHasZeroMeanUnitSpreadAndExactSlopes) {
         EXPECT_NEAR(t.texels[i].x, du, 0.01f * std::max(1.0f, std::abs(du)));
         EXPECT_NEAR(t.texels[i].y, dv, 0.01f * std::max(1.0f, std::abs(dv)));
     }
+}
+
+// The lattice (issue 13): the fine field has no wave longer than a quarter of the tile, whose
+// few integer directions ((1, 0), (1, 1) and turns) drew a regular diamond pattern of the
+// tile's size over the rock. Measured by the field's discrete Fourier transform at every wave
+// vector with |k| < 3.5: before, with waves from |k| = 1 (1/|k| amplitudes), they held about a
+// fifth of the power.
+TEST(TerrainDetailTexture, HasNoWaveLongerThanAQuarterOfTheTile) {
+    const int n = 256;
+    const terrain::DetailTexture t = terrain::bakeDetailTexture(n);
+    double total = 0.0;
+    for (const glm::vec4& texel : t.texels) total += texel.z * texel.z;
+    total /= t.texels.size();  // the mean power, sum over k of |c_k|^2 (Parseval)
+    double low = 0.0;
+    for (int ky = -3; ky <= 3; ++ky)
+        for (int kx = -3; kx <= 3; ++kx) {
+            if ((kx == 0 && ky == 0) || kx * kx + ky * ky >= 3.5 * 3.5) continue;
+            double re = 0.0, im = 0.0;
+            for (int y = 0; y < n; ++y)
+                for (int x = 0; x < n; ++x) {
+                    const double a = -6.283185307179586 * (double(kx * x) + double(ky * y)) / n;
+                    const double h = t.texels[static_cast<std::size_t>(y) * n + x].z;
+                    re += h * std::cos(a), im += h * std::sin(a);
+                }
+            re /= double(n) * n, im /= double(n) * n;
+            low += re * re + im * im;
+        }
+    EXPECT_LT(low / total, 1e-3) << "share of the fine field's power at |k| < 3.5";
+}
+
+// What the mip levels take from the slopes (DetailTexture::lostSlopeVariance, the detail
+// filter's table for the lighting): nothing at level 0, more at every level, everything at
+// the 1x1 level (mean slope 0), and level 1's share as its 2x2 means say.
+TEST(TerrainDetailTexture, LostSlopeVarianceIsWhatEachMipLevelAveragesAway) {
+    const int n = 64;
+    const terrain::DetailTexture t = terrain::bakeDetailTexture(n);
+    ASSERT_EQ(t.lostSlopeVariance.size(), 7u);  // 64 .. 1
+    double full = 0.0;
+    for (const glm::vec4& texel : t.texels) full += texel.x * texel.x + texel.y * texel.y;
+    full /= t.texels.size();
+    EXPECT_NEAR(t.lostSlopeVariance.front(), 0.0, 1e-6 * full);
+    EXPECT_NEAR(t.lostSlopeVariance.back(), full, 1e-3 * full);
+    for (std::size_t i = 1; i < t.lostSlopeVariance.size(); ++i)
+        EXPECT_GT(t.lostSlopeVariance[i], t.lostSlopeVariance[i - 1]);
+    double level1 = 0.0;
+    for (int y = 0; y < n; y += 2)
+        for (int x = 0; x < n; x += 2) {
+            glm::vec2 s(0.0f);
+            for (int d = 0; d < 4; ++d) s += 0.25f * glm::vec2(t.texels[static_cast<std::size_t>(y + d / 2) * n + x + d % 2]);
+            level1 += glm::dot(s, s);
+        }
+    level1 /= (n / 2) * (n / 2);
+    EXPECT_NEAR(t.lostSlopeVariance[1], full - level1, 1e-3 * full);
+    EXPECT_GT(t.lostSlopeVariance[1], 0.0);
+}
+
+// The surface light's clamped cosine over a spread of detail slopes
+// (shaders/terrain/rough_cosine.glsl as C++): E[max(0, mu + sigma X)], X ~ N(0, 1), against a
+// Monte Carlo mean over 400 000 normal draws (its standard error is under sigma / 600).
+TEST(TerrainDetailLighting, ExpectedClampedCosineIsTheMeanOverNormallySpreadFacets) {
+    std::mt19937 random(3);
+    std::normal_distribution<double> normal(0.0, 1.0);
+    std::vector<double> draws(400000);
+    for (double& x : draws) x = normal(random);
+    for (float sigma : {0.02f, 0.1f, 0.3f, 0.6f})
+        for (float mu : {-0.8f, -0.3f, -0.05f, 0.0f, 0.1f, 0.4f, 0.9f}) {
+            double sum = 0.0;
+            for (double x : draws) sum += std::max(0.0, double(mu) + double(sigma) * x);
+            const double monteCarlo = sum / draws.size();
+            EXPECT_NEAR(terrain::expectedClampedCosine(mu, sigma), monteCarlo, 4.0 * sigma / 600.0 + 1e-6)
+                << "mu " << mu << ", sigma " << sigma;
+        }
+    // No spread: the plain clamped cosine; at mu = 0: sigma / sqrt(2 pi), not 0.
+    EXPECT_EQ(terrain::expectedClampedCosine(0.5f, 0.0f), 0.5f);
+    EXPECT_EQ(terrain::expectedClampedCosine(-0.5f, 0.0f), 0.0f);
+    EXPECT_NEAR(terrain::expectedClampedCosine(0.0f, 0.2f), 0.2f / std::sqrt(2.0f * 3.14159265f), 1e-6f);
 }

@@ -8,6 +8,10 @@
 // point: from afar the mesh's chords sag hundreds of metres below the sphere between its
 // vertices, and coastal land lit as sea floor that deep showed as blue-grey combs and dashes
 // along every coast.
+// The ground's detail normals, filtered by the pixel's footprint, come with the spread of
+// slopes the filter removed (the G-buffer material's b): the sun lights them with the
+// expected clamped cosine over that spread (terrain/rough_cosine.glsl), so a far pixel gets
+// the mean of what a close view of its facets shows (LEAN / Toksvig in spirit, issue 13).
 // Also writes the distance along the view ray to the point, which the sky pass and the
 // ocean read. Pixels where nothing was drawn keep the cleared 0 (no surface).
 #include "common/frame_uniforms.glsl"
@@ -15,10 +19,12 @@
 #define SUN_VISIBILITY_TERRAIN 1  // the terrain's shadows in the sun (terrain/terrain_shadow.glsl)
 #include "atmosphere/interface.glsl"
 #include "ocean/water.glsl"
+#include "terrain/rough_cosine.glsl"
 
 in vec2 vNdc;
 layout(binding = UNIT_GBUFFER_NORMAL) uniform sampler2D gNormal;
 layout(binding = UNIT_GBUFFER_ALBEDO) uniform sampler2D gAlbedo;
+layout(binding = UNIT_GBUFFER_MATERIAL) uniform sampler2D gMaterial;
 layout(binding = UNIT_GBUFFER_DEPTH) uniform sampler2D gDepth;
 
 layout(location = 0) out vec4 outSurfaceRadiance;
@@ -44,6 +50,19 @@ float onTheHeightField(vec3 dir, float meshDistance, float groundHeight) {
     return meshDistance + weight * clamp((meshAltitude - groundHeight) / descent, -limit, limit);
 }
 
+// A normal whose clamped cosine with the sun is the expected one over facets whose slopes
+// spread by `slopeSpread` (per component) about `normal`: turned towards or away from the sun
+// in the plane of the two. The spread of n.l is the slopes' projected on the sun's direction
+// within the surface, slopeSpread * sqrt(1 - mu^2).
+vec3 shadingNormal(vec3 normal, vec3 sun, float slopeSpread) {
+    float mu = dot(normal, sun);
+    vec3 across = normal - mu * sun;
+    float acrossLength = length(across);
+    if (slopeSpread <= 0.0 || acrossLength < 1.0e-4) return normal;
+    float cosine = expectedClampedCosine(mu, slopeSpread * sqrt(max(1.0 - mu * mu, 0.0)));
+    return cosine * sun + sqrt(max(1.0 - cosine * cosine, 0.0)) * (across / acrossLength);
+}
+
 void main() {
     ivec2 pixel = ivec2(gl_FragCoord.xy);
     float depth = texelFetch(gDepth, pixel, 0).r;
@@ -58,9 +77,13 @@ void main() {
 
     vec3 normal = normalize(normalAndHeight.xyz);
     vec3 albedo = texelFetch(gAlbedo, pixel, 0).rgb;
-    vec3 skyIrradiance;
-    vec3 sunIrradiance = SunAndSkyIrradiance(point, normal, frame.sunDirection, skyIrradiance);
     vec3 up = normalize(point);
+    vec3 shading = shadingNormal(normal, frame.sunDirection, texelFetch(gMaterial, pixel, 0).b);
+    vec3 skyIrradiance;
+    vec3 sunIrradiance = SunAndSkyIrradiance(point, shading, frame.sunDirection, skyIrradiance);
+    // The sky's share is linear in the normal's rise, (1 + n.up) / 2 (Bruneton's
+    // GetSunAndSkyIrradiance): the mean normal's, not the shading normal's.
+    skyIrradiance *= (1.0 + dot(normal, up)) / max(1.0 + dot(shading, up), 1.0e-3);
     // The sea level less the ground's height: the camera's depth below the sea plus its
     // altitude is the sea level (both formed in double; a dry world's depth is -1e30).
     float depthBelowSea = frame.cameraDepthBelowSea + frame.cameraAltitude - normalAndHeight.w;

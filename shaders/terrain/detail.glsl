@@ -10,6 +10,15 @@
 // shading with no line at any distance. A scale whose whole period fits in the footprint
 // (the coarsest mip, whose mean is 0) is skipped: from orbit the detail costs nothing.
 //
+// What the filter removes is not lost to the lighting (LEAN / Toksvig in spirit): the
+// variance of the slopes under the footprint, the share the mip level averaged away (the
+// bake's table per level, uTerrainDetailLostVariance) plus the spread between the taps of
+// the anisotropic filter, leaves with the normal (terrain.frag writes its spread into the
+// G-buffer) and the surface light lights the ground with the expected clamped cosine over
+// it (terrain/rough_cosine.glsl). A normal filtered and then lit is not the mean of the lit
+// normals: at a 30 degree sun the rock's relief turns facets away from the sun, which a
+// far pixel's mean normal does not show.
+//
 // Positions: where the pixel's ray meets the height field (terrain.frag, terrainRayHitNear),
 // camera-relative plus the camera modulo TERRAIN_NEAR_WRAP_M (terrain/height.glsl): exact to a
 // millimetre near the camera; all periods divide TERRAIN_NEAR_WRAP_M, so the wrap of the
@@ -31,17 +40,25 @@ const vec3 TERRAIN_DETAIL_TINT[5] = vec3[](vec3(0.12, 0.10, 0.10), vec3(0.20, 0.
 const vec3 TERRAIN_DRY_GRASS_TINT = vec3(1.35, 1.15, 0.6);
 
 layout(binding = UNIT_TERRAIN_DETAIL) uniform sampler2D uTerrainDetail;
+// Per mip level of uTerrainDetail: the variance of the slope (both components, per unit of
+// texture coordinate, squared) that the level's averaging removed from level 0's
+// (terrain/detail_texture.h, DetailTexture::lostSlopeVariance; the pass sets it).
+const int TERRAIN_DETAIL_LEVELS = 9;  // a 256 x 256 bake
+uniform float uTerrainDetailLostVariance[TERRAIN_DETAIL_LEVELS];
 
 // The detail texture at one scale, projected tri-planar: the world-space slope of the height
-// field (per metre of relief per metre), and the mean of the height (z) and patch (w) channels.
+// field (per metre of relief per metre), and the mean of the height (z) and patch (w) channels;
+// slopeVariance: the variance of the slope about that mean under the footprint, which the
+// filter removed (per metre of relief per metre, squared, both components).
 struct DetailSample {
     vec3 slope;
     float height;
     float patches;
+    float slopeVariance;
 };
 
 DetailSample detailAtScaleIsotropic(vec3 p, vec3 dpdx, vec3 dpdy, vec3 planeWeights, float scale) {
-    DetailSample s = DetailSample(vec3(0.0), 0.0, 0.0);
+    DetailSample s = DetailSample(vec3(0.0), 0.0, 0.0, 0.0);
     // Each plane's texture coordinates are two world axes; its slope (d/du, d/dv per unit of
     // texture coordinate) maps back onto those axes.
     if (planeWeights.x > 0.0) {
@@ -76,11 +93,14 @@ const int TERRAIN_DETAIL_TAPS = 4;
 DetailSample detailAtScale(vec3 p, vec3 dpdx, vec3 dpdy, vec3 planeWeights, float period) {
     vec3 major = dot(dpdx, dpdx) >= dot(dpdy, dpdy) ? dpdx : dpdy;
     vec3 minor = dot(dpdx, dpdx) >= dot(dpdy, dpdy) ? dpdy : dpdx;
-    if (length(minor) >= period) return DetailSample(vec3(0.0), 0.0, 0.0);  // the coarsest mip: mean 0
+    if (length(minor) >= period)  // the coarsest mip: mean 0, all of the slopes' variance removed
+        return DetailSample(vec3(0.0), 0.0, 0.0,
+                            uTerrainDetailLostVariance[TERRAIN_DETAIL_LEVELS - 1] / (period * period));
     float ratio = length(major) / max(length(minor), 1.0e-6);
     int taps = int(clamp(ceil(ratio), 1.0, float(TERRAIN_DETAIL_TAPS)));
     vec3 stepAlong = major / float(taps);
-    DetailSample s = DetailSample(vec3(0.0), 0.0, 0.0);
+    DetailSample s = DetailSample(vec3(0.0), 0.0, 0.0, 0.0);
+    float slopeSquares = 0.0;  // the taps' squared slopes, for the spread between them
     for (int i = 0; i < TERRAIN_DETAIL_TAPS; ++i) {
         if (i >= taps) break;
         vec3 tap = p + stepAlong * (float(i) + 0.5 - 0.5 * float(taps));
@@ -88,8 +108,20 @@ DetailSample detailAtScale(vec3 p, vec3 dpdx, vec3 dpdy, vec3 planeWeights, floa
         s.slope += t.slope;
         s.height += t.height;
         s.patches += t.patches;
+        slopeSquares += dot(t.slope, t.slope);
     }
     float weight = 1.0 / float(taps);
+    // The variance removed: within each tap, the table's share at the tap's mip level (the
+    // GPU's isotropic level: its footprint's longer side in texels; trilinear between levels),
+    // the planes' slopes independent, so their weights enter squared; between the taps, their
+    // spread about their mean (the law of total variance).
+    float texels = max(length(stepAlong), length(minor)) * float(textureSize(uTerrainDetail, 0).x) / period;
+    float level = clamp(log2(max(texels, 1.0)), 0.0, float(TERRAIN_DETAIL_LEVELS - 1));
+    int below = min(int(level), TERRAIN_DETAIL_LEVELS - 2);
+    float within = mix(uTerrainDetailLostVariance[below], uTerrainDetailLostVariance[below + 1], level - float(below)) *
+                   dot(planeWeights, planeWeights);
+    float between = max(slopeSquares * weight - dot(s.slope, s.slope) * weight * weight, 0.0);
+    s.slopeVariance = (within + between) / (period * period);  // per metre, squared
     s.slope *= weight / period;  // per metre
     s.height *= weight;
     s.patches *= weight;
@@ -113,8 +145,10 @@ vec3 detailPlaneWeights(vec3 normal) {
 // filtered by the footprint, and weights from it would blend other patterns at other
 // distances and image sizes (the detail would change as the camera moves). `strength` in
 // [0, 1] scales the relief and the tints (the fade towards the near field's range).
+// slopeSpread: the standard deviation of the detail's slopes about the returned normal under
+// the footprint, per component (rise over run), what the filter removed (see the top).
 void applyTerrainDetail(vec3 p, vec3 dpdx, vec3 dpdy, vec3 up, float weights[5], float strength, inout vec3 normal,
-                        inout vec3 albedo) {
+                        inout vec3 albedo, out float slopeSpread) {
     vec3 relief = vec3(0.0);
     vec3 tint = vec3(0.0);
     for (int m = 0; m < 5; ++m) {
@@ -127,6 +161,9 @@ void applyTerrainDetail(vec3 p, vec3 dpdx, vec3 dpdy, vec3 up, float weights[5],
     DetailSample coarse = detailAtScale(p, dpdx, dpdy, planes, TERRAIN_DETAIL_PERIOD_M[2]);
     vec3 slope = relief.x * fine.slope + relief.y * middle.slope + relief.z * coarse.slope;
     normal = normalize(normal - (slope - dot(slope, normal) * normal));
+    float slopeVariance = relief.x * relief.x * fine.slopeVariance + relief.y * relief.y * middle.slopeVariance +
+                          relief.z * relief.z * coarse.slopeVariance;
+    slopeSpread = sqrt(0.5 * slopeVariance);  // isotropic: half the variance in each component
     float patches = coarse.patches + 0.5 * middle.patches;
     float variation = tint.x * fine.height + tint.y * middle.height + tint.z * patches;
     albedo *= clamp(1.0 + variation, 0.3, 2.0);

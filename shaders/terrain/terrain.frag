@@ -74,10 +74,12 @@ void main() {
     float strength = terrainDetail != 0 ? 1.0 - smoothstep(0.5 * TERRAIN_NEAR_RANGE_M, TERRAIN_NEAR_RANGE_M, distance)
                                         : 0.0;
     vec3 hit;
+    float detailSlopeSpread = 0.0;  // what the detail's filter removed, for the surface light
     if (strength > 0.0 && narrowFootprint < TERRAIN_DETAIL_PERIOD_M[TERRAIN_DETAIL_SCALES - 1] &&
         terrainRayHitNear(tePointFromCamera, terrainNear, terrainShape, hit))
-        applyTerrainDetail(hit + terrainXyz(terrainNear.cameraPlace), dpdx, dpdy, up, weights, strength, normal, albedo);
+        applyTerrainDetail(hit + terrainXyz(terrainNear.cameraPlace), dpdx, dpdy, up, weights, strength, normal, albedo,
+                           detailSlopeSpread);
     outNormal = vec4(normal, height);
     outAlbedo = vec4(albedo, 1.0);
-    outMaterial = vec4(float(MATERIAL_GROUND) / 255.0, 1.0, 0.0, 0.0);
+    outMaterial = vec4(float(MATERIAL_GROUND) / 255.0, 1.0, min(detailSlopeSpread, 1.0), 0.0);
 }

@@ -1,5 +1,6 @@
 #include "terrain/detail_texture.h"
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 #include <stdexcept>
@@ -7,6 +8,15 @@
 #include <epoxy/gl.h>
 
 namespace planet::terrain {
+namespace glsl {
+using glm::max;
+using std::abs;
+using std::exp;
+#include "shaders/terrain/rough_cosine.glsl"
+}  // namespace glsl
+
+float expectedClampedCosine(float mu, float sigma) { return glsl::expectedClampedCosine(mu, sigma); }
+
 namespace {
 
 struct Wave {
@@ -17,14 +27,14 @@ struct Wave {
 
 constexpr float kTwoPi = 6.28318530717958647692f;
 
-// `count` waves with |k| in [1, maxK], uniformly spread over log |k| and angle, amplitude
+// `count` waves with |k| in [minK, maxK], uniformly spread over log |k| and angle, amplitude
 // |k|^-exponent, normalised so the field's standard deviation is 1 (sum of a^2 / 2 = 1).
-std::vector<Wave> makeWaves(std::mt19937& random, int count, float maxK, float exponent) {
+std::vector<Wave> makeWaves(std::mt19937& random, int count, float minK, float maxK, float exponent) {
     std::uniform_real_distribution<float> unit(0.0f, 1.0f);
     std::vector<Wave> waves;
     float power = 0.0f;
     while (static_cast<int>(waves.size()) < count) {
-        const float magnitude = std::exp(unit(random) * std::log(maxK));
+        const float magnitude = std::exp(std::log(minK) + unit(random) * std::log(maxK / minK));
         const float angle = kTwoPi * unit(random);
         const glm::vec2 k(std::round(magnitude * std::cos(angle)), std::round(magnitude * std::sin(angle)));
         if (k == glm::vec2(0.0f)) continue;
@@ -58,8 +68,15 @@ DetailWaves detailWaves(int size, std::uint32_t seed) {
     DetailWaves w;
     // Up to a quarter of the texels' Nyquist frequency: the finest wave still spans 8 texels,
     // so bilinear filtering reproduces it.
-    w.fine = makeWaves(random, 96, static_cast<float>(size) / 8.0f, 1.0f);
-    w.patches = makeWaves(random, 32, 8.0f, 1.5f);
+    // No wave longer than a quarter of the period (|k| >= 4): integer wave vectors that short
+    // have few directions, (1, 0), (1, 1) and their turns, and the strongest amplitudes, and
+    // together they drew the tile's own lattice, a regular diamond pattern of the period's
+    // size over the rock (4 m at 100 m) and a checker on the meadow. The next coarser scale,
+    // 8 times the period, covers those wavelengths (its |k| up to 32, a quarter of this
+    // period): the bands of the three scales meet without a gap. Likewise the patches from |k| 2.
+    const float maxK = static_cast<float>(size) / 8.0f;
+    w.fine = makeWaves(random, 96, std::min(4.0f, 0.5f * maxK), maxK, 1.0f);
+    w.patches = makeWaves(random, 32, 2.0f, 8.0f, 1.5f);
     return w;
 }
 
@@ -87,6 +104,25 @@ DetailTexture bakeDetailTexture(int size, std::uint32_t seed) {
     t.fineScale = static_cast<float>(1.0 / std::sqrt(fine / t.texels.size()));
     const float patchScale = static_cast<float>(1.0 / std::sqrt(patchPower / t.texels.size()));
     for (glm::vec4& texel : t.texels) texel = glm::vec4(t.fineScale * glm::vec3(texel), patchScale * texel.w);
+    // The mip levels' slopes, box-averaged 2x2 per level as glGenerateMipmap makes them.
+    std::vector<glm::vec2> level(t.texels.size());
+    for (std::size_t i = 0; i < t.texels.size(); ++i) level[i] = glm::vec2(t.texels[i]);
+    double fullSquare = 0.0;
+    for (const glm::vec2& s : level) fullSquare += glm::dot(s, s);
+    fullSquare /= static_cast<double>(level.size());
+    for (int n = size;; n /= 2) {
+        double square = 0.0;
+        for (const glm::vec2& s : level) square += glm::dot(s, s);
+        t.lostSlopeVariance.push_back(static_cast<float>(fullSquare - square / static_cast<double>(level.size())));
+        if (n == 1) break;
+        std::vector<glm::vec2> next(static_cast<std::size_t>(n / 2) * (n / 2));
+        for (int y = 0; y < n / 2; ++y)
+            for (int x = 0; x < n / 2; ++x) {
+                const auto at = [&](int dx, int dy) { return level[static_cast<std::size_t>(2 * y + dy) * n + 2 * x + dx]; };
+                next[static_cast<std::size_t>(y) * (n / 2) + x] = 0.25f * (at(0, 0) + at(1, 0) + at(0, 1) + at(1, 1));
+            }
+        level = std::move(next);
+    }
     return t;
 }
 

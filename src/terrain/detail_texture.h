@@ -27,6 +27,12 @@ struct DetailTexture {
     int size = 0;
     std::vector<glm::vec4> texels;  // row-major, size x size
     float fineScale = 1.0f;         // what the fine field's waves were scaled by to unit spread
+    // Per mip level (0 = the full size, as glGenerateMipmap's 2x2 box averages make them): the
+    // variance of the slope (x^2 + y^2, per unit of texture coordinate, squared) that the
+    // level's averaging removed: level 0's mean square less the level's (0 at level 0; the
+    // whole variance at the 1x1 level, whose mean slope is 0). What the shader's filter
+    // takes from the normal and hands to the lighting (terrain/detail.glsl).
+    std::vector<float> lostSlopeVariance;
 };
 
 // Bakes the detail texture (size a power of two >= 16; deterministic for a seed).
@@ -35,6 +41,9 @@ DetailTexture bakeDetailTexture(int size = 256, std::uint32_t seed = 7);
 // The height h (channel z) at texture coordinate uv, evaluated from the waves directly
 // (any uv, it repeats with period 1): what the texels sample, for tests.
 float detailHeightAt(const DetailTexture& texture, glm::vec2 uv);
+
+// E[max(0, mu + sigma X)], X ~ N(0, 1): shaders/terrain/rough_cosine.glsl compiled as C++.
+float expectedClampedCosine(float mu, float sigma);
 
 // The GL texture: RGBA16F, full mip chain, GL_REPEAT, trilinear (isotropic: see the .cpp).
 gl::Texture makeDetailGlTexture(const DetailTexture& texture);

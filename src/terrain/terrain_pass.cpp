@@ -34,7 +34,11 @@ void TerrainPass::prepare(const Scene& scene, const Camera& camera, const noise:
     const terrain::TerrainNear near = terrain::makeTerrainNear(block.shape, continents, camera.position, radius);
     glNamedBufferSubData(nearBlock_.id(), 0, sizeof near, &near);
     glBindBufferBase(GL_UNIFORM_BUFFER, binding::BLOCK_TERRAIN_NEAR, nearBlock_.id());
-    if (scene.terrain.detail && !detail_) detail_.emplace(terrain::makeDetailGlTexture(terrain::bakeDetailTexture()));
+    if (scene.terrain.detail && !detail_) {
+        const terrain::DetailTexture baked = terrain::bakeDetailTexture();
+        detail_.emplace(terrain::makeDetailGlTexture(baked));
+        detailLostVariance_ = baked.lostSlopeVariance;
+    }
     if (detail_) glBindTextureUnit(binding::UNIT_TERRAIN_DETAIL, detail_->id());
 }
 
@@ -67,6 +71,10 @@ void TerrainPass::draw() {
     glDepthFunc(GL_GREATER);  // reversed-Z
     glDepthMask(GL_TRUE);
     glUseProgram(program_.id());
+    // The detail filter's table (terrain/detail.glsl); absent from the program when unused.
+    const GLint lostVariance = glGetUniformLocation(program_.id(), "uTerrainDetailLostVariance");
+    if (lostVariance >= 0 && !detailLostVariance_.empty())
+        glUniform1fv(lostVariance, static_cast<GLsizei>(detailLostVariance_.size()), detailLostVariance_.data());
     const bool stages = statistics_ && pipelineStatistics();
     if (statistics_) glBeginQuery(GL_PRIMITIVES_GENERATED, primitives_.id());
     if (stages) {

@@ -16,6 +16,7 @@
 #pragma once
 
 #include <optional>
+#include <vector>
 
 #include "gl/handle.h"
 #include "gl/program.h"
@@ -69,6 +70,7 @@ private:
     GridMesh mesh_{"terrain", PatchOrder::NearFirst};
     gl::Buffer block_;      // TerrainBlock
     gl::Buffer nearBlock_;  // TerrainNear (terrain/height.h), every frame
+    std::vector<float> detailLostVariance_;  // its DetailTexture::lostSlopeVariance, the shader's table
     std::optional<gl::Texture> detail_;  // terrain/detail_texture.h, baked when terrain.detail is first on (~0.1 s)
     GridParams grid_;
     GridAnchor anchor_;
