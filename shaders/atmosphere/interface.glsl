@@ -33,8 +33,11 @@
 //                               *Unshadowed irradiances leave the visibility out for a
 //                               caller that forms it once for several terms (the sea).
 //   SunShadowLength             the hook through which they enter the in-scattering: how much
-//                               of the far end of a view segment lies in shadow (Bruneton's
-//                               shadow_length, light shafts); 0 today; SkyRadianceToPoint uses it.
+//                               of a view segment lies in the terrain's shadow (Bruneton's
+//                               shadow_length: light shafts, preset terrain.light_shafts) in
+//                               programs that define LIGHT_SHAFTS_TERRAIN (the sky passes),
+//                               else 0; SkyRadianceToPoint takes it off the segment's far end,
+//                               SkyRadiance off the near end of a ray to space.
 //
 // Bruneton's 4D table or Elek's 3D table (preset atmosphere.elek_3d_table) is chosen here,
 // at compile time: a program including this file is built once with ELEK_TABLE 0 and once
@@ -60,6 +63,9 @@
 #include "terrain/terrain_shadow.glsl"
 #ifndef SUN_VISIBILITY_TERRAIN
 #define SUN_VISIBILITY_TERRAIN 0
+#endif
+#ifndef LIGHT_SHAFTS_TERRAIN
+#define LIGHT_SHAFTS_TERRAIN 0
 #endif
 
 #ifndef ELEK_TABLE
@@ -112,13 +118,75 @@ float TerrainSunVisibility(vec3 point, vec3 sun) { return TerrainSunVisibilityAb
 float SunVisibility(vec3 point, vec3 sun) {
     return CloudSunTransmittance(point, sun, CLOUD_SHADOW_MAX_KM) * TerrainSunVisibility(point, sun);
 }
-// km of the segment's far end, from the camera along `viewRay` for `distance` km, that the
-// sun does not light: 0 until something casts shadows into the air.
-float SunShadowLength(vec3 camera, vec3 viewRay, float distance) { return 0.0; }
+// Light shafts: the terrain's shadow in the air, sampled at this many points along the part of a
+// view segment the terrain can shadow (below its highest height), at most this long (km): a
+// sample's march starts at its own height and resolves shadows as long as the samples' spacing.
+const int LIGHT_SHAFT_SAMPLES = 8;
+const float LIGHT_SHAFT_MAX_KM = 60.0;
 
+// km of the segment from `camera` along the unit `viewRay` for `distance` km (<= 0: to where it
+// leaves the terrain's reach) that the terrain keeps the sun from: LIGHT_SHAFT_SAMPLES points,
+// jittered per pixel and frame (the temporal march and the stills' samples average them),
+// each weighted by the share of the sun's disc it does not see. 0 where the preset's
+// terrain.light_shafts or terrain.shadows is off (a loop of no turns), or the program did not
+// ask for LIGHT_SHAFTS_TERRAIN. Where the shadowed length lies along the segment is not kept:
+// Bruneton's shadow_length puts it at one end (see SkyRadianceToPoint and SkyRadiance).
+float SunShadowLength(vec3 camera, vec3 viewRay, float distance, vec3 sun) {
+#if LIGHT_SHAFTS_TERRAIN
+    int samples = terrainLightShafts != 0 && terrainShadows != 0 ? LIGHT_SHAFT_SAMPLES : 0;
+    float planetKm = frame.planetRadius / M_PER_KM;
+    float reachKm = planetKm + terrainShape.maxHeight * 0.001;  // nothing above casts or takes a shadow
+    float r = length(camera);
+    float rmu = dot(camera, viewRay);
+    float discriminant = rmu * rmu - (r - reachKm) * (r + reachKm);
+    float root = sqrt(max(discriminant, 0.0));
+    float enter = max(-rmu - root, 0.0);
+    float leave = -rmu + root;
+    if (distance > 0.0) leave = min(leave, distance);
+    leave = min(leave, enter + LIGHT_SHAFT_MAX_KM);
+    if (discriminant <= 0.0 || leave <= enter) samples = 0;
+    float spacing = (leave - enter) / float(LIGHT_SHAFT_SAMPLES);
+    float jitter = fract(fract(52.9829189 * fract(dot(gl_FragCoord.xy, vec2(0.06711056, 0.00583715)))) +
+                         0.6180340 * float(frame.frameIndex % 64));
+    float shadowed = 0.0;
+    for (int i = 0; i < samples; ++i) {
+        vec3 point = camera + viewRay * (enter + (float(i) + jitter) * spacing);
+        float heightM = (length(point) - planetKm) * 1000.0;
+        shadowed += 1.0 - terrainSunVisibilityAbove(point, heightM, sun, planetKm, atmosphereUniforms.sunAngularRadius,
+                                                    spacing, TERRAIN_SHADOW_SAMPLES, terrainShape, uContinents);
+    }
+    return shadowed * spacing;
+#else
+    return 0.0;
+#endif
+}
+
+// The sky along a ray to space from `shadowLength` km along it on, times the transmittance up
+// to there: with light shafts, the shadowed length SunShadowLength finds is taken off the ray's
+// near end (Bruneton's GetSkyRadiance with a shadow_length; the whole ray's transmittance kept).
+vec3 SkyRadianceBeyond(vec3 camera, vec3 viewRay, vec3 sun, float shadowLength) {
+    AtmosphereParameters atmosphere = atmosphereParameters();
+    vec3 unused;
+    vec3 beyond = GetSkyRadianceFrom(atmosphere, USE_ELEK_TABLE, transmittance_texture, scattering_texture,
+                                     single_mie_scattering_texture, camera + viewRay * shadowLength, viewRay, sun,
+                                     unused);
+    ViewRay ray = ViewRayInAtmosphere(atmosphere, camera, viewRay, viewRay);
+    if (!ray.inside) return beyond;
+    return beyond * GetTransmittanceRho2(atmosphere, transmittance_texture, ray.rho2, ray.r * ray.mu,
+                                         max(shadowLength - ray.skipped, 0.0),
+                                         RayIntersectsGroundRho2(ray.rho2, ray.r * ray.mu));
+}
+
+// A loop of one turn or none rather than an if (see SunShadowLength): without light shafts
+// nothing of it runs.
 vec3 SkyRadiance(vec3 camera, vec3 viewRay, vec3 sun, out vec3 transmittance) {
-    return GetSkyRadianceFrom(atmosphereParameters(), USE_ELEK_TABLE, transmittance_texture, scattering_texture,
-                              single_mie_scattering_texture, camera, viewRay, sun, transmittance);
+    vec3 inscatter = GetSkyRadianceFrom(atmosphereParameters(), USE_ELEK_TABLE, transmittance_texture,
+                                        scattering_texture, single_mie_scattering_texture, camera, viewRay, sun,
+                                        transmittance);
+    float shadowLength = SunShadowLength(camera, viewRay, 0.0, sun);
+    for (int i = 0; i < (shadowLength > 0.0 ? 1 : 0); ++i)
+        inscatter = SkyRadianceBeyond(camera, viewRay, sun, shadowLength);
+    return inscatter;
 }
 
 // `distance` in km along the unit `viewRay` (ray and distance rather than the point, so a
@@ -126,13 +194,19 @@ vec3 SkyRadiance(vec3 camera, vec3 viewRay, vec3 sun, out vec3 transmittance) {
 vec3 SkyRadianceToPoint(vec3 camera, vec3 viewRay, float distance, vec3 sun, out vec3 transmittance) {
     return GetSkyRadianceToPointAlongRayFrom(atmosphereParameters(), USE_ELEK_TABLE, transmittance_texture,
                                              scattering_texture, single_mie_scattering_texture, camera, viewRay,
-                                             distance, sun, SunShadowLength(camera, viewRay, distance),
+                                             distance, sun, SunShadowLength(camera, viewRay, distance, sun),
                                              transmittance);
 }
 
 vec3 SkyRadianceAt(vec3 up, float altitudeKm, vec3 viewRay, vec3 sun, out vec3 transmittance) {
-    return GetSkyRadianceAtFrom(atmosphereParameters(), USE_ELEK_TABLE, transmittance_texture, scattering_texture,
-                                single_mie_scattering_texture, up, altitudeKm, viewRay, sun, transmittance);
+    vec3 inscatter = GetSkyRadianceAtFrom(atmosphereParameters(), USE_ELEK_TABLE, transmittance_texture,
+                                          scattering_texture, single_mie_scattering_texture, up, altitudeKm, viewRay,
+                                          sun, transmittance);
+    vec3 camera = up * (atmosphereUniforms.bottomRadius + altitudeKm);
+    float shadowLength = SunShadowLength(camera, viewRay, 0.0, sun);
+    for (int i = 0; i < (shadowLength > 0.0 ? 1 : 0); ++i)
+        inscatter = SkyRadianceBeyond(camera, viewRay, sun, shadowLength);
+    return inscatter;
 }
 
 vec3 SkyRadianceToPointAt(vec3 up, float altitudeKm, vec3 viewRay, float distance, vec3 sun,
@@ -141,7 +215,7 @@ vec3 SkyRadianceToPointAt(vec3 up, float altitudeKm, vec3 viewRay, float distanc
                                                scattering_texture, single_mie_scattering_texture, up, altitudeKm,
                                                viewRay, distance, sun,
                                                SunShadowLength(up * (atmosphereUniforms.bottomRadius + altitudeKm),
-                                                               viewRay, distance),
+                                                               viewRay, distance, sun),
                                                transmittance);
 }
 

@@ -4,6 +4,7 @@
 // start jitter that moves at every visit; render/sky_temporal.frag builds the full frame
 // from these samples and the history.
 #include "common/frame_uniforms.glsl"
+#define LIGHT_SHAFTS_TERRAIN 1  // the terrain's shadows in the air (preset terrain.light_shafts)
 #include "atmosphere/interface.glsl"
 #include "clouds/cloud_march.glsl"
 #include "ocean/water.glsl"

@@ -10,7 +10,7 @@ layout(std140, binding = BLOCK_TERRAIN) uniform TerrainBlock {
     int terrainHasOcean;            // 1: water below sea level; 0: dry basins (Mars)
     int terrainShadows;             // 1: the terrain casts shadows (terrain/terrain_shadow.glsl)
     int terrainDetail;              // 1: ground detail (terrain/detail.glsl)
-    float terrainPadding2;
+    int terrainLightShafts;         // 1: the terrain's shadows in the air (atmosphere/interface.glsl)
 };
 // The height field near the camera, formed in double each frame (terrain/height.glsl
 // TerrainNear; C++: terrain::makeTerrainNear).

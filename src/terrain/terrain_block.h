@@ -19,12 +19,12 @@ struct TerrainBlock {
     int hasOcean;                     // 1: water below sea level
     int shadows;                      // 1: the terrain casts shadows (terrain/terrain_shadow.glsl)
     int detail;                       // 1: ground detail (terrain/detail.glsl)
-    float padding2 = 0.0f;
+    int lightShafts;                  // 1: the terrain's shadows in the air (atmosphere/interface.glsl)
 };
 static_assert(offsetof(TerrainBlock, lowlandAlbedo) == 48 && offsetof(TerrainBlock, targetEdgePixels) == 60 &&
                   offsetof(TerrainBlock, hasOcean) == 64 &&
                   offsetof(TerrainBlock, shadows) == 68 && offsetof(TerrainBlock, detail) == 72 &&
-                  sizeof(TerrainBlock) == 80,
+                  offsetof(TerrainBlock, lightShafts) == 76 && sizeof(TerrainBlock) == 80,
               "TerrainBlock must match std140 (shaders/terrain/terrain_block.glsl)");
 
 inline TerrainBlock makeTerrainBlock(const Scene& scene) {
@@ -35,6 +35,7 @@ inline TerrainBlock makeTerrainBlock(const Scene& scene) {
     b.hasOcean = scene.terrain.ocean ? 1 : 0;
     b.shadows = scene.terrain.shadows ? 1 : 0;
     b.detail = scene.terrain.detail ? 1 : 0;
+    b.lightShafts = scene.terrain.light_shafts ? 1 : 0;
     return b;
 }
 

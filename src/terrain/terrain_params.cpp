@@ -51,8 +51,12 @@ void addTerrainParams(std::vector<ParamSpec>& table) {
         &TerrainParams::ocean);
     add("shadows", "", 0.0, 1.0,
         "The terrain casts shadows: mountains shade the ground at a low sun (a march over the height field "
-        "towards the sun for each lit pixel; the sea does not take them yet).",
+        "towards the sun for each lit pixel, on the ground and on the sea).",
         &TerrainParams::shadows);
+    add("light_shafts", "", 0.0, 1.0,
+        "Light shafts: the terrain's shadows in the air, taken out of the light the air scatters towards the camera "
+        "(8 shadow marches along each view ray's first 60 km below the highest terrain; needs shadows).",
+        &TerrainParams::light_shafts);
     add("detail", "", 0.0, 1.0,
         "Ground detail up close: tri-planar detail normals and colour per material at 0.5, 4 and 32 m, placed where "
         "the view ray meets the height field (off by default: from afar it still differs from its own supersampled "

@@ -41,6 +41,13 @@ float terrainSunVisibility(glm::vec3 pointKm, glm::vec3 sun, float planetRadiusK
                                              shadow_glsl::TERRAIN_SHADOW_SAMPLES, toGlsl(shape), continents);
 }
 
+float terrainSunVisibilityAbove(glm::vec3 pointKm, float startM, glm::vec3 sun, float planetRadiusKm,
+                                float sunAngularRadius, float footprintKm, const TerrainShape& shape,
+                                const noise::CubeMap& continents) {
+    return shadow_glsl::terrainSunVisibilityAbove(pointKm, startM, sun, planetRadiusKm, sunAngularRadius, footprintKm,
+                                                  shadow_glsl::TERRAIN_SHADOW_SAMPLES, toGlsl(shape), continents);
+}
+
 bool terrainShadowMayReachSea(glm::vec3 up, glm::vec3 sun, float seaLevelM, float planetRadiusKm,
                               float continentLipschitz, float sampleSlackRad, const TerrainShape& shape,
                               const noise::CubeMap& continents) {

@@ -24,6 +24,12 @@ TerrainShadowConstants terrainShadowConstants();
 float terrainSunVisibility(glm::vec3 pointKm, glm::vec3 sun, float planetRadiusKm, float sunAngularRadius,
                            float footprintKm, const TerrainShape& shape, const noise::CubeMap& continents);
 
+// The same from `startM` metres above sea level where the ground is lower (the sea's surface,
+// a point in the air). GLSL: terrainSunVisibilityAbove.
+float terrainSunVisibilityAbove(glm::vec3 pointKm, float startM, glm::vec3 sun, float planetRadiusKm,
+                                float sunAngularRadius, float footprintKm, const TerrainShape& shape,
+                                const noise::CubeMap& continents);
+
 // Whether the terrain may shadow the sea's surface at `up` from `seaLevelM`: false only where
 // the map's slope bound keeps the continent value below 0 as far as the march reaches.
 // GLSL: terrainShadowMayReachSea (the ocean pass skips the march where it is false).
