@@ -124,8 +124,8 @@ float SunVisibility(vec3 point, vec3 sun) {
 const int LIGHT_SHAFT_SAMPLES = 8;
 const float LIGHT_SHAFT_MAX_KM = 60.0;
 
-// km of the segment from `camera` along the unit `viewRay` for `distance` km (<= 0: to where it
-// leaves the terrain's reach) that the terrain keeps the sun from: LIGHT_SHAFT_SAMPLES points,
+// km of the segment from `camera` along the unit `viewRay` for `distance` km (< 0: to where it
+// leaves the terrain's reach; 0: an empty segment) that the terrain keeps the sun from: LIGHT_SHAFT_SAMPLES points,
 // jittered per pixel and frame (the temporal march and the stills' samples average them),
 // each weighted by the share of the sun's disc it does not see. 0 where the preset's
 // terrain.light_shafts or terrain.shadows is off (a loop of no turns), or the program did not
@@ -133,7 +133,10 @@ const float LIGHT_SHAFT_MAX_KM = 60.0;
 // Bruneton's shadow_length puts it at one end (see SkyRadianceToPoint and SkyRadiance).
 float SunShadowLength(vec3 camera, vec3 viewRay, float distance, vec3 sun) {
 #if LIGHT_SHAFTS_TERRAIN
-    int samples = terrainLightShafts != 0 && terrainShadows != 0 ? LIGHT_SHAFT_SAMPLES : 0;
+    int samples = terrainLightShafts != 0 && terrainShadows != 0 && distance != 0.0 ? LIGHT_SHAFT_SAMPLES : 0;
+    // The march's own count from the uniform too, not the constant (see terrainSunVisibility:
+    // a constant trip count is unrolled, and compiling 26 inlined height fields takes minutes).
+    int march = terrainShadows != 0 ? TERRAIN_SHADOW_SAMPLES : 0;
     float planetKm = frame.planetRadius / M_PER_KM;
     float reachKm = planetKm + terrainShape.maxHeight * 0.001;  // nothing above casts or takes a shadow
     float r = length(camera);
@@ -153,7 +156,7 @@ float SunShadowLength(vec3 camera, vec3 viewRay, float distance, vec3 sun) {
         vec3 point = camera + viewRay * (enter + (float(i) + jitter) * spacing);
         float heightM = (length(point) - planetKm) * 1000.0;
         shadowed += 1.0 - terrainSunVisibilityAbove(point, heightM, sun, planetKm, atmosphereUniforms.sunAngularRadius,
-                                                    spacing, TERRAIN_SHADOW_SAMPLES, terrainShape, uContinents);
+                                                    spacing, march, terrainShape, uContinents);
     }
     return shadowed * spacing;
 #else
@@ -166,14 +169,14 @@ float SunShadowLength(vec3 camera, vec3 viewRay, float distance, vec3 sun) {
 // near end (Bruneton's GetSkyRadiance with a shadow_length; the whole ray's transmittance kept).
 vec3 SkyRadianceBeyond(vec3 camera, vec3 viewRay, vec3 sun, float shadowLength) {
     AtmosphereParameters atmosphere = atmosphereParameters();
+    ViewRay ray = ViewRayInAtmosphere(atmosphere, camera, viewRay, viewRay);
+    if (!ray.inside) return vec3(0.0);
+    // From where the ray enters the air (a camera in space: ray.skipped km on).
     vec3 unused;
     vec3 beyond = GetSkyRadianceFrom(atmosphere, USE_ELEK_TABLE, transmittance_texture, scattering_texture,
-                                     single_mie_scattering_texture, camera + viewRay * shadowLength, viewRay, sun,
-                                     unused);
-    ViewRay ray = ViewRayInAtmosphere(atmosphere, camera, viewRay, viewRay);
-    if (!ray.inside) return beyond;
-    return beyond * GetTransmittanceRho2(atmosphere, transmittance_texture, ray.rho2, ray.r * ray.mu,
-                                         max(shadowLength - ray.skipped, 0.0),
+                                     single_mie_scattering_texture, camera + viewRay * (ray.skipped + shadowLength),
+                                     viewRay, sun, unused);
+    return beyond * GetTransmittanceRho2(atmosphere, transmittance_texture, ray.rho2, ray.r * ray.mu, shadowLength,
                                          RayIntersectsGroundRho2(ray.rho2, ray.r * ray.mu));
 }
 
@@ -183,7 +186,7 @@ vec3 SkyRadiance(vec3 camera, vec3 viewRay, vec3 sun, out vec3 transmittance) {
     vec3 inscatter = GetSkyRadianceFrom(atmosphereParameters(), USE_ELEK_TABLE, transmittance_texture,
                                         scattering_texture, single_mie_scattering_texture, camera, viewRay, sun,
                                         transmittance);
-    float shadowLength = SunShadowLength(camera, viewRay, 0.0, sun);
+    float shadowLength = SunShadowLength(camera, viewRay, -1.0, sun);
     for (int i = 0; i < (shadowLength > 0.0 ? 1 : 0); ++i)
         inscatter = SkyRadianceBeyond(camera, viewRay, sun, shadowLength);
     return inscatter;
@@ -203,7 +206,7 @@ vec3 SkyRadianceAt(vec3 up, float altitudeKm, vec3 viewRay, vec3 sun, out vec3 t
                                           scattering_texture, single_mie_scattering_texture, up, altitudeKm, viewRay,
                                           sun, transmittance);
     vec3 camera = up * (atmosphereUniforms.bottomRadius + altitudeKm);
-    float shadowLength = SunShadowLength(camera, viewRay, 0.0, sun);
+    float shadowLength = SunShadowLength(camera, viewRay, -1.0, sun);
     for (int i = 0; i < (shadowLength > 0.0 ? 1 : 0); ++i)
         inscatter = SkyRadianceBeyond(camera, viewRay, sun, shadowLength);
     return inscatter;

@@ -124,9 +124,10 @@ std::vector<ProbeResultRow> parseProbeResults(std::string_view csvText, const st
             const std::string& f = fields[static_cast<std::size_t>(4 + c)];
             double v = 0.0;
             const auto [end, ec] = std::from_chars(f.data(), f.data() + f.size(), v);
-            if (f.empty() || ec != std::errc() || end != f.data() + f.size() || !std::isfinite(v) || v < 0.0)
-                throw InputError(sourceName, lineNo, kProbeOutputColumns[c],
-                                 "'" + f + "' is not a finite number >= 0");
+            // Finite, not necessarily >= 0: through clouds the radiance is a difference of two
+            // lookups (Bruneton's) and can come out a rounding below 0 in the command's own output.
+            if (f.empty() || ec != std::errc() || end != f.data() + f.size() || !std::isfinite(v))
+                throw InputError(sourceName, lineNo, kProbeOutputColumns[c], "'" + f + "' is not a finite number");
             (c < 3 ? row.radiance : row.transmittance)[c % 3] = v;
         }
         rows.push_back(row);

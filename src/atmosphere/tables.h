@@ -32,8 +32,8 @@ struct TableSizes {
     int elek_mu = 128;               // even: ground and sky halves
     int elek_mu_s = 32;
 
-    // Small tables for tests: quick to make, but the sky is off by 2 % (daylight median)
-    // to 30x (twilight worst) against the full tables.
+    // Small tables for tests: quick to make, but the sky is off by 3 % (daylight median)
+    // to 160x (twilight worst) against the full tables.
     static TableSizes reduced() { return {64, 16, 8, 32, 8, 4, 16, 4, 8, 32, 8}; }
     // What `auto` picks on software renderers: the full tables with 96 view angles
     // instead of 128, 3/4 of their precomputation, and as accurate as issue 14 asks

@@ -111,7 +111,8 @@ vec3 CloudMarchModel::SkyRadiance(vec3 camera, vec3 viewRay, vec3 sun, vec3& tra
                               single_mie_scattering_texture, camera, viewRay, sun, transmittance);
 }
 
-// interface.glsl; its SunShadowLength is 0 (nothing casts shadows into the air yet).
+// interface.glsl without light shafts (terrain.light_shafts: the CPU reference has none, its
+// SunShadowLength is 0).
 vec3 CloudMarchModel::SkyRadianceToPoint(vec3 camera, vec3 viewRay, Length distance, vec3 sun, vec3& transmittance) {
     return GetSkyRadianceToPointAlongRayFrom(atmosphere_, false, transmittance_texture, scattering_texture,
                                              single_mie_scattering_texture, camera, viewRay, distance, sun,

@@ -50,13 +50,13 @@ public:
     gl::HotProgram& program() { return program_; }
 
     // What the pass's stages did in the last drawn frame, counted while setStatistics(true)
-    // (read back at once: tests, profiling). -1 where not counted: the three invocation
-    // counts need GL 4.6 or ARB_pipeline_statistics_query (llvmpipe has it).
+    // (read back at once: tests, profiling). -1 where not counted: the invocation counts
+    // need GL 4.6 or ARB_pipeline_statistics_query (llvmpipe has it).
     struct Statistics {
         long long primitives = -1;  // triangles the tessellation emitted (GL_PRIMITIVES_GENERATED)
         long long vertices = -1;    // vertex-stage invocations (one height each)
         long long clipped = -1;     // triangles out of clipping: those at least partly in the view
-        long long patches = -1;     // control-stage patches (each its four corners' heights)
+        long long patches = -1;     // control-stage patches (the heights come from the vertex stage)
         long long evaluations = -1; // evaluation-stage invocations (one height each)
         long long fragments = -1;   // fragment-stage invocations
     };
