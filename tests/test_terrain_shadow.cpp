@@ -282,6 +282,23 @@ glm::dvec3 pixelRay(const Camera& camera, int x, int imageRow) {
     return glm::normalize(camera.worldFromView() * glm::normalize(glm::dvec3(v) / v.w));
 }
 
+// The render tests' tally: the GPU's class (1 lit, 0 shadowed) against the reference's at each
+// judged pixel; `check` asks for both kinds (10 each) and agreement at `share` of them.
+struct Tally {
+    int agree = 0, disagree = 0, lit = 0, shadowed = 0;
+    void add(int gpu, int reference) {
+        (gpu == reference ? agree : disagree) += 1;
+        (reference == 1 ? lit : shadowed) += 1;
+    }
+    void check(const char* what, double share) const {
+        std::printf("%s: %d judged, reference lit %d, shadowed %d; the GPU agrees at %d, disagrees at %d\n", what,
+                    agree + disagree, lit, shadowed, agree, disagree);
+        EXPECT_GE(lit, 10);
+        EXPECT_GE(shadowed, 10);
+        EXPECT_GE(agree, share * (agree + disagree));
+    }
+};
+
 // One pixel's surface point and what the two renders made of it.
 struct SurfaceSample {
     glm::dvec3 point;   // km from the planet centre
@@ -339,22 +356,16 @@ TEST_F(TerrainShadowRender, MountainShadowsAtALowSunMatchACpuMarch) {
     const Session lit = mountains(kSunElevationDeg, kSunAzimuthDeg, false);
     const Session shadowed = mountains(kSunElevationDeg, kSunAzimuthDeg, true);
     const glm::dvec3 sun = shadowed.scene.sunDirection();
-    int agree = 0, disagree = 0, litCount = 0, shadowCount = 0;
+    Tally tally;
     for (const SurfaceSample& s : surfaceSamples(*renderer, lit, shadowed, 3)) {
         if (glm::dot(s.normal, sun) < 0.3 || s.without <= 0.0) continue;
         const glm::dvec3 up = glm::normalize(s.point);
         if (shadowed.ground.height(glm::vec3(up)) < 0.0f) continue;  // the sea floor
         const int reference = referenceClass(referenceClearance(shadowed.ground, up, sun), 0.01);
         if (reference < 0) continue;
-        const int gpu = s.withShadows > 0.75 * s.without ? 1 : 0;
-        (gpu == reference ? agree : disagree) += 1;
-        (reference == 1 ? litCount : shadowCount) += 1;
+        tally.add(s.withShadows > 0.75 * s.without ? 1 : 0, reference);
     }
-    std::printf("sampled %d pixels: reference lit %d, shadowed %d; GPU agrees at %d, disagrees at %d\n",
-                agree + disagree, litCount, shadowCount, agree, disagree);
-    EXPECT_GE(litCount, 10);
-    EXPECT_GE(shadowCount, 10);
-    EXPECT_GE(agree, 0.9 * (agree + disagree));
+    tally.check("land pixels", 0.9);
 }
 
 namespace {
@@ -412,7 +423,7 @@ TEST_F(TerrainShadowRender, TheSeaInAMountainsShadowMatchesACpuMarch) {
         off.render(s.scene, s.camera, kSize);
         without = readTextureRGBAF(off.targets().surfaceRadiance(), kSize.x, kSize.y);
     }
-    int agree = 0, disagree = 0, litCount = 0, shadowCount = 0;
+    Tally tally;
     for (int imageRow = 1; imageRow < kSize.y; imageRow += 2) {
         for (int x = 1; x < kSize.x; x += 2) {
             const double d = test::pixelAt(distance, x, imageRow)[0];
@@ -425,16 +436,10 @@ TEST_F(TerrainShadowRender, TheSeaInAMountainsShadowMatchesACpuMarch) {
             const double a = luminanceOf(test::pixelAt(with, x, imageRow));
             const double b = luminanceOf(test::pixelAt(without, x, imageRow));
             if (!(b > 0.0)) continue;
-            const int gpu = a < 0.998 * b ? 0 : 1;
-            (gpu == reference ? agree : disagree) += 1;
-            (reference == 1 ? litCount : shadowCount) += 1;
+            tally.add(a < 0.998 * b ? 0 : 1, reference);
         }
     }
-    std::printf("sampled %d sea pixels: reference lit %d, shadowed %d; GPU agrees at %d, disagrees at %d\n",
-                agree + disagree, litCount, shadowCount, agree, disagree);
-    EXPECT_GE(litCount, 10);
-    EXPECT_GE(shadowCount, 10);
-    EXPECT_GE(agree, 0.9 * (agree + disagree));
+    tally.check("sea pixels", 0.9);
 }
 
 // Light shafts (terrain.light_shafts): the 'mountains' view with the sun 7 deg up in the east,
@@ -461,7 +466,7 @@ TEST_F(TerrainShadowRender, LightShaftsDarkenTheAirWhereACpuMarchFindsItShadowed
     const ImageRGBAF distance = readTextureRGBAF(renderer->targets().surfaceDistance(), kSize.x, kSize.y);
     const glm::dvec3 sun = on.scene.sunDirection();
     const double reachKm = kRadiusKm + on.ground.shape().maxHeight / 1000.0;
-    int agree = 0, disagree = 0, litAir = 0, shadowedAir = 0;
+    Tally tally;
     for (int imageRow = 1; imageRow < kSize.y; imageRow += 3) {
         for (int x = 1; x < kSize.x; x += 3) {
             const double d = test::pixelAt(distance, x, imageRow)[0] / 1000.0;  // km
@@ -485,14 +490,8 @@ TEST_F(TerrainShadowRender, LightShaftsDarkenTheAirWhereACpuMarchFindsItShadowed
             if (reference < 0) continue;
             const double a = luminanceOf(test::pixelAt(with, x, imageRow));
             const double b = luminanceOf(test::pixelAt(without, x, imageRow));
-            const int gpu = a < b * (1.0 - 1e-4) ? 0 : 1;
-            (gpu == reference ? agree : disagree) += 1;
-            (reference == 1 ? litAir : shadowedAir) += 1;
+            tally.add(a < b * (1.0 - 1e-4) ? 0 : 1, reference);
         }
     }
-    std::printf("judged %d pixels: air lit %d, over 30 %% shadowed %d; the GPU agrees at %d, disagrees at %d\n",
-                agree + disagree, litAir, shadowedAir, agree, disagree);
-    EXPECT_GE(litAir, 10);
-    EXPECT_GE(shadowedAir, 10);
-    EXPECT_GE(agree, 0.85 * (agree + disagree));
+    tally.check("pixels' air (shadowed: over 30 %)", 0.85);
 }

@@ -4,6 +4,7 @@
 #include <cctype>
 #include <cmath>
 #include <cstdlib>
+#include <functional>
 #include <iostream>
 #include <stdexcept>
 
@@ -25,6 +26,19 @@ CLI::Validator finiteIn(double lo, double hi, const std::string& what) {
             return {};
         },
         "NUMBER");
+}
+
+// What `parse` accepts: its std::invalid_argument's message is the option's error.
+template <typename Parse>
+std::function<std::string(const std::string&)> acceptedBy(Parse parse) {
+    return [parse](const std::string& choice) -> std::string {
+        try {
+            parse(choice);
+            return {};
+        } catch (const std::invalid_argument& e) {
+            return e.what();
+        }
+    };
 }
 
 // An output that is written as PNG must be named so: PNG bytes under a .jpg name mislead.
@@ -51,14 +65,7 @@ void addCommon(CLI::App& cmd, planet::CommonOptions& o) {
                    "else full), or explicit RxMUxMU_SxNU[,TWxTH[,IWxIH]] (scattering r, mu, mu_s, nu; transmittance; "
                    "irradiance); default: $PLANET_TABLES, else auto")
         ->envname("PLANET_TABLES")
-        ->check([](const std::string& choice) -> std::string {
-            try {
-                planet::atmosphere::tableSizesFor(choice, "");
-                return {};
-            } catch (const std::invalid_argument& e) {
-                return e.what();
-            }
-        })
+        ->check(acceptedBy([](const std::string& choice) { planet::atmosphere::tableSizesFor(choice, ""); }))
         ->capture_default_str();
     cmd.add_option("--time", o.time, "Clock of the first frame, s (the ocean's waves move with it)")
         ->check(finiteIn(-1e9, 1e9, "a finite number of seconds in [-1e9, 1e9]").name("SECONDS"))
@@ -87,14 +94,7 @@ int main(int argc, char** argv) {
                            "Share of the window's width and height the frame is rendered at, shown scaled up: 0.1-1, "
                            "or auto (1 on a GPU; on a software renderer such as llvmpipe, about 320x180 pixels, so "
                            "the window stays interactive). The Frame time panel changes it live")
-        ->check([](const std::string& choice) -> std::string {
-            try {
-                planet::parseRenderScale(choice);
-                return {};
-            } catch (const std::invalid_argument& e) {
-                return e.what();
-            }
-        })
+        ->check(acceptedBy([](const std::string& choice) { planet::parseRenderScale(choice); }))
         ->capture_default_str();
     exploreCmd->add_option("--path", explore.path,
                            "Play a camera path (name under assets/paths or a file), one path frame (1 / fps) per "

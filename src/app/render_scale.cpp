@@ -4,7 +4,7 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "render/profiler.h"
+#include "gl/context.h"
 
 namespace planet {
 
@@ -27,7 +27,7 @@ std::optional<double> parseRenderScale(const std::string& choice) {
 
 double renderScaleFor(const std::optional<double>& chosen, const std::string& glRenderer, glm::ivec2 window) {
     if (chosen) return *chosen;
-    if (!softwareRenderer(glRenderer) || window.x <= 0 || window.y <= 0) return 1.0;
+    if (!gl::softwareRenderer(glRenderer) || window.x <= 0 || window.y <= 0) return 1.0;
     const double pixels = static_cast<double>(window.x) * window.y;
     return std::clamp(std::sqrt(kSoftwareFramePixels / pixels), kMinRenderScale, 1.0);
 }

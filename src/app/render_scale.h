@@ -22,7 +22,7 @@ inline constexpr double kMinRenderScale = 0.1;
 std::optional<double> parseRenderScale(const std::string& choice);
 
 // The scale used for a window of `window` pixels: the explicit one, or for auto 1 on a
-// hardware renderer and, on a software one (render/profiler.h: softwareRenderer), the
+// hardware renderer and, on a software one (gl/context.h: softwareRenderer), the
 // largest scale whose frame has at most kSoftwareFramePixels pixels.
 double renderScaleFor(const std::optional<double>& chosen, const std::string& glRenderer, glm::ivec2 window);
 

@@ -6,6 +6,8 @@
 #include <stdexcept>
 #include <vector>
 
+#include "gl/context.h"
+
 namespace planet::atmosphere {
 
 std::size_t TableSizes::bytes() const {
@@ -81,9 +83,7 @@ TableSizes tableSizesFor(const std::string& choice, const std::string& glRendere
     if (choice == "medium") return TableSizes::medium();
     if (choice == "reduced") return TableSizes::reduced();
     if (choice != "auto") return explicitSizes(choice);
-    for (const char* software : {"llvmpipe", "softpipe", "swrast"})
-        if (glRenderer.find(software) != std::string::npos) return TableSizes::medium();
-    return TableSizes{};
+    return gl::softwareRenderer(glRenderer) ? TableSizes::medium() : TableSizes{};
 }
 
 namespace {

@@ -112,4 +112,10 @@ std::string rendererDescription() {
     return str(GL_RENDERER) + " (" + str(GL_VENDOR) + "), OpenGL " + str(GL_VERSION);
 }
 
+bool softwareRenderer(std::string_view glRenderer) {
+    for (const char* software : {"llvmpipe", "softpipe", "swrast"})
+        if (glRenderer.find(software) != std::string_view::npos) return true;
+    return false;
+}
+
 }  // namespace planet::gl

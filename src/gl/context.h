@@ -9,6 +9,7 @@
 #include <memory>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 
 namespace planet::gl {
 
@@ -39,5 +40,9 @@ void requireGL45();
 
 // "renderer (vendor), OpenGL version" of the current context.
 std::string rendererDescription();
+
+// Whether a renderer description names a software renderer (llvmpipe, softpipe, swrast): the
+// GPU is the CPU there (coarse timestamps; smaller default tables and render scale).
+bool softwareRenderer(std::string_view glRenderer);
 
 }  // namespace planet::gl

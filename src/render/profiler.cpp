@@ -17,12 +17,6 @@ double threadCpuMs() {
 }
 }  // namespace
 
-bool softwareRenderer(std::string_view glRenderer) {
-    for (const char* software : {"llvmpipe", "softpipe", "swrast"})
-        if (glRenderer.find(software) != std::string_view::npos) return true;
-    return false;
-}
-
 const char* softwareTimingNote() {
     return "software renderer (the GPU is the CPU): GPU timestamps are coarse, taken when the driver's threads reach "
            "them rather than when the work is done (a draw that kept llvmpipe busy 141 ms read 10 ms), so read the "

@@ -29,6 +29,7 @@
 #include <string_view>
 #include <vector>
 
+#include "gl/context.h"
 #include "gl/handle.h"
 #include "render/stats.h"
 
@@ -44,8 +45,8 @@ struct PassTimings {
     std::vector<double> recordedWaitMs;
 };
 
-// Whether the GL renderer string names a software renderer (llvmpipe, softpipe, swrast).
-bool softwareRenderer(std::string_view glRenderer);
+// Whether the GL renderer string names a software renderer (gl/context.h).
+using gl::softwareRenderer;
 // One line for the profiler panel and bench: what a software renderer's timings mean.
 const char* softwareTimingNote();
 
