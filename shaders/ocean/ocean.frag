@@ -81,6 +81,11 @@ vec3 reflectedRadiance(vec3 point, vec3 reflected, vec3 up, ivec2 pixel, vec3 su
 
 void main() {
     ivec2 pixel = ivec2(gl_FragCoord.xy);
+    // The surface's step from this pixel to the next, taken before any discard (derivatives
+    // need the whole quad): how far the water's depth changes across the pixel (the shore's
+    // coverage below).
+    vec3 stepX = dFdx(tePosition);
+    vec3 stepY = dFdy(tePosition);
     float surfaceDistance = length(tePosition);
     vec3 view = tePosition / surfaceDistance;  // camera -> surface
     vec3 up = normalize(teDirection);
@@ -103,15 +108,42 @@ void main() {
     float pulled = max(dot(tePosition, forward) - 2.0 * sag / cosIncidence * dot(view, forward), frame.nearPlane);
     float fragmentDepth = depthFromViewDistance(pulled);
     float seabed = texelFetch(seabedDepth, pixel, 0).r;
-    if (ocean.landCulling != 0 && seabed > 0.0 && !(fragmentDepth > seabed)) discard;
-
+    float forwardCos = max(dot(view, forward), 1e-6);
+    float seabedDistance = seabed > 0.0 ? viewDistanceFromDepth(seabed) / forwardCos : 1e30;
     float footprint = surfaceDistance * pixelAngle / max(abs(dot(view, up)), 0.02);
-    float waterDepth = ocean.seaLevel - terrainHeight(up, terrainShape, uContinents);  // below the mean surface
+    // Behind the land the depth test would drop this fragment, unless the land is the shore
+    // itself, within this pixel's footprint in front of the water (its coverage below).
+    bool behindLand = seabed > 0.0 && !(fragmentDepth > seabed);
+    if (behindLand && surfaceDistance - seabedDistance > footprint) discard;
+
+    vec3 heightGradient;
+    float waterDepth = ocean.seaLevel - terrainHeightGrad(up, terrainShape, uContinents, heightGradient);
+    // The shore's coverage of the pixel: the water's depth d along the local vertical (signed:
+    // below 0 on land) changes across the pixel by `depthSpread` (the terrain's slope along
+    // the pixel's steps); the share of the pixel under water is that of a linear ramp,
+    // smoothstep(-spread/2, fade + spread/2, d), which near the camera (spread 0) is the
+    // SHORE_FADE_M fade of the water's path and far off the area of the pixel on the wet
+    // side of the waterline: an edge anti-aliased analytically, not a staircase of pixels.
+    vec3 slope = (heightGradient - dot(heightGradient, up) * up) / frame.planetRadius;  // m per m of ground
+    float depthSpread = min(abs(dot(slope, stepX)) + abs(dot(slope, stepY)), 2.0 * length(slope) * footprint);
     // Land: near the camera only where no crest can reach (waves may run up a beach, and the
-    // depth test is exact there); where the meshes sag, wherever the terrain is above the sea.
+    // depth test is exact there); where the meshes sag, wherever the terrain is above the sea;
+    // less half the pixel's spread, where the pixel still holds some of the water.
     float farness = smoothstep(0.05, 0.5, sag);
-    if (waterDepth < -ocean.maxWaveHeight * (1.0 - farness)) discard;
-    gl_FragDepth = fragmentDepth;
+    if (waterDepth < -ocean.maxWaveHeight * (1.0 - farness) - 0.5 * depthSpread) discard;
+    // The water's path along the ray, signed (below 0: the land is in front), and the spread
+    // as a path: the ray descends sin(elevation) per metre.
+    float pathSpread = depthSpread / max(abs(dot(view, up)), 1e-4);
+    // Where the terrain's mesh drew nothing behind the sea (its chords sag off the limb
+    // from far away) there is no floor to fade into: the sea is the only surface there.
+    float coverage = 1.0;
+    if (seabed > 0.0) {
+        float signedPath = mix(seabedDistance - surfaceDistance, waterDepth / cosIncidence, farness);
+        coverage = smoothstep(-0.5 * pathSpread, SHORE_FADE_M + 0.5 * pathSpread, signedPath);
+    }
+    if (behindLand && coverage <= 0.0) discard;  // what the depth test would have done
+    // A shore fragment behind the land's is moved just in front of it (the depth only grows).
+    gl_FragDepth = behindLand ? uintBitsToFloat(floatBitsToUint(seabed) + 1u) : fragmentDepth;
     float slopeVariance;
     vec3 normal = oceanNormal(up, teOffset, footprint, waterDepth, slopeVariance);
     // Seen from below only when the camera is under the sea: not from gl_FrontFacing, which
@@ -126,14 +158,13 @@ void main() {
 
     // Water between the surface and the seabed along this pixel's ray: from the depth
     // buffer near the camera, from the depth below the surface where the meshes sag.
-    float seabedDistance = seabed > 0.0 ? viewDistanceFromDepth(seabed) / max(dot(view, forward), 1e-6) : 1e30;
     float meshPath = max(seabedDistance - surfaceDistance, 0.0);
     float depthPath = max(waterDepth, 0.0) / cosIncidence;
     float waterPath = mix(meshPath, depthPath, farness);
     vec3 behind = texelFetch(seabedRadiance, pixel, 0).rgb;
 
     vec3 point = cameraFromPlanetCentreKm() + tePosition / M_PER_KM;  // km from the planet centre
-    outSurfaceDistance = surfaceDistance;
+    outSurfaceDistance = behindLand ? seabedDistance : surfaceDistance;  // mostly the land's pixel
     float fresnel = waterFresnel(cosView);
     if (fromBelow) {  // the sky above, through the surface; the water below is the sky pass's
         vec3 skyTransmittance;
@@ -173,8 +204,5 @@ void main() {
     vec3 deep = deepWaterRadiance(sunIrradiance + skyIrradiance);
     vec3 surface = (1.0 - fresnel) * waterTransmittance * behind + fresnel * sky + glitter +
                    (1.0 - fresnel) * (1.0 - waterTransmittance) * deep;
-    // Where the terrain's mesh drew nothing behind the sea (its chords sag off the limb
-    // from far away) there is no floor to fade into: the sea is the only surface there.
-    float coverage = seabed > 0.0 ? smoothstep(0.0, SHORE_FADE_M, waterPath) : 1.0;
     outSurfaceRadiance = vec4(min(mix(behind, surface, coverage), vec3(MAX_HDR_RADIANCE)), 1.0);
 }

@@ -72,9 +72,16 @@ ivec2 pixelAt(vec2 ndc) {
 }
 
 // How far the ray at u stands behind what the depth copy holds there, relative to its own
-// depth (> 0: behind; the sky, depth 0, is never in front of it). Reversed-Z: depth = near / w.
+// depth (> 0: behind; the sky, depth 0, is never in front of it). Reversed-Z: depth = near / w,
+// which is affine on screen over a plane, so the copy is read filtered at the ray's own point,
+// not at the centre of its pixel: at grazing views one pixel spans hundreds of metres of
+// depth, and against its centre a ray rising from shallow water was found "behind" the sea
+// floor under it or not by where in the pixel its step fell (a checker of dark dots along
+// the shore).
 float behindDepthBuffer(sampler2D depthCopy, vec2 ndc0, vec2 ndcEnd, float w0, float u) {
-    float sceneDepth = texelFetch(depthCopy, pixelAt(mix(ndc0, ndcEnd, u)), 0).r;
+    vec2 uv = clamp(mix(ndc0, ndcEnd, u) * 0.5 + 0.5, 0.5 * frame.inverseViewportSize,
+                    1.0 - 0.5 * frame.inverseViewportSize);
+    float sceneDepth = textureLod(depthCopy, uv, 0.0).r;
     float rayDepth = frame.nearPlane * (1.0 - u) / w0;
     return sceneDepth / max(rayDepth, 1e-30) - 1.0;  // w_ray / w_scene - 1
 }

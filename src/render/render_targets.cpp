@@ -84,6 +84,9 @@ bool RenderTargets::resize(glm::ivec2 size) {
     ldr_ = makeTexture(GL_RGBA8, size, "ldr");
     ldrFramebuffer_ = makeFramebuffer({&ldr_}, nullptr, "ldr");
     seabedDepth_ = makeTexture(GL_DEPTH_COMPONENT32F, size, "seabed depth");
+    // Read between texels by the sea's screen-space reflections (its depth is affine on screen).
+    glTextureParameteri(seabedDepth_.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    glTextureParameteri(seabedDepth_.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
     seabedRadiance_ = makeTexture(GL_RGBA16F, size, "seabed radiance");
     history_.radiance = makeTexture(GL_RGBA16F, size, "history.radiance");
     // Read between texels by the anti-aliasing's reprojection.
