@@ -288,3 +288,64 @@ TEST_F(OceanRender, FromSpaceTheCoastlineFollowsTheHeightField) {
     EXPECT_LT(wetLand, land / 200);  // 0.5 %: pixels the hit-point test and the rasteriser see differently
     EXPECT_LT(drySea, sea / 200);
 }
+
+// Foam where the waves break (ocean_waves.glsl, oceanFoam): the beach and the open sea
+// rendered with the foam and with it compiled out. Sea pixels over water deeper than the
+// breaking depth of the whole sea state (the sum of the amplitudes / 0.39) are the same to the
+// bit (the loop never runs there); sea pixels over water shallower than the largest wave's
+// breaking depth are brighter on the whole, by at least half the cover the CPU twin
+// (ocean/waves.h, foamCover) gives their depths (a white of 0.6 over a sea of a few per cent).
+// Able to fail: without the foam nothing changes; foam in the open sea breaks the first check.
+TEST_F(OceanRender, FoamBrightensTheSurfAndNothingElse) {
+    Renderer off(test::shadersWith("planet_test_foam_off", "ocean/ocean.frag", "#define OCEAN_FOAM 1",
+                                   "#define OCEAN_FOAM 0"),
+                 atmosphere::TableSizes::reduced());
+    int deep = 0, deepChanged = 0, surf = 0;
+    double lumWith = 0.0, lumWithout = 0.0, cover = 0.0;
+    for (const std::string view : {"beach", "sea"}) {
+        Session s = session(view);
+        s.scene.clouds.enabled = false;
+        renderer->render(s.scene, s.camera, kSize);
+        const ImageRGBAF with = readTextureRGBAF(renderer->targets().surfaceRadiance(), kSize.x, kSize.y);
+        const ImageRGBAF distance = readTextureRGBAF(renderer->targets().surfaceDistance(), kSize.x, kSize.y);
+        off.render(s.scene, s.camera, kSize);
+        const ImageRGBAF without = readTextureRGBAF(off.targets().surfaceRadiance(), kSize.x, kSize.y);
+        double amplitudes = 0.0, largest = 0.0;
+        for (const ocean::GerstnerWave& w : s.scene.waves) {
+            amplitudes += w.amplitude_m;
+            largest = std::max(largest, w.amplitude_m);
+        }
+        const double t = std::tan(0.5 * s.camera.fovY_rad), aspect = double(kSize.x) / kSize.y;
+        for (int row = 0; row < kSize.y; ++row) {
+            for (int x = 0; x < kSize.x; ++x) {
+                const double d = test::pixelAt(distance, x, row)[0];
+                if (!(d > 0.0)) continue;
+                const glm::dvec2 ndc = 2.0 * (glm::dvec2(x, kSize.y - 1 - row) + 0.5) / glm::dvec2(kSize) - 1.0;
+                const glm::dvec3 dir =
+                    glm::normalize(s.camera.worldFromView() * glm::dvec3(ndc.x * t * aspect, ndc.y * t, -1.0));
+                const glm::dvec3 up = glm::normalize(s.camera.position + dir * d);
+                const double depth = s.scene.ocean.sea_level_m - s.ground.height(glm::vec3(up));
+                const float* a = test::pixelAt(with, x, row);
+                const float* b = test::pixelAt(without, x, row);
+                if (depth > amplitudes / 0.39 + 0.5) {
+                    ++deep;
+                    if (a[0] != b[0] || a[1] != b[1] || a[2] != b[2]) ++deepChanged;
+                } else if (depth > 0.05 && depth < largest / 0.39) {
+                    ++surf;
+                    lumWith += luminance(a);
+                    lumWithout += luminance(b);
+                    cover += ocean::foamCover(s.scene.waves, depth);
+                }
+            }
+        }
+    }
+    std::printf("foam: %d deep sea pixels (%d changed), %d surf pixels: mean luminance %.5f -> %.5f, mean CPU cover "
+                "%.3f\n",
+                deep, deepChanged, surf, lumWithout / std::max(surf, 1), lumWith / std::max(surf, 1),
+                cover / std::max(surf, 1));
+    EXPECT_GT(deep, 1000);
+    EXPECT_EQ(deepChanged, 0);
+    ASSERT_GT(surf, 50);
+    EXPECT_GT(cover / surf, 0.02);
+    EXPECT_GT(lumWith, lumWithout * (1.0 + 0.5 * cover / surf));
+}

@@ -753,3 +753,35 @@ TEST(OceanGenerator, ValidateOceanParams) {
 
 }  // namespace
 }  // namespace planet::ocean
+
+// The foam at the shore (waves.h, foamCover; the GPU's copy in ocean_waves.glsl): one wave
+// of amplitude A breaks shoreward of d_b = A / 0.39 and keeps (0.39 d)^2 of its energy, so the
+// cover is 0.39 d / A x 35/128 there: none in deeper water, none at the waterline, the crest
+// mean just inside the breaking line; two waves weigh by their energies.
+TEST(OceanFoam, CoverPeaksAtTheBreakingLineAndVanishesAtTheWaterline) {
+    using planet::ocean::foamCover;
+    using planet::ocean::kFoamCrestMean;
+    planet::ocean::GerstnerWave big;
+    big.amplitude_m = 1.0;
+    const std::vector<planet::ocean::GerstnerWave> one{big};
+    const double breaking = 1.0 / 0.39;
+    EXPECT_EQ(foamCover(one, breaking + 0.01), 0.0);
+    EXPECT_EQ(foamCover(one, 50.0), 0.0);
+    EXPECT_EQ(foamCover(one, 0.0), 0.0);
+    EXPECT_NEAR(foamCover(one, 0.5 * breaking), 0.5 * kFoamCrestMean, 1e-12);
+    EXPECT_NEAR(foamCover(one, 0.999 * breaking), 0.999 * kFoamCrestMean, 1e-12);
+    EXPECT_NEAR(kFoamCrestMean, 35.0 / 128.0, 0.0);
+    // The crest pattern's mean, ((1 + sin x) / 2)^4 over a period, by quadrature.
+    double mean = 0.0;
+    const int n = 4096;
+    for (int i = 0; i < n; ++i) mean += std::pow(0.5 + 0.5 * std::sin(2.0 * std::numbers::pi * (i + 0.5) / n), 4.0);
+    EXPECT_NEAR(mean / n, kFoamCrestMean, 1e-9);
+    // Two waves: A = 1 keeps 0.39, A = 0.5 keeps 0.78 at 1 m; energies 1 and 0.25.
+    planet::ocean::GerstnerWave small;
+    small.amplitude_m = 0.5;
+    const std::vector<planet::ocean::GerstnerWave> two{big, small};
+    EXPECT_NEAR(foamCover(two, 1.0), (1.0 * 0.39 + 0.25 * 0.78) / 1.25 * kFoamCrestMean, 1e-12);
+    // At 1.5 m only the big one breaks: (1 x 0.585) / 1.25.
+    EXPECT_NEAR(foamCover(two, 1.5), 0.585 / 1.25 * kFoamCrestMean, 1e-12);
+    EXPECT_EQ(foamCover({}, 1.0), 0.0);
+}

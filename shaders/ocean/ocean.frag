@@ -55,7 +55,9 @@ layout(location = 1) out float outSurfaceDistance;
 
 layout(depth_greater) out float gl_FragDepth;  // reversed-Z: only ever moved towards the camera
 
-const float SHORE_FADE_M = 0.5;  // water path over which the sea fades in at the shore
+const float SHORE_FADE_M = 0.5;
+// Off (0), no foam where the waves break at the shore (tests compare the two).
+#define OCEAN_FOAM 1  // water path over which the sea fades in at the shore
 
 // What the sea reflects along `reflected` from `point` (km from the planet centre; this
 // fragment): the terrain where the reflected ray finds it on screen (ocean/
@@ -145,7 +147,9 @@ void main() {
     // A shore fragment behind the land's is moved just in front of it (the depth only grows).
     gl_FragDepth = behindLand ? uintBitsToFloat(floatBitsToUint(seabed) + 1u) : fragmentDepth;
     float slopeVariance;
-    vec3 normal = oceanNormal(up, teOffset, footprint, waterDepth, slopeVariance);
+    float foam;  // the share of the surface under foam where the waves break
+    vec3 normal = oceanNormalAndFoam(up, teOffset, footprint, waterDepth,
+                                     OCEAN_FOAM != 0 ? ocean.maxWaveHeight / 0.39 : 0.0, slopeVariance, foam);
     // Seen from below only when the camera is under the sea: not from gl_FrontFacing, which
     // also flips on the far side of steep crests at grazing views, where the sea is seen from above.
     bool fromBelow = frame.cameraDepthBelowSea > 0.0;
@@ -204,5 +208,6 @@ void main() {
     vec3 deep = deepWaterRadiance(sunIrradiance + skyIrradiance);
     vec3 surface = (1.0 - fresnel) * waterTransmittance * behind + fresnel * sky + glitter +
                    (1.0 - fresnel) * (1.0 - waterTransmittance) * deep;
+    surface = mix(surface, foamRadiance(sunIrradiance + skyIrradiance), foam);
     outSurfaceRadiance = vec4(min(mix(behind, surface, coverage), vec3(MAX_HDR_RADIANCE)), 1.0);
 }

@@ -37,27 +37,64 @@ vec3 oceanDisplacement(vec3 v, vec3 dv, float footprint, float waterDepth) {
     return displacement;
 }
 
+// Foam where the waves break (the surf at the shore). Shoreward of the depth where it starts
+// to break, A / 0.39, a wave keeps the energy (0.39 d)^2 (oceanShoaling), so it spends
+// d(0.39 d)^2 / dd = 2 x 0.39^2 d per metre of depth: most at its breaking line, none at the
+// waterline (what is left has broken already). Relative to its energy A^2 that is s (the
+// share oceanShoaling keeps); the foam's cover is the waves' energy-weighted s where they
+// break (ocean/waves.h, foamCover, is its CPU twin), laid on each breaking wave's crests,
+// ((1 + sin phase) / 2)^4, and for waves the pixel cannot resolve on the mean of that,
+// 35/128: from afar a lighter band along the break, near foam lines on the crests running in.
+const float OCEAN_FOAM_CREST_MEAN = 35.0 / 128.0;
+
 // Michelic Eq. 10's normal from the waves a pixel of `footprint` metres resolves; the
 // slopes of the waves it cannot resolve go into slopeVariance instead (the mean square
 // slope of a sine of amplitude A and wavenumber k is (A k)^2 / 2), which widens the sun's
-// glitter as a rougher sea does.
-vec3 oceanNormal(vec3 v, vec3 dv, float footprint, float waterDepth, out float slopeVariance) {
+// glitter as a rougher sea does. foam: the cover above, from the same phases (0 in water
+// deeper than every wave's breaking depth, `breakingDepth`).
+vec3 oceanNormalAndFoam(vec3 v, vec3 dv, float footprint, float waterDepth, float breakingDepth,
+                        out float slopeVariance, out float foam) {
     vec3 normal = v;
     slopeVariance = 0.0;
-    for (int i = 0; i < ocean.waveCount; ++i) {
+    float energy = 0.0;
+    foam = 0.0;
+    int i = 0;
+    for (; i < ocean.waveCount; ++i) {
         OceanWave w = oceanWaves[i];
         float lod = gerstnerLod(w, footprint);
         if (lod <= 0.0) {  // sorted longest first: this and the rest only roughen (short: no shoaling)
             slopeVariance += w.scale.z;
             break;
         }
-        float ak = w.shape.x * w.scale.x * oceanShoaling(w.shape.x, waterDepth);
+        float kept = oceanShoaling(w.shape.x, waterDepth);
+        float ak = w.shape.x * w.scale.x * kept;
         slopeVariance += (1.0 - lod) * 0.5 * ak * ak;
         vec3 travel;
         float oneMinusAbsCos;
         float phase = gerstnerPhase(w, dv, travel, oneMinusAbsCos);
         float q = gerstnerSteepness(w, oneMinusAbsCos, ocean.fadeStart, ocean.fadeEnd);
         normal -= v * (lod * q * ak * sin(phase)) + travel * (lod * ak * cos(phase));
+        float crest = 0.5 + 0.5 * sin(phase);
+        crest = mix(OCEAN_FOAM_CREST_MEAN, crest * crest * crest * crest, lod);
+        energy += w.shape.x * w.shape.x;
+        if (kept < 1.0) foam += w.shape.x * w.shape.x * kept * crest;
     }
+    // The waves too short to resolve: their energy and their foam's mean, where any may break
+    // (a loop of one turn or none: the open sea skips it).
+    for (int shallow = 0; shallow < (waterDepth < breakingDepth ? 1 : 0); ++shallow) {
+        for (; i < ocean.waveCount; ++i) {
+            float a = oceanWaves[i].shape.x;
+            float kept = oceanShoaling(a, waterDepth);
+            energy += a * a;
+            if (kept < 1.0) foam += a * a * kept * OCEAN_FOAM_CREST_MEAN;
+        }
+        foam = energy > 0.0 ? foam / energy : 0.0;
+    }
+    if (!(waterDepth < breakingDepth)) foam = 0.0;  // no wave breaks here (or the foam is off)
     return normalize(normal);
+}
+
+vec3 oceanNormal(vec3 v, vec3 dv, float footprint, float waterDepth, out float slopeVariance) {
+    float foam;
+    return oceanNormalAndFoam(v, dv, footprint, waterDepth, 0.0, slopeVariance, foam);
 }

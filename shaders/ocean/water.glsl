@@ -27,6 +27,11 @@ void lightUnderWater(float depthM, float cosSunZenith, inout vec3 sunIrradiance,
 
 vec3 deepWaterRadiance(vec3 irradiance) { return DEEP_WATER_ALBEDO / PI * irradiance; }
 
+// Sea foam: a diffuse white of about 0.6 (whitecaps' reflectance in the visible, 0.4-0.7:
+// Whitlock, Bartlett & Gurney 1982; Koepke 1984), lit as a horizontal surface.
+const float FOAM_ALBEDO = 0.6;
+vec3 foamRadiance(vec3 irradiance) { return FOAM_ALBEDO / PI * irradiance; }
+
 // Schlick's approximation of the Fresnel reflectance of water for incidence cosine c.
 float waterFresnel(float c) {
     float m = 1.0 - clamp(c, 0.0, 1.0);

@@ -122,4 +122,19 @@ std::string validateWaves(const std::vector<GerstnerWave>& waves) {
     return "";
 }
 
+double shoalingKept(double amplitude_m, double waterDepth_m) {
+    return std::clamp(0.39 * waterDepth_m / std::max(amplitude_m, 1e-6), 0.0, 1.0);
+}
+
+double foamCover(const std::vector<GerstnerWave>& waves, double waterDepth_m) {
+    double energy = 0.0, foam = 0.0;
+    for (const GerstnerWave& w : waves) {
+        const double a2 = w.amplitude_m * w.amplitude_m;
+        const double kept = shoalingKept(w.amplitude_m, waterDepth_m);
+        energy += a2;
+        if (kept < 1.0) foam += a2 * kept * kFoamCrestMean;
+    }
+    return energy > 0.0 ? foam / energy : 0.0;
+}
+
 }  // namespace planet::ocean

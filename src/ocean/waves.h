@@ -82,4 +82,18 @@ double gerstnerHeight(const std::vector<GerstnerWave>& waves, glm::dvec3 unitDir
 // the first bad wave by index and field.
 std::string validateWaves(const std::vector<GerstnerWave>& waves);
 
+// Waves at the shore (shaders/ocean/ocean_waves.glsl is the GPU's copy of both).
+// A wave breaks when its height 2A reaches 0.78 times the water depth d below the mean
+// surface (McCowan's breaker index): the share of its amplitude the depth lets it keep,
+// min(0.39 d / A, 1).
+double shoalingKept(double amplitude_m, double waterDepth_m);
+
+// The sea foam's mean cover at depth d from waves the pixel does not resolve: shoreward of its
+// breaking depth a wave keeps the energy (0.39 d)^2, so it spends 2 x 0.39^2 d per metre of
+// depth, most at its breaking line and none at the waterline; per unit of its energy A^2 that
+// is its kept share s. The cover is sum A_i^2 s_i over the breaking waves (s_i < 1) over
+// sum A_i^2, times the mean of the crest pattern ((1 + sin)/2)^4 the foam lies on, 35/128.
+inline constexpr double kFoamCrestMean = 35.0 / 128.0;
+double foamCover(const std::vector<GerstnerWave>& waves, double waterDepth_m);
+
 }  // namespace planet::ocean
