@@ -32,10 +32,18 @@ TEST(ShadersOffline, EveryStageValidatesWithGlslang) {
             expanded = planet::gl::expandShader(
                 root, file,
                 planet::gl::shaderPreamble() + planet::atmosphere::atmosphereShaderDefines(planet::atmosphere::TableSizes{}));
-        // Programs compiled in variants (the atmosphere pass: ELEK_TABLE 0 and 1) are checked in each.
+        // Programs compiled in variants (src/render/atmosphere_program.h: ELEK_TABLE 0 and 1, and
+        // for the sky passes LIGHT_SHAFTS_TERRAIN 0 and 1) are checked in each.
         std::vector<std::string> variants{""};
         if (expanded.text.find("ELEK_TABLE") != std::string::npos)
             variants = {"#define ELEK_TABLE 0\n", "#define ELEK_TABLE 1\n"};
+        if (file.starts_with("render/sky")) {
+            std::vector<std::string> withShafts;
+            for (const std::string& v : variants)
+                for (const char* shafts : {"#define LIGHT_SHAFTS_TERRAIN 0\n", "#define LIGHT_SHAFTS_TERRAIN 1\n"})
+                    withShafts.push_back(v + shafts);
+            variants = withShafts;
+        }
         for (const std::string& variant : variants) {
             std::string text = expanded.text;
             text.insert(text.find('\n') + 1, variant);  // after #version

@@ -35,13 +35,15 @@
 //   SunShadowLength             the hook through which they enter the in-scattering: how much
 //                               of a view segment lies in the terrain's shadow (Bruneton's
 //                               shadow_length: light shafts, preset terrain.light_shafts) in
-//                               programs that define LIGHT_SHAFTS_TERRAIN (the sky passes),
-//                               else 0; SkyRadianceToPoint takes it off the segment's far end,
-//                               SkyRadiance off the near end of a ray to space.
+//                               programs built with LIGHT_SHAFTS_TERRAIN 1 (the sky passes'
+//                               variant for a preset with light shafts on: compiled in, the
+//                               code doubled the sky pass on llvmpipe even with its loops at
+//                               no turns), else 0; SkyRadianceToPoint takes it off the
+//                               segment's far end, SkyRadiance off the near end of a ray to space.
 //
 // Bruneton's 4D table or Elek's 3D table (preset atmosphere.elek_3d_table) is chosen here,
 // at compile time: a program including this file is built once with ELEK_TABLE 0 and once
-// with ELEK_TABLE 1 (src/render/atmosphere_programs.h), because software renderers run
+// with ELEK_TABLE 1 (src/render/atmosphere_program.h), because software renderers run
 // both sides of even a uniform branch. Transmittance and irradiance are the same in both.
 #include "common/bindings.glsl"
 #include "common/constants.glsl"

@@ -4,7 +4,8 @@
 // start jitter that moves at every visit; render/sky_temporal.frag builds the full frame
 // from these samples and the history.
 #include "common/frame_uniforms.glsl"
-#define LIGHT_SHAFTS_TERRAIN 1  // the terrain's shadows in the air (preset terrain.light_shafts)
+// LIGHT_SHAFTS_TERRAIN (the terrain's shadows in the air) comes from the program builder, 1 only
+// when the preset asks for light shafts (src/render/atmosphere_program.h).
 #include "atmosphere/interface.glsl"
 #include "clouds/cloud_march.glsl"
 #include "ocean/water.glsl"

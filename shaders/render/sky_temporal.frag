@@ -26,7 +26,8 @@
 // The history is the frame's only state; it is dropped on a jump, a resize or a parameter
 // change (frame.historyValid 0), and then this frame is the spatial estimate alone.
 #include "common/frame_uniforms.glsl"
-#define LIGHT_SHAFTS_TERRAIN 1  // the terrain's shadows in the air (preset terrain.light_shafts)
+// LIGHT_SHAFTS_TERRAIN (the terrain's shadows in the air) comes from the program builder, 1 only
+// when the preset asks for light shafts (src/render/atmosphere_program.h).
 #include "atmosphere/interface.glsl"
 #include "clouds/cloud_march.glsl"
 #include "ocean/water.glsl"

@@ -1,10 +1,14 @@
-// A program that includes shaders/atmosphere/interface.glsl, in the variant for the table
-// the scene renders with: ELEK_TABLE 0 (Bruneton's 4D table) or 1 (Elek's 3D table;
-// preset atmosphere.elek_3d_table). Two programs rather than a run-time branch: software
+// A program that includes shaders/atmosphere/interface.glsl, in the variant the scene renders
+// with: ELEK_TABLE 0 (Bruneton's 4D table) or 1 (Elek's 3D table; preset
+// atmosphere.elek_3d_table), and for the sky passes LIGHT_SHAFTS_TERRAIN 0 or 1 (preset
+// terrain.light_shafts with terrain.shadows). Programs rather than run-time branches: software
 // renderers execute both sides of even a uniform branch, and a GPU is spared the registers
-// of the unused one. The Elek variant is built the first time it is asked for.
+// of the unused one (the light shafts' code, its loops at no turns, doubled the sky pass on
+// llvmpipe: docs/PERFORMANCE.md, 2026-12-03). The default variant (4D table, no shafts) is
+// built at once, the others the first time they are asked for.
 #pragma once
 
+#include <array>
 #include <optional>
 #include <utility>
 #include <string>
@@ -18,45 +22,51 @@ namespace planet {
 
 class AtmosphereProgram {
 public:
-    // `sources` is the frame's; the atmosphere's table sizes and ELEK_TABLE are added here.
+    // `sources` is the frame's; the atmosphere's table sizes and the variant's #defines are added here.
     AtmosphereProgram(const gl::ShaderSources& sources, const atmosphere::TableSizes& sizes, gl::ProgramDesc desc)
-        : sources_(sources), sizes_(sizes), desc_(std::move(desc)), bruneton4D_(variant(false), desc_) {}
+        : sources_(sources), sizes_(sizes), desc_(std::move(desc)) {
+        variants_[0].emplace(variant(0), desc_);
+    }
 
-    gl::HotProgram& get(bool elekTable) {
-        if (!elekTable) return bruneton4D_;
-        if (!elek3D_) {
+    gl::HotProgram& get(bool elekTable, bool lightShafts = false) {
+        const int index = (elekTable ? 1 : 0) + (lightShafts ? 2 : 0);
+        if (!variants_[index]) {
             gl::ProgramDesc d = desc_;
-            d.name += " (Elek 3D table)";
-            elek3D_.emplace(variant(true), d);
+            if (elekTable) d.name += " (Elek 3D table)";
+            if (lightShafts) d.name += " (light shafts)";
+            variants_[index].emplace(variant(index), d);
         }
-        return *elek3D_;
+        return *variants_[index];
     }
     // Other table sizes (the explorer's tables refined to their target): the programs take them
-    // at their next rebuild (reloadIfChanged(true) on built()), the variant not built yet when
-    // it is first asked for.
+    // at their next rebuild (reloadIfChanged(true) on built()), the variants not built yet when
+    // they are first asked for.
     void setTableSizes(const atmosphere::TableSizes& sizes) {
         sizes_ = sizes;
-        bruneton4D_.setSources(variant(false));
-        if (elek3D_) elek3D_->setSources(variant(true));
+        for (int i = 0; i < kVariants; ++i)
+            if (variants_[i]) variants_[i]->setSources(variant(i));
     }
     // The programs built so far, for hot reload.
     std::vector<gl::HotProgram*> built() {
-        std::vector<gl::HotProgram*> p{&bruneton4D_};
-        if (elek3D_) p.push_back(&*elek3D_);
+        std::vector<gl::HotProgram*> p;
+        for (std::optional<gl::HotProgram>& v : variants_)
+            if (v) p.push_back(&*v);
         return p;
     }
 
 private:
-    gl::ShaderSources variant(bool elek) const {
-        return {sources_.root, sources_.preamble + atmosphere::atmosphereShaderDefines(sizes_) +
-                                   "#define ELEK_TABLE " + (elek ? "1" : "0") + "\n"};
+    static constexpr int kVariants = 4;  // bit 0: ELEK_TABLE, bit 1: LIGHT_SHAFTS_TERRAIN
+
+    gl::ShaderSources variant(int index) const {
+        return {sources_.root, sources_.preamble + atmosphere::atmosphereShaderDefines(sizes_) + "#define ELEK_TABLE " +
+                                   ((index & 1) ? "1" : "0") + "\n#define LIGHT_SHAFTS_TERRAIN " +
+                                   ((index & 2) ? "1" : "0") + "\n"};
     }
 
     gl::ShaderSources sources_;
     atmosphere::TableSizes sizes_;
     gl::ProgramDesc desc_;
-    gl::HotProgram bruneton4D_;
-    std::optional<gl::HotProgram> elek3D_;
+    std::array<std::optional<gl::HotProgram>, kVariants> variants_;
 };
 
 }  // namespace planet

@@ -41,6 +41,9 @@ std::string historyKey(const Scene& scene) {
     return presetToToml(keyed, "", "");
 }
 
+// The sky passes' program variant with the terrain's shadows in the air (atmosphere_program.h).
+bool lightShafts(const Scene& s) { return s.terrain.light_shafts && s.terrain.shadows; }
+
 }  // namespace
 
 const char* frameResourceName(FrameResource r) {
@@ -136,7 +139,7 @@ std::vector<Renderer::Pass> Renderer::makePasses() {
                           glBindTextureUnit(binding::UNIT_SURFACE_RADIANCE, targets_.surfaceRadiance().id());
                           glBindTextureUnit(binding::UNIT_SURFACE_DISTANCE, targets_.surfaceDistance().id());
                           glBindVertexArray(emptyVertexArray_.id());
-                          glUseProgram(sky_.get(s.atmosphere.elek_3d_table).id());
+                          glUseProgram(sky_.get(s.atmosphere.elek_3d_table, lightShafts(s)).id());
                           glDrawArrays(GL_TRIANGLES, 0, 3);
                       },
                       [this] { return sky_.built(); }});
@@ -147,7 +150,7 @@ std::vector<Renderer::Pass> Renderer::makePasses() {
                           glViewport(0, 0, sparse.size.x, sparse.size.y);
                           glBindTextureUnit(binding::UNIT_SURFACE_DISTANCE, targets_.surfaceDistance().id());
                           glBindVertexArray(emptyVertexArray_.id());
-                          glUseProgram(skySparse_.get(s.atmosphere.elek_3d_table).id());
+                          glUseProgram(skySparse_.get(s.atmosphere.elek_3d_table, lightShafts(s)).id());
                           glDrawArrays(GL_TRIANGLES, 0, 3);
                           glViewport(0, 0, targets_.size().x, targets_.size().y);
                       },
@@ -165,7 +168,7 @@ std::vector<Renderer::Pass> Renderer::makePasses() {
                           glBindTextureUnit(binding::UNIT_HISTORY_SKY_TRANSMITTANCE, history.skyTransmittance.id());
                           glBindTextureUnit(binding::UNIT_HISTORY_SURFACE_DISTANCE, history.surfaceDistance.id());
                           glBindVertexArray(emptyVertexArray_.id());
-                          glUseProgram(skyTemporal_.get(s.atmosphere.elek_3d_table).id());
+                          glUseProgram(skyTemporal_.get(s.atmosphere.elek_3d_table, lightShafts(s)).id());
                           glDrawArrays(GL_TRIANGLES, 0, 3);
                       },
                       [this] { return skyTemporal_.built(); }});
