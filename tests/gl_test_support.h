@@ -51,6 +51,16 @@ inline const float* pixelAt(const ImageRGBAF& image, int x, int y) {
     return &image.pixels[(static_cast<std::size_t>(y) * image.width + x) * 4];
 }
 
+// World direction of the view ray through the centre of pixel (x, imageRow) of an image of
+// `size` (rows from the top, as read back), the camera's own projection.
+inline glm::dvec3 pixelRay(const Camera& camera, glm::ivec2 size, int x, int imageRow) {
+    const double aspect = double(size.x) / size.y;
+    const int glRow = size.y - 1 - imageRow;
+    const glm::dvec2 ndc((x + 0.5) / size.x * 2 - 1, (glRow + 0.5) / size.y * 2 - 1);
+    const glm::dvec4 v = glm::inverse(camera.clipFromView(aspect)) * glm::dvec4(ndc, 0.5, 1.0);
+    return glm::normalize(camera.worldFromView() * glm::normalize(glm::dvec3(v) / v.w));
+}
+
 // A copy of the repository's shader tree in a temporary folder named `name`, with `from`
 // replaced by `to` in the shader `file` (e.g. a #define switch turned off), for a test that
 // renders a scene with and without one piece. Fails the test when `from` is not in the file.

@@ -315,14 +315,11 @@ TEST_F(OceanRender, FoamBrightensTheSurfAndNothingElse) {
             amplitudes += w.amplitude_m;
             largest = std::max(largest, w.amplitude_m);
         }
-        const double t = std::tan(0.5 * s.camera.fovY_rad), aspect = double(kSize.x) / kSize.y;
         for (int row = 0; row < kSize.y; ++row) {
             for (int x = 0; x < kSize.x; ++x) {
                 const double d = test::pixelAt(distance, x, row)[0];
                 if (!(d > 0.0)) continue;
-                const glm::dvec2 ndc = 2.0 * (glm::dvec2(x, kSize.y - 1 - row) + 0.5) / glm::dvec2(kSize) - 1.0;
-                const glm::dvec3 dir =
-                    glm::normalize(s.camera.worldFromView() * glm::dvec3(ndc.x * t * aspect, ndc.y * t, -1.0));
+                const glm::dvec3 dir = test::pixelRay(s.camera, kSize, x, row);
                 const glm::dvec3 up = glm::normalize(s.camera.position + dir * d);
                 const double depth = s.scene.ocean.sea_level_m - s.ground.height(glm::vec3(up));
                 const float* a = test::pixelAt(with, x, row);

@@ -274,13 +274,7 @@ protected:
 
 // The world direction of the ray through the centre of pixel (x, imageRow) of a kSize frame
 // (image rows from the top).
-glm::dvec3 pixelRay(const Camera& camera, int x, int imageRow) {
-    const double aspect = double(kSize.x) / kSize.y;
-    const int glRow = kSize.y - 1 - imageRow;
-    const glm::dvec2 ndc((x + 0.5) / kSize.x * 2 - 1, (glRow + 0.5) / kSize.y * 2 - 1);
-    const glm::dvec4 v = glm::inverse(camera.clipFromView(aspect)) * glm::dvec4(ndc, 0.5, 1.0);
-    return glm::normalize(camera.worldFromView() * glm::normalize(glm::dvec3(v) / v.w));
-}
+glm::dvec3 pixelRay(const Camera& camera, int x, int imageRow) { return test::pixelRay(camera, kSize, x, imageRow); }
 
 // The render tests' tally: the GPU's class (1 lit, 0 shadowed) against the reference's at each
 // judged pixel; `check` asks for both kinds (10 each) and agreement at `share` of them.

@@ -55,9 +55,9 @@ layout(location = 1) out float outSurfaceDistance;
 
 layout(depth_greater) out float gl_FragDepth;  // reversed-Z: only ever moved towards the camera
 
-const float SHORE_FADE_M = 0.5;
+const float SHORE_FADE_M = 0.5;  // water path over which the sea fades in at the shore
 // Off (0), no foam where the waves break at the shore (tests compare the two).
-#define OCEAN_FOAM 1  // water path over which the sea fades in at the shore
+#define OCEAN_FOAM 1
 
 // What the sea reflects along `reflected` from `point` (km from the planet centre; this
 // fragment): the terrain where the reflected ray finds it on screen (ocean/

@@ -74,10 +74,11 @@ vec3 oceanNormalAndFoam(vec3 v, vec3 dv, float footprint, float waterDepth, floa
         float phase = gerstnerPhase(w, dv, travel, oneMinusAbsCos);
         float q = gerstnerSteepness(w, oneMinusAbsCos, ocean.fadeStart, ocean.fadeEnd);
         normal -= v * (lod * q * ak * sin(phase)) + travel * (lod * ak * cos(phase));
-        float crest = 0.5 + 0.5 * sin(phase);
-        crest = mix(OCEAN_FOAM_CREST_MEAN, crest * crest * crest * crest, lod);
         energy += w.shape.x * w.shape.x;
-        if (kept < 1.0) foam += w.shape.x * w.shape.x * kept * crest;
+        if (kept < 1.0) {  // breaking: its foam on its crests
+            float crest = 0.5 + 0.5 * sin(phase);
+            foam += w.shape.x * w.shape.x * kept * mix(OCEAN_FOAM_CREST_MEAN, crest * crest * crest * crest, lod);
+        }
     }
     // The waves too short to resolve: their energy and their foam's mean, where any may break
     // (a loop of one turn or none: the open sea skips it).
