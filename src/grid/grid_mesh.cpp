@@ -1,8 +1,10 @@
 #include "grid/grid_mesh.h"
 
+#include "gl/context.h"
 #include "render/bindings.h"
 
 #include <algorithm>
+#include <cstdint>
 #include <cstdlib>
 #include <vector>
 
@@ -68,6 +70,15 @@ void GridMesh::resize(int size) {
     vertexArray_.label((label_ + " grid").c_str());
     size_ = size;
     indexCount_ = static_cast<GLsizei>(patches.size());
+    splitCounts_.clear();
+    splitOffsets_.clear();
+    if (splitDraws_) {
+        constexpr GLsizei kRun = 4 * kPatchesPerSoftwareDraw;
+        for (GLsizei first = 0; first < indexCount_; first += kRun) {
+            splitCounts_.push_back(std::min(kRun, indexCount_ - first));
+            splitOffsets_.push_back(reinterpret_cast<const void*>(static_cast<std::uintptr_t>(first) * sizeof(GLuint)));
+        }
+    }
 }
 
 GridBlock makeGridBlock(const GridProjection& projection, int exponent, const glm::dvec3& cameraPosition,
@@ -80,7 +91,8 @@ GridBlock makeGridBlock(const GridProjection& projection, int exponent, const gl
     return b;
 }
 
-GridMesh::GridMesh(std::string label, PatchOrder order) : label_(std::move(label)), order_(order) {
+GridMesh::GridMesh(std::string label, PatchOrder order)
+    : label_(std::move(label)), order_(order), splitDraws_(gl::softwareRenderer(gl::rendererDescription())) {
     glNamedBufferStorage(block_.id(), sizeof(GridBlock), nullptr, GL_DYNAMIC_STORAGE_BIT);
     block_.label((label_ + " GridBlock").c_str());
 }
@@ -93,7 +105,11 @@ void GridMesh::draw() const {
     glBindBufferBase(GL_UNIFORM_BUFFER, binding::BLOCK_GRID, block_.id());
     glBindVertexArray(vertexArray_.id());
     glPatchParameteri(GL_PATCH_VERTICES, 4);
-    glDrawElements(GL_PATCHES, indexCount_, GL_UNSIGNED_INT, nullptr);
+    if (splitCounts_.empty())
+        glDrawElements(GL_PATCHES, indexCount_, GL_UNSIGNED_INT, nullptr);
+    else
+        glMultiDrawElements(GL_PATCHES, splitCounts_.data(), GL_UNSIGNED_INT, splitOffsets_.data(),
+                            static_cast<GLsizei>(splitCounts_.size()));
 }
 
 }  // namespace planet

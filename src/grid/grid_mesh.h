@@ -6,6 +6,7 @@
 #include <cstddef>
 #include <string>
 #include <utility>
+#include <vector>
 
 #include <glm/glm.hpp>
 
@@ -51,6 +52,17 @@ public:
     // each) with the bound program.
     void draw() const;
 
+    // Mesa's software renderers (llvmpipe, softpipe) tessellate in the Gallium draw module,
+    // which numbers the tessellated vertices of one chunk of input (up to 4096 vertices: 1024
+    // patches) with 16-bit indices: past 65 535 vertices the indices wrap, and triangles join
+    // vertices of unrelated patches into sheets across the whole view (the mountains view at
+    // 1280 x 720 was one grey wall, level 64 near the camera; 640 x 360, whose levels stop
+    // near 32, was right). A quad at level 64 makes at most 65 x 65 vertices, so there the
+    // patches are drawn in runs of kPatchesPerSoftwareDraw, one glMultiDrawElements.
+    static constexpr int kPatchesPerSoftwareDraw = 65535 / (65 * 65);
+    // How many draws the patches go out in (1 on a GPU).
+    std::size_t drawCount() const { return splitCounts_.empty() ? 1 : splitCounts_.size(); }
+
 private:
     std::string label_;
     gl::VertexArray vertexArray_;
@@ -60,6 +72,9 @@ private:
     PatchOrder order_;
     int size_ = 0;
     GLsizei indexCount_ = 0;
+    bool splitDraws_;                      // a software renderer: draw in runs (above)
+    std::vector<GLsizei> splitCounts_;     // per run: its indices
+    std::vector<const void*> splitOffsets_;  // per run: its first index's byte offset
 };
 
 }  // namespace planet
