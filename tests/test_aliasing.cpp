@@ -174,10 +174,15 @@ TEST_F(AliasingTest, MountainsStillIsAntiAliased) {
 // With the ground detail on (terrain.detail, off by default): not yet within the bound above.
 // 5.85 % before its filter handed the slopes' removed spread to the lighting (the expected
 // clamped cosine, terrain/rough_cosine.glsl) and before the tile's longest waves were
-// dropped (the lattice); 4.95 % after (docs/PERFORMANCE.md, 2026-12-03, issue 13 LEAN). The
-// bound holds that gain; lower it as the detail's remaining error (where the ray meets the
-// height field, and the tints) is found.
-constexpr double kMountainsWithDetailBound = 0.054;
+// dropped (the lattice); 4.95 % after (docs/PERFORMANCE.md, 2026-12-03, issue 13 LEAN);
+// 3.82 % once the slopes were gentle enough for the lighting to be linear in them (they were
+// 1.4-2.4, not the 0.25 their comment said), the dry grass linear in the patches, and rays
+// whose hit does not converge given the detail where the mesh's point drops onto the ground
+// instead of none. The rest is in the nearest rows (the 32 m scale's relief at 7 m: 6.8 %
+// there against 2.4 % without the detail) and in the meadow below the slope's crest (the
+// colour: 16 % against 13.8 %); 16 samples leave it (a bias of the mip filter's wider
+// kernel, not noise). The bound holds that gain; lower it as that is found.
+constexpr double kMountainsWithDetailBound = 0.041;
 
 TEST_F(AliasingTest, MountainsStillWithTheGroundDetailKeepsItsLighting) {
     std::ifstream in(std::string(PLANET_SOURCE_DIR) + "/assets/presets/earth.toml");

@@ -207,3 +207,31 @@ TEST(TerrainNear, TheRaysHitDoesNotDependOnTheStart) {
     EXPECT_LT(spread, 2.0e-3);
     EXPECT_LT(offReference, 0.35);  // the float field's own error (the first test: up to 0.3 m)
 }
+
+// Where Newton's method does not converge (a ray that does not descend towards the ground:
+// one grazing a crest, or here one rising), the ground detail still needs a place on the
+// ground: `hit` is the start dropped along the vertical onto the height field (first order
+// in the start's height above it), not the start.
+TEST(TerrainNear, ARayThatMissesGivesThePointBelowItsStart) {
+    const NearTerrain& t = nearTerrain();
+    const glm::dvec3 up = t.inland(300);
+    const glm::dvec3 camera = cameraAbove(t, up, 2.0);
+    const terrain::TerrainNear near = terrain::makeTerrainNear(t.shape, t.continents, camera, kRadiusM);
+    glm::dvec3 east, north;
+    tangents(up, east, north);
+    for (double riseDeg : {20.0, 40.0, 60.0}) {
+        const double r = glm::radians(riseDeg);
+        const glm::dvec3 ray = std::cos(r) * east + std::sin(r) * up;
+        const double s = 40.0;  // the start: 40 m along the rising ray, metres above the ground
+        const double startAbove = rayAboveGround(t, camera, ray, s);
+        glm::vec3 hit;
+        EXPECT_FALSE(terrain::terrainRayHitNear(glm::vec3(ray * s), near, t.shape, hit)) << riseDeg;
+        const glm::dvec3 world = camera + glm::dvec3(hit);
+        const double hitAbove = glm::length(world) - kRadiusM - t.height(world);
+        std::printf("rising %.1f deg: the start %.2f m above the ground, the point given %.4f m\n", riseDeg,
+                    startAbove, hitAbove);
+        EXPECT_GT(startAbove, 1.0) << riseDeg;
+        EXPECT_LT(std::abs(hitAbove), 0.35) << riseDeg;  // the float field's own error, as above
+        EXPECT_LT(glm::length(glm::dvec3(hit) - ray * s), 1.01 * startAbove) << riseDeg;  // straight down
+    }
+}

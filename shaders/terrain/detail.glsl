@@ -27,17 +27,29 @@
 const int TERRAIN_DETAIL_SCALES = 3;
 const float TERRAIN_DETAIL_PERIOD_M[TERRAIN_DETAIL_SCALES] = float[](0.5, 4.0, 32.0);
 
-// Per material (sea floor, rock, snow, sand, grass): the relief of the detail height field at
-// each scale, m (its slopes, rise over run, are about 4.2 x relief / period RMS: grass about
-// 0.25 at the finest scales, rock steeper, snow and sand smoother)...
-const vec3 TERRAIN_DETAIL_RELIEF_M[5] = vec3[](vec3(0.004, 0.04, 0.2), vec3(0.02, 0.15, 1.2), vec3(0.002, 0.02, 0.3),
-                                               vec3(0.003, 0.02, 0.15), vec3(0.012, 0.06, 0.3));
-// ... and how strongly the fine field (x: finest, y: middle scale) and the patches (z) vary
-// the albedo (relative, per unit standard deviation of the field).
-const vec3 TERRAIN_DETAIL_TINT[5] = vec3[](vec3(0.12, 0.10, 0.10), vec3(0.20, 0.25, 0.15), vec3(0.03, 0.04, 0.03),
-                                           vec3(0.10, 0.08, 0.08), vec3(0.30, 0.15, 0.25));
+// Per material (sea floor, rock, snow, sand, grass): the root-mean-square slope (rise over
+// run, both components) the detail adds at each scale. Small on purpose: the lighting is
+// linear in slopes this gentle, so the filtered (mean) slope lights a far pixel as its
+// facets would on average, and what the filter removed the rough cosine adds back. (The
+// first values were given as relief in metres on the belief that the slopes were about
+// 4.2 x relief / period; the bake's waves, a quarter to a 32nd of the period, make them
+// 59 x relief / period: grass had slopes of 1.4, rock 2.4, and its far pixels, lit from
+// averaged normals that steep, were 5 % off their own supersampled mean.)
+const vec3 TERRAIN_DETAIL_SLOPE[5] = vec3[](vec3(0.10, 0.15, 0.15), vec3(0.25, 0.35, 0.45), vec3(0.05, 0.08, 0.15),
+                                            vec3(0.08, 0.10, 0.10), vec3(0.20, 0.20, 0.15));
+// How strongly the fine field (x: finest, y: middle scale) and the patches (z) vary the
+// albedo (relative, per unit standard deviation of the field). Linear in the fields, so that
+// filtering them filters the colour; a third of the spread keeps clear of the clamp below.
+const vec3 TERRAIN_DETAIL_TINT[5] = vec3[](vec3(0.12, 0.10, 0.10), vec3(0.15, 0.15, 0.12), vec3(0.03, 0.04, 0.03),
+                                           vec3(0.10, 0.08, 0.08), vec3(0.15, 0.12, 0.15));
 
+// Dry and lush grass: the meadow's albedo moves towards this tint by this much per unit of
+// the patches, and away from it where they are negative. Linear and of mean 0, so a far
+// pixel, where the filter has averaged the patches away, keeps the near meadow's mean colour.
+// (Its first form, a smoothstep of the patches, was neither: the near meadow was a quarter
+// dry on average, the far one hardly at all.)
 const vec3 TERRAIN_DRY_GRASS_TINT = vec3(1.35, 1.15, 0.6);
+const float TERRAIN_DRY_GRASS_PER_PATCH = 0.3;
 
 layout(binding = UNIT_TERRAIN_DETAIL) uniform sampler2D uTerrainDetail;
 // Per mip level of uTerrainDetail: the variance of the slope (both components, per unit of
@@ -149,12 +161,18 @@ vec3 detailPlaneWeights(vec3 normal) {
 // the footprint, per component (rise over run), what the filter removed (see the top).
 void applyTerrainDetail(vec3 p, vec3 dpdx, vec3 dpdy, vec3 up, float weights[5], float strength, inout vec3 normal,
                         inout vec3 albedo, out float slopeSpread) {
-    vec3 relief = vec3(0.0);
+    vec3 slopes = vec3(0.0);
     vec3 tint = vec3(0.0);
     for (int m = 0; m < 5; ++m) {
-        relief += (strength * weights[m]) * TERRAIN_DETAIL_RELIEF_M[m];
+        slopes += (strength * weights[m]) * TERRAIN_DETAIL_SLOPE[m];
         tint += (strength * weights[m]) * TERRAIN_DETAIL_TINT[m];
     }
+    // The relief (m of the unit-spread height field) that gives those slopes: the texture's
+    // slopes (per unit of texture coordinate) have the spread of its whole variance, which
+    // the 1 x 1 level has removed.
+    float textureSlopeRms = sqrt(uTerrainDetailLostVariance[TERRAIN_DETAIL_LEVELS - 1]);
+    vec3 relief = slopes * vec3(TERRAIN_DETAIL_PERIOD_M[0], TERRAIN_DETAIL_PERIOD_M[1], TERRAIN_DETAIL_PERIOD_M[2]) /
+                  textureSlopeRms;
     vec3 planes = detailPlaneWeights(up);
     DetailSample fine = detailAtScale(p, dpdx, dpdy, planes, TERRAIN_DETAIL_PERIOD_M[0]);
     DetailSample middle = detailAtScale(p, dpdx, dpdy, planes, TERRAIN_DETAIL_PERIOD_M[1]);
@@ -168,5 +186,6 @@ void applyTerrainDetail(vec3 p, vec3 dpdx, vec3 dpdy, vec3 up, float weights[5],
     float variation = tint.x * fine.height + tint.y * middle.height + tint.z * patches;
     albedo *= clamp(1.0 + variation, 0.3, 2.0);
     // Grass: dry, yellower patches among lush ones.
-    albedo = mix(albedo, albedo * TERRAIN_DRY_GRASS_TINT, weights[TERRAIN_MATERIAL_GRASS] * smoothstep(-0.2, 1.2, patches));
+    float dry = weights[TERRAIN_MATERIAL_GRASS] * strength * TERRAIN_DRY_GRASS_PER_PATCH * patches;
+    albedo *= max(1.0 + dry * (TERRAIN_DRY_GRASS_TINT - 1.0), 0.0);
 }

@@ -67,18 +67,19 @@ void main() {
     // tessellation (it follows the camera), and the detail would swim and pop with it. The
     // pixel sees the true surface where its ray meets it, found exactly to float within the
     // near field's range (terrainRayHitNear); the detail fades out towards that range (placed
-    // on the mesh beyond it, it would move with the tessellation), and a ray that does not
-    // converge (one grazing a ridge) takes none.
+    // on the mesh beyond it, it would move with the tessellation). A ray that does not
+    // converge (one grazing a ridge) takes it where the mesh's point drops onto the ground.
     float distance = length(tePointFromCamera);
     float narrowFootprint = min(length(dpdx), length(dpdy));  // the detail's filter follows it (detail.glsl)
     float strength = terrainDetail != 0 ? 1.0 - smoothstep(0.5 * TERRAIN_NEAR_RANGE_M, TERRAIN_NEAR_RANGE_M, distance)
                                         : 0.0;
     vec3 hit;
     float detailSlopeSpread = 0.0;  // what the detail's filter removed, for the surface light
-    if (strength > 0.0 && narrowFootprint < TERRAIN_DETAIL_PERIOD_M[TERRAIN_DETAIL_SCALES - 1] &&
-        terrainRayHitNear(tePointFromCamera, terrainNear, terrainShape, hit))
+    if (strength > 0.0 && narrowFootprint < TERRAIN_DETAIL_PERIOD_M[TERRAIN_DETAIL_SCALES - 1]) {
+        terrainRayHitNear(tePointFromCamera, terrainNear, terrainShape, hit);
         applyTerrainDetail(hit + terrainXyz(terrainNear.cameraPlace), dpdx, dpdy, up, weights, strength, normal, albedo,
                            detailSlopeSpread);
+    }
     outNormal = vec4(normal, height);
     outAlbedo = vec4(albedo, 1.0);
     outMaterial = vec4(float(MATERIAL_GROUND) / 255.0, 1.0, min(detailSlopeSpread, 1.0), 0.0);

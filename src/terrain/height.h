@@ -103,7 +103,8 @@ float terrainHeightNearGrad(glm::vec3 pointFromCamera, const TerrainNear& near, 
                             glm::vec3& gradient);
 
 // Where the ray from the camera through `start` (camera-relative, near the surface) meets the
-// height field; false where it does not converge there. GLSL: terrainRayHitNear.
+// height field; false where it does not converge there, and `hit` is then `start` moved along
+// the vertical onto the height field. GLSL: terrainRayHitNear.
 bool terrainRayHitNear(glm::vec3 start, const TerrainNear& near, const TerrainShape& shape, glm::vec3& hit);
 
 // How far from the camera the near field is used, m (TERRAIN_NEAR_RANGE_M).
