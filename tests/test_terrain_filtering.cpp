@@ -8,7 +8,11 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <fstream>
+#include <iterator>
 #include <random>
+#include <regex>
+#include <string>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -241,6 +245,18 @@ TEST(TerrainDetailTexture, LostSlopeVarianceIsWhatEachMipLevelAveragesAway) {
     level1 /= (n / 2) * (n / 2);
     EXPECT_NEAR(t.lostSlopeVariance[1], full - level1, 1e-3 * full);
     EXPECT_GT(t.lostSlopeVariance[1], 0.0);
+}
+
+// The shader sizes its table by TERRAIN_DETAIL_LEVELS and reads the last entry as the tile's
+// whole slope variance (the relief's scale, the coarsest mip's loss): it must have one entry
+// per level of the bake the pass makes (bakeDetailTexture's default size), or the GL would
+// drop the table's tail without a word.
+TEST(TerrainDetailTexture, TheShadersTableHasALevelPerMipOfTheBake) {
+    std::ifstream in(std::string(PLANET_SOURCE_DIR) + "/shaders/terrain/detail.glsl");
+    const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    std::smatch m;
+    ASSERT_TRUE(std::regex_search(text, m, std::regex(R"(const int TERRAIN_DETAIL_LEVELS = (\d+);)")));
+    EXPECT_EQ(static_cast<std::size_t>(std::stoi(m[1])), terrain::bakeDetailTexture().lostSlopeVariance.size());
 }
 
 // The surface light's clamped cosine over a spread of detail slopes

@@ -23,7 +23,7 @@ const int BUFFER_CLOUD_STATISTICS = 4;  // the sky pass's march step counts, whe
 // Texture units.
 const int UNIT_GBUFFER_NORMAL = 0;          // RGBA16F world normal
 const int UNIT_GBUFFER_ALBEDO = 1;          // RGBA8 linear albedo
-const int UNIT_GBUFFER_MATERIAL = 2;        // RGBA8 material id / 255, roughness
+const int UNIT_GBUFFER_MATERIAL = 2;        // RGBA8 material id / 255, roughness, detail slope spread (gbuffer.glsl)
 const int UNIT_GBUFFER_DEPTH = 3;           // DEPTH32F reversed-Z
 const int UNIT_TRANSMITTANCE = 4;           // atmosphere tables (atmosphere/interface.glsl)
 const int UNIT_SCATTERING = 5;

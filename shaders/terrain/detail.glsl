@@ -55,7 +55,7 @@ layout(binding = UNIT_TERRAIN_DETAIL) uniform sampler2D uTerrainDetail;
 // Per mip level of uTerrainDetail: the variance of the slope (both components, per unit of
 // texture coordinate, squared) that the level's averaging removed from level 0's
 // (terrain/detail_texture.h, DetailTexture::lostSlopeVariance; the pass sets it).
-const int TERRAIN_DETAIL_LEVELS = 9;  // a 256 x 256 bake
+const int TERRAIN_DETAIL_LEVELS = 9;  // a 256 x 256 bake: one per mip level (tests/test_terrain_filtering.cpp checks)
 uniform float uTerrainDetailLostVariance[TERRAIN_DETAIL_LEVELS];
 
 // The detail texture at one scale, projected tri-planar: the world-space slope of the height
@@ -107,7 +107,8 @@ DetailSample detailAtScale(vec3 p, vec3 dpdx, vec3 dpdy, vec3 planeWeights, floa
     vec3 minor = dot(dpdx, dpdx) >= dot(dpdy, dpdy) ? dpdy : dpdx;
     if (length(minor) >= period)  // the coarsest mip: mean 0, all of the slopes' variance removed
         return DetailSample(vec3(0.0), 0.0, 0.0,
-                            uTerrainDetailLostVariance[TERRAIN_DETAIL_LEVELS - 1] / (period * period));
+                            uTerrainDetailLostVariance[TERRAIN_DETAIL_LEVELS - 1] * dot(planeWeights, planeWeights) /
+                                (period * period));
     float ratio = length(major) / max(length(minor), 1.0e-6);
     int taps = int(clamp(ceil(ratio), 1.0, float(TERRAIN_DETAIL_TAPS)));
     vec3 stepAlong = major / float(taps);
