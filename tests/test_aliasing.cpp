@@ -175,7 +175,7 @@ TEST_F(AliasingTest, MountainsStillIsAntiAliased) {
 // 5.85 % before its filter handed the slopes' removed spread to the lighting (the expected
 // clamped cosine, terrain/rough_cosine.glsl) and before the tile's longest waves were
 // dropped (the lattice); 4.95 % after (docs/PERFORMANCE.md, 2026-12-03, issue 13 LEAN);
-// 3.82 % once the slopes were gentle enough for the lighting to be linear in them (they were
+// 3.84 % once the slopes were gentle enough for the lighting to be linear in them (they were
 // 1.4-2.4, not the 0.25 their comment said), the dry grass linear in the patches, and rays
 // whose hit does not converge given the detail where the mesh's point drops onto the ground
 // instead of none. The rest is in the nearest rows (the 32 m scale's relief at 7 m: 6.8 %
