@@ -91,11 +91,7 @@ public:
         : s_(s), radius_(s.scene.planetRadiusM()), maxHeight_(s.scene.terrain.max_height_m) {}
 
     // World direction through the centre of pixel (x, glRow), rows counted from the bottom.
-    glm::dvec3 pixelRay(int x, int glRow) const {
-        const double t = std::tan(0.5 * s_.camera.fovY_rad), aspect = double(kSize.x) / kSize.y;
-        const glm::dvec2 ndc = 2.0 * (glm::dvec2(x, glRow) + 0.5) / glm::dvec2(kSize) - 1.0;
-        return glm::normalize(s_.camera.worldFromView() * glm::dvec3(ndc.x * t * aspect, ndc.y * t, -1.0));
-    }
+    glm::dvec3 pixelRay(int x, int glRow) const { return test::pixelRay(s_.camera, kSize, x, kSize.y - 1 - glRow); }
     // The pixel a world point is seen in (rows from the bottom); false when behind the camera.
     bool pixelOf(const glm::dvec3& point, glm::dvec2& pixel) const {
         const glm::dvec3 v = glm::transpose(s_.camera.worldFromView()) * (point - s_.camera.position);
