@@ -60,8 +60,6 @@ public:
     // near 32, was right). A quad at level 64 makes at most 65 x 65 vertices, so there the
     // patches are drawn in runs of kPatchesPerSoftwareDraw, one glMultiDrawElements.
     static constexpr int kPatchesPerSoftwareDraw = 65535 / (65 * 65);
-    // How many draws the patches go out in (1 on a GPU).
-    std::size_t drawCount() const { return splitCounts_.empty() ? 1 : splitCounts_.size(); }
 
 private:
     std::string label_;
