@@ -26,7 +26,7 @@
 #    ALLOW_ANY_RENDERER=1).
 # 3. Our side: `planet bench --views assets/views/{ground,orbit,space}.toml --size SIZE
 #    --tables full --frames FRAMES --warmup WARMUP`, with the earth preset as it ships
-#    (clouds on, the temporal march: passes `sky march` + `sky temporal`) and with a copy of
+#    (clouds on, the temporal march: passes `sky march` + `sky temporal` + `sky refine`) and with a copy of
 #    it without clouds ($OUT/earth_no_clouds.toml: `[clouds] enabled = false`, every other
 #    key the earth preset's default; written here rather than under assets/presets/, whose
 #    list of presets the tests pin): there the air alone is marched in every pixel every
@@ -141,7 +141,7 @@ summarize() {
         if (pass == "frame") v[variant, view, "frame", round] = $5 + $6
     }
     END {
-        n_order = split("prepare,terrain,surface light,ocean,sky,sky march,sky temporal,antialias,tonemap", order, ",")
+        n_order = split("prepare,terrain,surface light,ocean,sky,sky march,sky temporal,sky refine,antialias,tonemap", order, ",")
         n_views = split(views, vs, " ")
         # attributed: the pass own CPU time + the wait of the next pass in frame order (which
         # waits for its fragments); the first drawing pass (terrain) keeps its own wait as well
@@ -164,7 +164,8 @@ summarize() {
                     v[variant, view, pass, "attr", r] = a
                 }
                 if ((variant SUBSEP view SUBSEP "sky march" SUBSEP r) in cpu)
-                    v[variant, view, "air", r] = v[variant, view, "sky march", "attr", r] + v[variant, view, "sky temporal", "attr", r]
+                    v[variant, view, "air", r] = v[variant, view, "sky march", "attr", r] + v[variant, view, "sky temporal", "attr", r] + \
+                                                 v[variant, view, "sky refine", "attr", r]
                 else if ((variant SUBSEP view SUBSEP "sky" SUBSEP r) in cpu)
                     v[variant, view, "air", r] = v[variant, view, "sky", "attr", r]
             }
@@ -186,7 +187,7 @@ summarize() {
                 fbar, verdict(f, d, fbar), ms(cf), ratio(cf, d), ms(air), ratio(air, d), ms(cair), ratio(cair, d), \
                 abar == "" ? "-" : "<= " abar, abar == "" ? "no bar" : verdict(air, d, abar) " / " verdict(cair, d, abar)
         }
-        printf "\nWhere our frame goes (ms, attributed, medians over the rounds; sky: sky march + sky temporal, or the full-rate sky)\n\n"
+        printf "\nWhere our frame goes (ms, attributed, medians over the rounds; sky: sky march + sky temporal + sky refine, or the full-rate sky)\n\n"
         printf "| view | variant | terrain | surface light | ocean | sky | tonemap (gpu: its fragments, not in the frame) | frame | demo frame |\n"
         printf "| --- | --- | --- | --- | --- | --- | --- | --- | --- |\n"
         for (i = 1; i <= n_views; ++i) for (var = 1; var <= 2; ++var) {

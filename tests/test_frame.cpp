@@ -52,7 +52,7 @@ TEST_F(FrameTest, TheRenderersPassesAreDeclaredInAnOrderThatHolds) {
     std::vector<std::string> names;
     for (const PassDeclaration& p : passes) names.push_back(p.name);
     EXPECT_EQ(names, (std::vector<std::string>{"terrain", "surface light", "ocean", "sky", "sky march", "sky temporal",
-                                              "antialias", "tonemap", "ui"}));
+                                              "sky refine", "antialias", "tonemap", "ui"}));
 }
 
 TEST_F(FrameTest, BakedResourcesAreMadeInThePrepareStepOncePerChange) {

@@ -27,6 +27,7 @@ layout(std140, binding = BLOCK_FRAME) uniform FrameBlock {
     float previousJitterX;       // pixels: the previous frame's jitter (its clipFromView's offset), x ...
     vec3 cloudDriftSincePrevious; // m, world axes: how far the wind moved the clouds since the previous frame
     float previousJitterY;       // ... and y
+    float temporalRefineError;   // render.temporal_refine_error (render/sky_temporal.frag)
 } frame;
 
 // World-oriented direction of the view ray through a point in NDC (x, y in [-1, 1]).

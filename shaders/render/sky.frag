@@ -38,7 +38,7 @@ void main() {
         outSkyInscatter = vec4(0.0);
         outSkyTransmittance = vec4(0.0);
     } else {
-        AirMarch a = marchAir(dir, distance, interleavedGradientNoise(pixel));
+        AirMarch a = marchPixelAtFullRate(pixel, dir, distance);
         radiance = throughAir(dir, surface, distance, a.transmittance, a.inscatter);
         outSkyInscatter = vec4(min(a.inscatter, vec3(MAX_HDR_RADIANCE)), 1.0);
         outSkyTransmittance = vec4(a.transmittance, 1.0);

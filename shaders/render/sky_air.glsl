@@ -1,4 +1,5 @@
-// What the sky passes share (render/sky.frag, sky_sparse.frag, sky_temporal.frag): the march
+// What the sky passes share (render/sky.frag, sky_sparse.frag, sky_temporal.frag,
+// sky_refine.frag): the march
 // of one view ray through the air and the clouds, the water body under the sea, and the
 // composite of the surface behind. Include after common/frame_uniforms.glsl,
 // atmosphere/interface.glsl, clouds/cloud_march.glsl and ocean/water.glsl.
@@ -47,6 +48,13 @@ AirMarch marchAir(vec3 dir, float distanceM, float jitter) {
     a.reprojectionKm = m.cloudOpacity > CLOUDY_OPACITY ? m.cloudDistance : distanceM / M_PER_KM;
     a.cloudOpacity = m.cloudOpacity;
     return a;
+}
+
+// A pixel marched at full rate: render/sky.frag's, and render/sky_refine.frag's for the pixels
+// the temporal reconstruction could not trust; the same start in both, so a refined pixel is
+// the full-rate frame's.
+AirMarch marchPixelAtFullRate(ivec2 pixel, vec3 dir, float distanceM) {
+    return marchAir(dir, distanceM, interleavedGradientNoise(pixel));
 }
 
 // Under water: the water body between the camera and the first surface (the sea floor, or

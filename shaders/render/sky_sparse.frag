@@ -11,18 +11,42 @@
 #include "ocean/water.glsl"
 #include "render/sky_air.glsl"
 #include "render/sparse_pattern.glsl"
+#include "render/sky_history.glsl"
 
+layout(binding = UNIT_SURFACE_RADIANCE) uniform sampler2D surfaceRadiance;
 layout(binding = UNIT_SURFACE_DISTANCE) uniform sampler2D surfaceDistance;
 
 layout(location = 0) out vec4 outInscatter;      // S, reprojection distance km
 layout(location = 1) out vec4 outTransmittance;  // T, the clouds' opacity
+layout(location = 2) out float outHistoryError;  // how far the history was from this sample
+
+// How far the history, reprojected to the traced pixel as the reconstruction reads it (not
+// clamped), is from the new sample there: the relative difference of the radiance's
+// luminance; 1 where there is nothing to reproject, 0 without a history. The reconstruction
+// marks the pixels around a sample with a large one for a full-rate march (what moved in a
+// way the reprojection cannot follow: parallax between layers of cloud, a grazing ray's point
+// sample, light that changed).
+float historyError(ivec2 pixel, vec3 dir, float distance, AirMarch a) {
+    if (frame.historyValid < 0.5) return 0.0;
+    vec3 behind = distance > 0.0 ? texelFetch(surfaceRadiance, pixel, 0).rgb : SunDiscRadiance(dir, frame.sunDirection);
+    SkySample history;
+    float samples, weight, contrast;
+    readHistory(previousPixel(dir, a.reprojectionKm, a.cloudOpacity > CLOUDY_OPACITY),
+                previousSurfaceDistance(dir, distance), behind, history, samples, weight, contrast);
+    if (weight <= 0.05) return 1.0;
+    float now = luminance(a.transmittance * behind + a.inscatter);
+    float then = luminance(history.transmittance * behind + history.inscatter);
+    return abs(now - then) / max(max(now, then), 1.0e-6);
+}
 
 void main() {
     ivec2 block = ivec2(gl_FragCoord.xy);
     ivec2 pixel = sparseTracedPixel(block);
     vec2 ndc = (vec2(pixel) + 0.5) * frame.inverseViewportSize * 2.0 - 1.0;
     float distance = texelFetch(surfaceDistance, pixel, 0).r;
-    AirMarch a = marchAir(worldRayFromNdc(ndc), distance, sparseJitter(block));
+    vec3 dir = worldRayFromNdc(ndc);
+    AirMarch a = marchAir(dir, distance, sparseJitter(block));
     outInscatter = vec4(min(a.inscatter, vec3(MAX_HDR_RADIANCE)), a.reprojectionKm);
     outTransmittance = vec4(a.transmittance, a.cloudOpacity);
+    outHistoryError = historyError(pixel, dir, distance, a);
 }

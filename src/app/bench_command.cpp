@@ -126,11 +126,13 @@ void countCloudSteps(Renderer& renderer, const Session& session, glm::ivec2 size
 }
 
 // The sky's GPU time in a view's rows: the full-rate pass ("sky"), or the reduced-rate
-// march and its reconstruction ("sky march" + "sky temporal"); medians, ms.
+// march, its reconstruction and the pixels marched again ("sky march" + "sky temporal" +
+// "sky refine"); medians, ms.
 double skyGpuMs(const std::vector<BenchRow>& rows, const std::string& view) {
     double ms = 0.0;
     for (const BenchRow& r : rows)
-        if (r.view == view && (r.pass == "sky" || r.pass == "sky march" || r.pass == "sky temporal")) ms += r.gpuMedian;
+        if (r.view == view && (r.pass == "sky" || r.pass == "sky march" || r.pass == "sky temporal" ||
+                                r.pass == "sky refine")) ms += r.gpuMedian;
     return ms;
 }
 
@@ -179,7 +181,7 @@ std::vector<std::string> benchClouds(Renderer& frame, Session& session, const st
         }
     }
     session.scene = preset;
-    ratios.insert(ratios.begin(), "sky passes (GPU medians): the reduced-rate march + its reconstruction against the full-rate march");
+    ratios.insert(ratios.begin(), "sky passes (GPU medians): the reduced-rate march + its reconstruction + the pixels marched again against the full-rate march");
     return ratios;
 }
 
@@ -226,6 +228,26 @@ std::string csvText(const std::vector<BenchRow>& rows, const std::string& render
     return csv.str();
 }
 
+// What the sky passes cost along a whole path, summed over its frames (GPU): the temporal
+// renderer's march, reconstruction and full-rate refinement against the full-rate renderer's sky.
+void printPathSkyCost(Renderer& temporal, Renderer& fullRate) {
+    auto total = [](Renderer& r, const std::string& pass) {
+        r.profiler().waitForResults();
+        r.profiler().setRecording(false);
+        double ms = 0.0;
+        for (const PassTimings& p : r.profiler().passes())
+            if (p.name == pass)
+                for (double x : p.recordedGpuMs) ms += x;
+        return ms;
+    };
+    const double march = total(temporal, "sky march"), reconstruction = total(temporal, "sky temporal"),
+                 refine = total(temporal, "sky refine"), reset = total(temporal, "sky"), full = total(fullRate, "sky");
+    std::printf("sky passes along the path, GPU ms summed over the frames: temporal %.0f (sky march %.0f, sky temporal "
+                "%.0f, sky refine %.0f, full-rate frames without history %.0f) against full rate %.0f: %.3f\n",
+                march + reconstruction + refine + reset, march, reconstruction, refine, reset, full,
+                (march + reconstruction + refine + reset) / std::max(full, 1.0e-9));
+}
+
 // The temporal suite: every frame of a camera path rendered with the temporal march (its
 // history kept from frame to frame, as `planet render --path` and the explorer do) and at full
 // rate, compared in linear luminance; one CSV row per frame, a summary, and the worst frame
@@ -236,36 +258,47 @@ void benchTemporal(Renderer& temporal, Renderer& fullRate, Session& session, con
     const CameraPath path = loadSessionPath(paths, o.path, session);
     const int frameCount = pathFrameCount(path.file(), o.pathFrames);
     std::printf("temporal march against the full rate along path '%s', %d frames\n", path.file().name.c_str(), frameCount);
-    std::printf("%8s %9s %8s %10s %10s %10s\n", "frame", "time s", "reduced", "mean %", "p99 %", "max %");
+    std::printf("%8s %9s %8s %10s %10s %10s %10s\n", "frame", "time s", "reduced", "mean %", "p99 %", "max %",
+                "refined %");
     TemporalWorstFrame worst;
+    for (Renderer* r : {&temporal, &fullRate}) {
+        r->profiler().clearRecordings();
+        r->profiler().setRecording(true);
+    }
     const std::vector<TemporalFrameError> errors = measureTemporalError(
         temporal, fullRate, session, path, frameCount, 0, frameCount, size, &worst, [&](const TemporalFrameError& e) {
             if (e.frame % 10 == 0 || e.frame == frameCount - 1)
-                std::printf("%8d %9.2f %8s %10.3f %10.2f %10.1f\n", e.frame, e.time_s, e.reducedRate ? "yes" : "no",
-                            100 * e.meanRelative, 100 * e.p99Relative, 100 * e.maxRelative);
+                std::printf("%8d %9.2f %8s %10.3f %10.2f %10.1f %10.1f\n", e.frame, e.time_s,
+                            e.reducedRate ? "yes" : "no", 100 * e.meanRelative, 100 * e.p99Relative,
+                            100 * e.maxRelative, 100 * e.refinedShare);
         });
-    double worstMean = 0.0, sumMean = 0.0;
+    double worstMean = 0.0, sumMean = 0.0, sumRefined = 0.0;
     int overMean = 0, overP99 = 0;
     std::vector<double> p99s;
     for (const TemporalFrameError& e : errors) {
         worstMean = std::max(worstMean, e.meanRelative);
         sumMean += e.meanRelative;
+        sumRefined += e.refinedShare;
         overMean += e.meanRelative >= 0.03 ? 1 : 0;
         overP99 += e.p99Relative >= 0.15 ? 1 : 0;
         p99s.push_back(e.p99Relative);
     }
     std::printf("frames: %zu; mean error: average %.3f %%, worst %.3f %% (%d frames at 3 %% or more); 99th percentile: "
-                "median %.2f %%, worst %.2f %% at frame %d, t = %.2f s (%d frames at 15 %% or more)\n",
+                                "median %.2f %%, worst %.2f %% at frame %d, t = %.2f s (%d frames at 15 %% or more); marched again "
+                "at full rate: %.1f %% of the pixels on average\n",
                 errors.size(), 100 * sumMean / static_cast<double>(errors.size()), 100 * worstMean, overMean,
-                100 * percentile(p99s, 50), 100 * worst.error.p99Relative, worst.error.frame, worst.error.time_s, overP99);
+                100 * percentile(p99s, 50), 100 * worst.error.p99Relative, worst.error.frame, worst.error.time_s, overP99,
+                100 * sumRefined / static_cast<double>(errors.size()));
+    printPathSkyCost(temporal, fullRate);
     if (o.csv.empty()) return;
     std::ostringstream csv;
-    csv << "renderer,width,height,path,frame,time_s,reduced_rate,mean_relative_error,p99_relative_error,max_relative_error\n";
+    csv << "renderer,width,height,path,frame,time_s,reduced_rate,mean_relative_error,p99_relative_error,max_relative_error,"
+           "refined_share\n";
     for (const TemporalFrameError& e : errors) {
         char line[256];
-        std::snprintf(line, sizeof line, ",%d,%d,%s,%d,%.4f,%d,%.6f,%.6f,%.6f\n", size.x, size.y,
+        std::snprintf(line, sizeof line, ",%d,%d,%s,%d,%.4f,%d,%.6f,%.6f,%.6f,%.4f\n", size.x, size.y,
                       path.file().name.c_str(), e.frame, e.time_s, e.reducedRate ? 1 : 0, e.meanRelative,
-                      e.p99Relative, e.maxRelative);
+                      e.p99Relative, e.maxRelative, e.refinedShare);
         csv << csvField(gl::rendererDescription()) << line;
     }
     writeFileAtomic(o.csv, csv.str());

@@ -25,6 +25,7 @@ struct TemporalFrameError {
     double p99Relative = 0.0;   // its 99th percentile
     double maxRelative = 0.0;
     bool reducedRate = false;   // the temporal frame was marched at the reduced rate
+    double refinedShare = 0.0;  // the share of its pixels marched again at full rate ("sky refine")
 };
 
 // The two images of the worst frame (highest 99th percentile) seen so far, for a caller that

@@ -84,6 +84,7 @@ FrameUniforms makeFrameUniforms(const Scene& scene, const Camera& camera, glm::i
     u.previousJitterY = static_cast<float>(beforeJitter.y);
     u.nearPlane = static_cast<float>(camera.near_m);
     u.exposure = static_cast<float>(scene.render.exposure);
+    u.temporalRefineError = static_cast<float>(scene.render.temporal_refine_error);
     u.frameIndex = frameIndex;
     u.cameraDepthBelowSea = static_cast<float>(cameraDepthBelowSeaM(scene, camera));
     const double beforeTime = previous ? previous->time_s : scene.time_s;

@@ -52,12 +52,15 @@ struct FrameUniforms {
     float previousJitterX;            // pixels: the previous frame's jitter (x; y after the drift)
     glm::vec3 cloudDriftSincePrevious; // m, world axes: how far the wind moved the clouds since the previous frame
     float previousJitterY;
+    float temporalRefineError;        // render.temporal_refine_error (render/sky_temporal.frag)
+    float padding[3];
 };
 static_assert(offsetof(FrameUniforms, planetCenterFromCamera) == 320 && offsetof(FrameUniforms, cameraUp) == 336 &&
                   offsetof(FrameUniforms, sunDirection) == 352 && offsetof(FrameUniforms, cameraFromPrevious) == 368 &&
                   offsetof(FrameUniforms, viewportSize) == 384 && offsetof(FrameUniforms, jitter) == 400 &&
                   offsetof(FrameUniforms, nearPlane) == 408 && offsetof(FrameUniforms, frameIndex) == 416 &&
-                  offsetof(FrameUniforms, cloudDriftSincePrevious) == 432 && sizeof(FrameUniforms) == 448,
+                  offsetof(FrameUniforms, cloudDriftSincePrevious) == 432 &&
+                  offsetof(FrameUniforms, temporalRefineError) == 448 && sizeof(FrameUniforms) == 464,
               "FrameUniforms must match the std140 block in shaders/common/frame_uniforms.glsl");
 
 // The camera a previous frame was rendered with, kept in double for reprojection.

@@ -79,8 +79,12 @@ bool RenderTargets::resize(glm::ivec2 size) {
     sparseSky_.size = (size + 3) / 4;
     sparseSky_.inscatter = makeTexture(GL_RGBA16F, sparseSky_.size, "sparse sky inscatter");
     sparseSky_.transmittance = makeTexture(GL_RGBA16F, sparseSky_.size, "sparse sky transmittance");
-    sparseSky_.framebuffer =
-        makeFramebuffer({&sparseSky_.inscatter, &sparseSky_.transmittance}, nullptr, "sparse sky T, S");
+    sparseSky_.historyError = makeTexture(GL_R16F, sparseSky_.size, "sparse sky history error");
+    sparseSky_.framebuffer = makeFramebuffer({&sparseSky_.inscatter, &sparseSky_.transmittance, &sparseSky_.historyError},
+                                             nullptr, "sparse sky T, S, history error");
+    skyRefine_ = makeTexture(GL_R8, size, "sky refine");
+    temporalFramebuffer_ = makeFramebuffer({&hdr_, &skyInscatter_, &skyTransmittance_, &skyRefine_}, nullptr,
+                                           "hdr + sky T, S + refine");
     ldr_ = makeTexture(GL_RGBA8, size, "ldr");
     ldrFramebuffer_ = makeFramebuffer({&ldr_}, nullptr, "ldr");
     seabedDepth_ = makeTexture(GL_DEPTH_COMPONENT32F, size, "seabed depth");

@@ -13,6 +13,9 @@
 //             history; skyTransmittance: T; render/sky_temporal.frag)
 //   sparse    a quarter of the size on each side (rounded up): the reduced-rate march's
 //             samples, one pixel of each 4x4 block (render/sky_sparse.frag)
+//   refine    R8: the pixels the temporal reconstruction could not trust, marched again at
+//             full rate (render/sky_temporal.frag marks, render/sky_refine.frag marches);
+//             temporalFramebuffer: hdr, sky S and T, refine
 //   ldr       RGBA8 tone-mapped sRGB bytes (what the window shows and PNGs hold)
 //   antialiased  RGBA16F: the temporal anti-aliasing's result, copied back into hdr
 //   history   the previous frame's hdr, surface distance and sky T and S, kept for temporal work
@@ -48,6 +51,7 @@ struct SparseSky {
     glm::ivec2 size{0, 0};
     gl::Texture inscatter{GL_TEXTURE_2D};      // RGBA16F: S, reprojection distance km
     gl::Texture transmittance{GL_TEXTURE_2D};  // RGBA16F: T, the clouds' opacity
+    gl::Texture historyError{GL_TEXTURE_2D};   // R16F: the history's relative error at the sample
     gl::Framebuffer framebuffer;
 };
 
@@ -66,9 +70,12 @@ public:
     const gl::Texture& skyInscatter() const { return skyInscatter_; }
     const gl::Texture& skyTransmittance() const { return skyTransmittance_; }
     const SparseSky& sparseSky() const { return sparseSky_; }
+    const gl::Texture& skyRefine() const { return skyRefine_; }
     const FrameHistory& history() const { return history_; }
     // hdr, skyInscatter and skyTransmittance (the sky passes').
     GLuint hdrFramebuffer() const { return hdrFramebuffer_.id(); }
+    // hdr, skyInscatter, skyTransmittance and skyRefine (the temporal reconstruction's).
+    GLuint temporalFramebuffer() const { return temporalFramebuffer_.id(); }
     GLuint ldrFramebuffer() const { return ldrFramebuffer_.id(); }
     // surface radiance + distance with the G-buffer's depth attached.
     GLuint surfaceFramebuffer() const { return surfaceFramebuffer_.id(); }
@@ -96,8 +103,10 @@ private:
     gl::Texture skyInscatter_{GL_TEXTURE_2D};
     gl::Texture skyTransmittance_{GL_TEXTURE_2D};
     SparseSky sparseSky_;
+    gl::Texture skyRefine_{GL_TEXTURE_2D};
     gl::Framebuffer surfaceFramebuffer_;
     gl::Framebuffer hdrFramebuffer_;
+    gl::Framebuffer temporalFramebuffer_;
     gl::Framebuffer ldrFramebuffer_;
     gl::Texture seabedDepth_{GL_TEXTURE_2D};
     gl::Texture seabedRadiance_{GL_TEXTURE_2D};

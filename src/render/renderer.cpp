@@ -51,6 +51,7 @@ const char* frameResourceName(FrameResource r) {
         case R::GBuffer: return "G-buffer";
         case R::SurfaceRadiance: return "surface radiance";
         case R::SparseSky: return "sparse sky";
+        case R::SkyRefine: return "sky refine mask";
         case R::HdrRadiance: return "HDR radiance";
         case R::LdrImage: return "LDR image";
         case R::Window: return "window";
@@ -84,6 +85,8 @@ Renderer::Renderer(const std::filesystem::path& shaderRoot, const atmosphere::Ta
                  gl::ProgramDesc{"sky march", {"common/fullscreen.vert", "render/sky_sparse.frag"}}),
       skyTemporal_(sources_, programTables_,
                    gl::ProgramDesc{"sky temporal", {"common/fullscreen.vert", "render/sky_temporal.frag"}}),
+      skyRefine_(sources_, programTables_,
+                 gl::ProgramDesc{"sky refine", {"common/fullscreen.vert", "render/sky_refine.frag"}}),
       antialias_(sources_, "antialias", "render/antialias.frag"),
       tonemap_(sources_, "tonemap", "render/tonemap.frag"),
       passes_(makePasses()) {
@@ -148,22 +151,28 @@ std::vector<Renderer::Pass> Renderer::makePasses() {
                           const SparseSky& sparse = targets_.sparseSky();
                           glBindFramebuffer(GL_FRAMEBUFFER, sparse.framebuffer.id());
                           glViewport(0, 0, sparse.size.x, sparse.size.y);
+                          const FrameHistory& history = targets_.history();
+                          glBindTextureUnit(binding::UNIT_SURFACE_RADIANCE, targets_.surfaceRadiance().id());
                           glBindTextureUnit(binding::UNIT_SURFACE_DISTANCE, targets_.surfaceDistance().id());
+                          glBindTextureUnit(binding::UNIT_HISTORY_SKY_INSCATTER, history.skyInscatter.id());
+                          glBindTextureUnit(binding::UNIT_HISTORY_SKY_TRANSMITTANCE, history.skyTransmittance.id());
+                          glBindTextureUnit(binding::UNIT_HISTORY_SURFACE_DISTANCE, history.surfaceDistance.id());
                           glBindVertexArray(emptyVertexArray_.id());
                           glUseProgram(skySparse_.get(s.atmosphere.elek_3d_table, lightShafts(s)).id());
                           glDrawArrays(GL_TRIANGLES, 0, 3);
                           glViewport(0, 0, targets_.size().x, targets_.size().y);
                       },
                       [this] { return skySparse_.built(); }});
-    passes.push_back({{"sky temporal", {R::SurfaceRadiance, R::SparseSky}, {R::HdrRadiance}}, reducedRate,
+    passes.push_back({{"sky temporal", {R::SurfaceRadiance, R::SparseSky}, {R::HdrRadiance, R::SkyRefine}}, reducedRate,
                       [this](const Scene& s) {
-                          glBindFramebuffer(GL_FRAMEBUFFER, targets_.hdrFramebuffer());
+                          glBindFramebuffer(GL_FRAMEBUFFER, targets_.temporalFramebuffer());
                           const SparseSky& sparse = targets_.sparseSky();
                           const FrameHistory& history = targets_.history();
                           glBindTextureUnit(binding::UNIT_SURFACE_RADIANCE, targets_.surfaceRadiance().id());
                           glBindTextureUnit(binding::UNIT_SURFACE_DISTANCE, targets_.surfaceDistance().id());
                           glBindTextureUnit(binding::UNIT_SPARSE_INSCATTER, sparse.inscatter.id());
                           glBindTextureUnit(binding::UNIT_SPARSE_TRANSMITTANCE, sparse.transmittance.id());
+                          glBindTextureUnit(binding::UNIT_SPARSE_HISTORY_ERROR, sparse.historyError.id());
                           glBindTextureUnit(binding::UNIT_HISTORY_SKY_INSCATTER, history.skyInscatter.id());
                           glBindTextureUnit(binding::UNIT_HISTORY_SKY_TRANSMITTANCE, history.skyTransmittance.id());
                           glBindTextureUnit(binding::UNIT_HISTORY_SURFACE_DISTANCE, history.surfaceDistance.id());
@@ -172,6 +181,17 @@ std::vector<Renderer::Pass> Renderer::makePasses() {
                           glDrawArrays(GL_TRIANGLES, 0, 3);
                       },
                       [this] { return skyTemporal_.built(); }});
+    passes.push_back({{"sky refine", {R::SurfaceRadiance, R::SkyRefine}, {R::HdrRadiance}}, reducedRate,
+                      [this](const Scene& s) {
+                          glBindFramebuffer(GL_FRAMEBUFFER, targets_.hdrFramebuffer());
+                          glBindTextureUnit(binding::UNIT_SURFACE_RADIANCE, targets_.surfaceRadiance().id());
+                          glBindTextureUnit(binding::UNIT_SURFACE_DISTANCE, targets_.surfaceDistance().id());
+                          glBindTextureUnit(binding::UNIT_SKY_REFINE, targets_.skyRefine().id());
+                          glBindVertexArray(emptyVertexArray_.id());
+                          glUseProgram(skyRefine_.get(s.atmosphere.elek_3d_table, lightShafts(s)).id());
+                          glDrawArrays(GL_TRIANGLES, 0, 3);
+                      },
+                      [this] { return skyRefine_.built(); }});
     passes.push_back({{"antialias", {R::HdrRadiance, R::SurfaceRadiance}, {R::HdrRadiance}},
                       [this](const Scene&) { return temporalAntialiasing_; },
                       [this](const Scene&) {
@@ -329,7 +349,7 @@ bool Renderer::matchAtmosphereTables() {
     programTables_ = sizes;
     surfaceLight_.program().setSources(withAtmosphere(sources_, sizes));
     std::vector<gl::HotProgram*> rebuilt{&surfaceLight_.program()};
-    for (AtmosphereProgram* p : {&ocean_.program(), &sky_, &skySparse_, &skyTemporal_}) {
+    for (AtmosphereProgram* p : {&ocean_.program(), &sky_, &skySparse_, &skyTemporal_, &skyRefine_}) {
         p->setTableSizes(sizes);
         const std::vector<gl::HotProgram*> built = p->built();
         rebuilt.insert(rebuilt.end(), built.begin(), built.end());

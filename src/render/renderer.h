@@ -29,7 +29,10 @@
 //                                                       block (render/sky_sparse.frag; reduced rate)
 //   sky temporal   sparse sky, surface radiance +       HDR radiance, from the sparse samples and the
 //                  distance, history                    reprojected history (render/sky_temporal.frag),
-//                                                       T and S beside it for the next frame's history
+//                                                       T and S beside it for the next frame's history,
+//                                                       and the mask of pixels it cannot trust
+//   sky refine     refine mask, surface radiance +      HDR radiance, T and S of the masked pixels
+//                  distance, atmosphere                 marched at full rate (render/sky_refine.frag)
 //   antialias      HDR radiance, surface distance,      HDR radiance, anti-aliased over time (the
 //                  history                              explorer: render/antialias.frag; off by default)
 //   tonemap        HDR radiance, exposure               LDR (display-ready sRGB)
@@ -82,7 +85,7 @@ namespace planet {
 
 // What a pass reads and writes, for the order check. The baked resources, the blocks and
 // the atmosphere tables are made by prepare() and are not listed.
-enum class FrameResource { GBuffer, SurfaceRadiance, SparseSky, HdrRadiance, LdrImage, Window };
+enum class FrameResource { GBuffer, SurfaceRadiance, SparseSky, SkyRefine, HdrRadiance, LdrImage, Window };
 const char* frameResourceName(FrameResource r);
 
 struct PassDeclaration {
@@ -102,7 +105,7 @@ struct PrepareReport {
     bool continentsUpdated = false;      // the continents map was loaded or baked, and uploaded
     bool cloudsUpdated = false;          // the cloud volume or weather map was made and uploaded
     bool historyValid = false;           // the previous frame may be reprojected
-    bool reducedRate = false;            // the sky was marched at the reduced rate (sky march + sky temporal)
+    bool reducedRate = false;            // the sky was marched at the reduced rate (sky march, temporal, refine)
 };
 
 class Renderer {
@@ -200,6 +203,7 @@ private:
     AtmosphereProgram sky_;
     AtmosphereProgram skySparse_;
     AtmosphereProgram skyTemporal_;
+    AtmosphereProgram skyRefine_;
     FullscreenPass antialias_;
     FullscreenPass tonemap_;
     gl::Buffer frameUniforms_;

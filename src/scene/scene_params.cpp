@@ -66,6 +66,11 @@ std::vector<ParamSpec> buildTable() {
         "March clouds and air in one pixel of each 4x4 block a frame and reproject the rest from the previous "
         "frames (about 1/10 of the cost); off: every pixel every frame, for reference frames.",
         [](Scene& s) { return ParamRef{&s.render.temporal}; });
+    add("render", "temporal_refine_error", "", 0.0, 1.0,
+        "With the temporal march, in a moving frame: march again at full rate the pixels around a sample whose "
+        "history was off by more than this share (also those with nothing to reproject, on an edge, or with a "
+        "history read across one); lower: closer to the full rate, and dearer. 1: only those.",
+        [](Scene& s) { return ParamRef{&s.render.temporal_refine_error}; });
     return t;
 }
 

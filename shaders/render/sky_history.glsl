@@ -1,0 +1,109 @@
+// The temporal march's history (render/sky_temporal.frag rebuilds each pixel from it,
+// render/sky_sparse.frag checks it against each new sample): where a pixel's point was in the
+// previous frame, and the previous frame's T and S read there. Include after
+// common/frame_uniforms.glsl.
+layout(binding = UNIT_HISTORY_SKY_INSCATTER) uniform sampler2D historyInscatter;
+layout(binding = UNIT_HISTORY_SKY_TRANSMITTANCE) uniform sampler2D historyTransmittance;
+layout(binding = UNIT_HISTORY_SURFACE_DISTANCE) uniform sampler2D historySurfaceDistance;
+
+// How alike two surface distances (m, 0: no surface) are for sharing a sample: 0 for sky
+// against surface, 1 for sky against sky, and for two surfaces a Gaussian in the logarithm of
+// their ratio (1/2: a factor of 1.65; flat ground seen at a grazing angle changes by tens of
+// per cent over a few pixels and stays one surface, a hill against the valley behind it does
+// not).
+float distanceSimilarity(float a, float b) {
+    if ((a > 0.0) != (b > 0.0)) return 0.0;
+    if (a <= 0.0) return 1.0;
+    float x = log(a / b) / 0.5;
+    return exp(-x * x);
+}
+
+float luminance(vec3 c) { return dot(c, vec3(0.2126, 0.7152, 0.0722)); }
+
+struct SkySample {
+    vec3 inscatter;
+    vec3 transmittance;
+};
+
+// The history at `position` (pixels, centres at +0.5) where the previous camera saw its
+// surface at `expected` m (0: sky): Catmull-Rom over 4x4 texels where the 2x2 around the point
+// all show that surface (sharp: a bilinear read each frame would blur what the history holds
+// over the 16 frames until a pixel is traced again), else bilinear over those of the 2x2 that
+// do. `weight` is how much of the footprint matched (0: a disocclusion, no history);
+// `contrast` the relative range of the radiance over the 2x2 that match, seen against `behind`
+// (the surface radiance, or the sun's disc), 1 where the 2x2 straddles an edge between
+// surfaces: a line or an edge in the history, which a reprojection moves only where the
+// scene moved rigidly.
+void readHistory(vec2 position, float expected, vec3 behind, out SkySample history, out float samples,
+                 out float weight, out float contrast) {
+    history = SkySample(vec3(0.0), vec3(0.0));
+    samples = 0.0;
+    weight = 0.0;
+    float lo = 1.0e30, hi = 0.0;
+    vec2 base = floor(position - 0.5);
+    vec2 f = position - 0.5 - base;
+    ivec2 size = ivec2(frame.viewportSize);
+    bool sharp = true;
+    for (int i = 0; i < 4; ++i) {  // the 2x2 around the point: bilinear, with the surface check
+        ivec2 tap = ivec2(base) + ivec2(i & 1, i >> 1);
+        bool inside = all(greaterThanEqual(tap, ivec2(0))) && all(lessThan(tap, size));
+        float alike = inside ? distanceSimilarity(expected, texelFetch(historySurfaceDistance, tap, 0).r) : 0.0;
+        sharp = sharp && alike >= 0.5;
+        if (alike <= 0.0) continue;
+        float b = ((i & 1) != 0 ? f.x : 1.0 - f.x) * ((i >> 1) != 0 ? f.y : 1.0 - f.y) * alike;
+        vec4 s = texelFetch(historyInscatter, tap, 0);
+        vec3 t = texelFetch(historyTransmittance, tap, 0).rgb;
+        history.inscatter += b * s.rgb;
+        history.transmittance += b * t;
+        samples += b * s.a;
+        weight += b;
+        float l = luminance(t * behind + s.rgb);
+        lo = min(lo, l);
+        hi = max(hi, l);
+    }
+    contrast = !sharp ? 1.0 : hi > lo ? (hi - lo) / max(hi, 1.0e-6) : 0.0;
+    if (sharp) {  // Catmull-Rom over the 4x4, the outer ring clamped to the frame's edge
+        vec4 cx = vec4(f.x * (-0.5 + f.x * (1.0 - 0.5 * f.x)), 1.0 + f.x * f.x * (-2.5 + 1.5 * f.x),
+                       f.x * (0.5 + f.x * (2.0 - 1.5 * f.x)), f.x * f.x * (-0.5 + 0.5 * f.x));
+        vec4 cy = vec4(f.y * (-0.5 + f.y * (1.0 - 0.5 * f.y)), 1.0 + f.y * f.y * (-2.5 + 1.5 * f.y),
+                       f.y * (0.5 + f.y * (2.0 - 1.5 * f.y)), f.y * f.y * (-0.5 + 0.5 * f.y));
+        SkySample cubic = SkySample(vec3(0.0), vec3(0.0));
+        float cubicSamples = 0.0;
+        for (int j = 0; j < 4; ++j) {
+            for (int i = 0; i < 4; ++i) {
+                ivec2 tap = clamp(ivec2(base) + ivec2(i - 1, j - 1), ivec2(0), size - 1);
+                float c = cx[i] * cy[j];
+                vec4 s = texelFetch(historyInscatter, tap, 0);
+                cubic.inscatter += c * s.rgb;
+                cubic.transmittance += c * texelFetch(historyTransmittance, tap, 0).rgb;
+                cubicSamples += c * s.a;
+            }
+        }
+        history = SkySample(max(cubic.inscatter, vec3(0.0)), clamp(cubic.transmittance, vec3(0.0), vec3(1.0)));
+        samples = cubicSamples;
+        weight = 1.0;
+    } else if (weight > 0.0) {
+        history.inscatter /= weight;
+        history.transmittance /= weight;
+        samples /= weight;
+    }
+}
+
+// Where the previous frame saw the point of the ray `dir` (pixels, centres at +0.5): the
+// clouds' opacity-weighted distance moved back by the wind where they dominate (`cloudy`),
+// else the surface's, else (0 km) the direction alone.
+vec2 previousPixel(vec3 dir, float reprojectionKm, bool cloudy) {
+    vec3 previousNdc;
+    if (reprojectionKm <= 0.0)
+        previousNdc = previousNdcFromDirection(dir);
+    else if (cloudy)
+        previousNdc = previousNdcFromWorld(dir * (reprojectionKm * M_PER_KM) - frame.cloudDriftSincePrevious);
+    else
+        previousNdc = previousNdcFromWorld(dir * (reprojectionKm * M_PER_KM));
+    return (previousNdc.xy * 0.5 + 0.5) * frame.viewportSize;
+}
+
+// The distance the previous camera had to the surface point `distanceM` along `dir` (0: sky).
+float previousSurfaceDistance(vec3 dir, float distanceM) {
+    return distanceM > 0.0 ? length(dir * distanceM + frame.cameraFromPrevious) : 0.0;
+}

@@ -1,0 +1,33 @@
+// The temporal march's fallback (pass "sky refine"): the pixels that render/sky_temporal.frag
+// marked as beyond what its samples and history can rebuild (in a moving frame: no history to
+// reproject, or samples around that disagree too much to interpolate) are marched again here,
+// exactly as the full-rate sky pass marches them (render/sky.frag), over the reconstruction's
+// T, S and radiance. Every other pixel is discarded before any work.
+#include "common/frame_uniforms.glsl"
+// LIGHT_SHAFTS_TERRAIN (the terrain's shadows in the air) comes from the program builder, 1 only
+// when the preset asks for light shafts (src/render/atmosphere_program.h).
+#include "atmosphere/interface.glsl"
+#include "clouds/cloud_march.glsl"
+#include "ocean/water.glsl"
+#include "render/sky_air.glsl"
+
+in vec2 vNdc;
+layout(binding = UNIT_SURFACE_RADIANCE) uniform sampler2D surfaceRadiance;
+layout(binding = UNIT_SURFACE_DISTANCE) uniform sampler2D surfaceDistance;
+layout(binding = UNIT_SKY_REFINE) uniform sampler2D skyRefine;
+
+layout(location = 0) out vec4 outRadiance;
+layout(location = 1) out vec4 outSkyInscatter;      // S, samples in the history (1: this one)
+layout(location = 2) out vec4 outSkyTransmittance;  // T, 1
+
+void main() {
+    ivec2 pixel = ivec2(gl_FragCoord.xy);
+    if (texelFetch(skyRefine, pixel, 0).r < 0.5) discard;
+    vec3 dir = worldRayFromNdc(vNdc);
+    vec3 surface = texelFetch(surfaceRadiance, pixel, 0).rgb;
+    float distance = texelFetch(surfaceDistance, pixel, 0).r;
+    AirMarch a = marchPixelAtFullRate(pixel, dir, distance);
+    outRadiance = vec4(min(throughAir(dir, surface, distance, a.transmittance, a.inscatter), vec3(MAX_HDR_RADIANCE)), 1.0);
+    outSkyInscatter = vec4(min(a.inscatter, vec3(MAX_HDR_RADIANCE)), 1.0);
+    outSkyTransmittance = vec4(a.transmittance, 1.0);
+}
