@@ -2,7 +2,8 @@
 // size on each side, it traces one pixel of each 4x4 block (render/sparse_pattern.glsl)
 // through air and clouds exactly as the full-rate sky pass does (render/sky.frag), with a
 // start jitter that moves at every visit; render/sky_temporal.frag builds the full frame
-// from these samples and the history.
+// from these samples and the history. Each sample also says how far the history was from it
+// (historyError below), which decides where the reconstruction marches again at full rate.
 #include "common/frame_uniforms.glsl"
 // LIGHT_SHAFTS_TERRAIN (the terrain's shadows in the air) comes from the program builder, 1 only
 // when the preset asks for light shafts (src/render/atmosphere_program.h).
