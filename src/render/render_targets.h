@@ -12,7 +12,8 @@
 //             with the sky passes' T and S beside it (skyInscatter: S, samples in the temporal
 //             history; skyTransmittance: T; render/sky_temporal.frag)
 //   sparse    a quarter of the size on each side (rounded up): the reduced-rate march's
-//             samples, one pixel of each 4x4 block (render/sky_sparse.frag)
+//             samples, one pixel of each 4x4 block, and the history's error at each
+//             (render/sky_sparse.frag)
 //   refine    R8: the pixels the temporal reconstruction could not trust, marched again at
 //             full rate (render/sky_temporal.frag marks, render/sky_refine.frag marches);
 //             temporalFramebuffer: hdr, sky S and T, refine

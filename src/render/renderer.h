@@ -25,8 +25,9 @@
 //                                                       through the unified march of clouds and air
 //                                                       (clouds/cloud_march.glsl; Michelic Eq. 17-20);
 //                                                       every pixel (full rate), or instead:
-//   sky march      surface distance, atmosphere         sparse sky: T and S at one pixel of each 4x4
-//                                                       block (render/sky_sparse.frag; reduced rate)
+//   sky march      surface radiance + distance,         sparse sky: T and S at one pixel of each 4x4
+//                  atmosphere, history                  block, and how far the history was from
+//                                                       each (render/sky_sparse.frag; reduced rate)
 //   sky temporal   sparse sky, surface radiance +       HDR radiance, from the sparse samples and the
 //                  distance, history                    reprojected history (render/sky_temporal.frag),
 //                                                       T and S beside it for the next frame's history,
