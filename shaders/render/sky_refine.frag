@@ -1,6 +1,7 @@
 // The temporal march's fallback (pass "sky refine"): the pixels that render/sky_temporal.frag
-// marked as beyond what its samples and history can rebuild (in a moving frame: no history to
-// reproject, or samples around that disagree too much to interpolate) are marched again here,
+// marked as beyond what its samples and history can rebuild (in a moving frame: nothing to
+// reproject, an edge, a history read across a line, or a nearest sample whose history was off
+// by more than render.temporal_refine_error; the list is at the end of its main) are marched again here,
 // exactly as the full-rate sky pass marches them (render/sky.frag), over the reconstruction's
 // T, S and radiance. Every other pixel is discarded before any work.
 #include "common/frame_uniforms.glsl"
