@@ -178,6 +178,8 @@ TEST_F(CliTest, BenchWritesTableCsvAndPlot) {
     // A software renderer is named as one, with what its timings mean.
     if (contains(r.output, "llvmpipe")) {
         EXPECT_TRUE(contains(r.output, "software renderer (the GPU is the CPU)")) << r.output;
+        // and its passes are finished one by one (--finish-each-pass auto), so CPU + wait is each one's own work
+        EXPECT_TRUE(contains(r.output, "each pass waits for the work before it")) << r.output;
     }
     int rows = 0;
     bool sawSpaceTonemap = false;

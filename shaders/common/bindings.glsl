@@ -46,5 +46,4 @@ const int UNIT_HISTORY_SKY_INSCATTER = 20;  // RGBA16F: the previous frame's S, 
 const int UNIT_HISTORY_SKY_TRANSMITTANCE = 21;  // RGBA16F: the previous frame's T
 const int UNIT_HISTORY_SURFACE_DISTANCE = 22;   // R32F: the previous frame's surface distance, m
 const int UNIT_HISTORY_RADIANCE = 24;       // RGBA16F: the previous frame's hdr (anti-aliased when the explorer's TAA is on)
-const int UNIT_SKY_REFINE = 25;            // R8: 1 where the temporal reconstruction asks for a full-rate march
 const int UNIT_TERRAIN_DETAIL = 23;         // RGBA16F tiling detail height field, mipmapped, GL_REPEAT (terrain/detail_texture.h)

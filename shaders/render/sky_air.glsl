@@ -70,9 +70,14 @@ vec3 throughWater(vec3 surface, float distance) {
     return transmittance * surface + (1.0 - transmittance) * deepWaterRadiance(light);
 }
 
+// What the air's T dims along `dir`: the surface's radiance R_G where there is a surface
+// (`distance` > 0), else the sun's disc.
+vec3 behindTheAir(vec3 dir, vec3 surface, float distance) {
+    return distance > 0.0 ? surface : SunDiscRadiance(dir, frame.sunDirection);
+}
+
 // In air: L = T R_G + S at a surface point, S + T x the sun's disc where the ray goes to
 // space (Elek Eq. 19-20; Sperlhofer Eq. 2-16).
 vec3 throughAir(vec3 dir, vec3 surface, float distance, vec3 transmittance, vec3 inscatter) {
-    if (distance <= 0.0) return inscatter + transmittance * SunDiscRadiance(dir, frame.sunDirection);
-    return transmittance * surface + inscatter;
+    return transmittance * behindTheAir(dir, surface, distance) + inscatter;
 }

@@ -3,7 +3,9 @@
 // reproject, an edge, a history read across a line, or a nearest sample whose history was off
 // by more than render.temporal_refine_error; the list is at the end of its main) are marched again here,
 // exactly as the full-rate sky pass marches them (render/sky.frag), over the reconstruction's
-// T, S and radiance. Every other pixel is discarded before any work.
+// T, S and radiance. Every other pixel is dropped before this shader runs: the marks are the
+// depth the pass draws over, and its triangle passes the depth test only where one was made
+// (src/render/renderer.cpp).
 #include "common/frame_uniforms.glsl"
 // LIGHT_SHAFTS_TERRAIN (the terrain's shadows in the air) comes from the program builder, 1 only
 // when the preset asks for light shafts (src/render/atmosphere_program.h).
@@ -12,10 +14,10 @@
 #include "ocean/water.glsl"
 #include "render/sky_air.glsl"
 
+layout(early_fragment_tests) in;  // the depth test, before the shader: see above
 in vec2 vNdc;
 layout(binding = UNIT_SURFACE_RADIANCE) uniform sampler2D surfaceRadiance;
 layout(binding = UNIT_SURFACE_DISTANCE) uniform sampler2D surfaceDistance;
-layout(binding = UNIT_SKY_REFINE) uniform sampler2D skyRefine;
 
 layout(location = 0) out vec4 outRadiance;
 layout(location = 1) out vec4 outSkyInscatter;      // S, samples in the history (1: this one)
@@ -23,7 +25,6 @@ layout(location = 2) out vec4 outSkyTransmittance;  // T, 1
 
 void main() {
     ivec2 pixel = ivec2(gl_FragCoord.xy);
-    if (texelFetch(skyRefine, pixel, 0).r < 0.5) discard;
     vec3 dir = worldRayFromNdc(vNdc);
     vec3 surface = texelFetch(surfaceRadiance, pixel, 0).rgb;
     float distance = texelFetch(surfaceDistance, pixel, 0).r;

@@ -23,13 +23,14 @@ layout(location = 2) out float outHistoryError;  // how far the history was from
 
 // How far the history, reprojected to the traced pixel as the reconstruction reads it (not
 // clamped), is from the new sample there: the relative difference of the radiance's
-// luminance; 1 where there is nothing to reproject, 0 without a history. The reconstruction
-// marks the pixels around a sample with a large one for a full-rate march (what moved in a
-// way the reprojection cannot follow: parallax between layers of cloud, a grazing ray's point
-// sample, light that changed).
+// luminance, (now - then) / max(now, then), positive where the sample is brighter; 1 where
+// there is nothing to reproject, 0 without a history. The reconstruction marks the pixels
+// around a sample with a large one for a full-rate march (what moved in a way the
+// reprojection cannot follow: parallax between layers of cloud, a grazing ray's point sample),
+// and scales the history between the samples by a small one (light that changed).
 float historyError(ivec2 pixel, vec3 dir, float distance, AirMarch a) {
     if (frame.historyValid < 0.5) return 0.0;
-    vec3 behind = distance > 0.0 ? texelFetch(surfaceRadiance, pixel, 0).rgb : SunDiscRadiance(dir, frame.sunDirection);
+    vec3 behind = behindTheAir(dir, texelFetch(surfaceRadiance, pixel, 0).rgb, distance);
     SkySample history;
     float samples, weight, contrast;
     readHistory(previousPixel(dir, a.reprojectionKm, a.cloudOpacity > CLOUDY_OPACITY),
@@ -37,7 +38,7 @@ float historyError(ivec2 pixel, vec3 dir, float distance, AirMarch a) {
     if (weight <= 0.05) return 1.0;
     float now = luminance(a.transmittance * behind + a.inscatter);
     float then = luminance(history.transmittance * behind + history.inscatter);
-    return abs(now - then) / max(max(now, then), 1.0e-6);
+    return (now - then) / max(max(now, then), 1.0e-6);
 }
 
 void main() {

@@ -52,6 +52,7 @@ struct BenchOptions {
     int warmup = 10;
     std::string path = "takeoff";         // --suite temporal: the camera path
     std::optional<int> pathFrames;        // --suite temporal: frames over it (default: its natural count)
+    std::string finishEachPass = "auto";  // on / off / auto (on for software renderers): Profiler::setFinishEachPass
     std::string csv = "out/bench.csv";
     std::string plot = "out/bench.png";
 };

@@ -144,6 +144,11 @@ int main(int argc, char** argv) {
         ->capture_default_str();
     benchCmd->add_option("--path-frames", bench.pathFrames,
                          "--suite temporal: this many frames evenly over the path (default: duration x fps + 1)");
+    benchCmd->add_option("--finish-each-pass", bench.finishEachPass,
+                         "Wait for the GPU before and after each pass, so that its time is its own work: on, off, or auto "
+                         "(on for software renderers such as llvmpipe, whose timestamps otherwise carry the pass before)")
+        ->check(CLI::IsMember({"auto", "on", "off"}))
+        ->capture_default_str();
     benchCmd->add_option("--warmup", bench.warmup, "Unrecorded frames per view before recording")->capture_default_str();
     benchCmd->add_option("--csv", bench.csv, "CSV output (empty: none)")->capture_default_str();
     benchCmd->add_option("--plot", bench.plot, "Plot PNG output (empty: none)")->check(kPngFile)->capture_default_str();

@@ -4,18 +4,14 @@
 
 namespace planet {
 
-namespace {
-
-// The share of the frame's pixels that the reconstruction marked for a full-rate march.
-double refinedShare(const Renderer& r, glm::ivec2 size) {
-    if (!r.lastPrepare().reducedRate) return 0.0;
-    const ImageRGBA8 mask = readTextureRGBA8(r.targets().skyRefine(), size.x, size.y);
-    std::size_t marked = 0;
-    for (std::size_t i = 0; i < mask.pixels.size(); i += 4) marked += mask.pixels[i] > 127 ? 1 : 0;
-    return static_cast<double>(marked) / (static_cast<double>(size.x) * size.y);
+std::vector<std::size_t> refinedPixels(const Renderer& r, glm::ivec2 size) {
+    std::vector<std::size_t> marked;
+    if (!r.lastPrepare().reducedRate) return marked;
+    const std::vector<float> mask = readTextureDepth(r.targets().skyRefine(), size.x, size.y);
+    for (std::size_t i = 0; i < mask.size(); ++i)
+        if (mask[i] > 0.5f) marked.push_back(i);
+    return marked;
 }
-
-}  // namespace
 
 std::vector<TemporalFrameError> measureTemporalError(Renderer& temporal, Renderer& fullRate, Session& session,
                                                      const CameraPath& path, int frameCount, int first, int last,
@@ -40,7 +36,7 @@ std::vector<TemporalFrameError> measureTemporalError(Renderer& temporal, Rendere
         e.p99Relative = c.errorPercentile(99.0);
         e.maxRelative = c.maxRelativeError;
         e.reducedRate = temporal.lastPrepare().reducedRate;
-        e.refinedShare = refinedShare(temporal, size);
+        e.refinedShare = static_cast<double>(refinedPixels(temporal, size).size()) / (double(size.x) * size.y);
         errors.push_back(e);
         if (worst && (worst->temporal.pixels.empty() || e.p99Relative > worst->error.p99Relative))
             *worst = {e, std::move(a), std::move(b)};

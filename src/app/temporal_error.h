@@ -35,6 +35,11 @@ struct TemporalWorstFrame {
     ImageRGBAF temporal, fullRate;
 };
 
+// The pixels the reconstruction of the renderer's last frame marked for a full-rate march
+// (render/sky_refine.frag), as indices into an image read by readTextureRGBAF (row 0 at the
+// top); none where that frame was not marched at the reduced rate.
+std::vector<std::size_t> refinedPixels(const Renderer& r, glm::ivec2 size);
+
 // Frames [first, last) of a sequence of `frameCount` frames along `path` (pathFrameTime),
 // at `size`. `temporal` renders with the session's scene (render.temporal on) and keeps its
 // history across the frames; `fullRate` renders the same frames with render.temporal off.

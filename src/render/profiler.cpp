@@ -19,12 +19,15 @@ double threadCpuMs() {
 
 const char* softwareTimingNote() {
     return "software renderer (the GPU is the CPU): GPU timestamps are coarse, taken when the driver's threads reach "
-           "them rather than when the work is done (a draw that kept llvmpipe busy 141 ms read 10 ms), so read the "
-           "wait column; vertex and tessellation stages run inside the draw call, as CPU time";
+           "them rather than when the work is done (a draw that kept llvmpipe busy 168 ms read 15 ms), so read CPU + "
+           "wait; bench finishes each pass on such a renderer (--finish-each-pass), so that a pass's CPU + wait is its "
+           "own work; vertex and tessellation stages run inside the draw call, as CPU time";
 }
 
-Profiler::Scope::Scope(Profiler& profiler, int pass)
-    : profiler_(profiler), pass_(pass), start_(std::chrono::steady_clock::now()), cpuStartMs_(threadCpuMs()) {
+Profiler::Scope::Scope(Profiler& profiler, int pass) : profiler_(profiler), pass_(pass) {
+    if (profiler_.finishEachPass_) glFinish();
+    start_ = std::chrono::steady_clock::now();
+    cpuStartMs_ = threadCpuMs();
     FrameSlot& slot = profiler_.slots_[static_cast<std::size_t>(profiler_.current_)];
     if (slot.used == slot.samples.size()) slot.samples.emplace_back();
     slot.samples[slot.used].pass = pass;
@@ -33,6 +36,7 @@ Profiler::Scope::Scope(Profiler& profiler, int pass)
 
 Profiler::Scope::~Scope() {
     FrameSlot& slot = profiler_.slots_[static_cast<std::size_t>(profiler_.current_)];
+    if (profiler_.finishEachPass_) glFinish();
     glQueryCounter(slot.samples[slot.used].end.id(), GL_TIMESTAMP);
     slot.used++;
     const double wall = msSince(start_);

@@ -77,6 +77,12 @@ public:
 
     void setRecording(bool on);
     void clearRecordings();
+    // Each pass waits for all work before it (glFinish) at its start and for its own at its end,
+    // so its timestamps and wall time hold its own work and nothing else. Off by default (it
+    // stops the GPU overlapping the passes); bench turns it on for software renderers, whose
+    // timestamps otherwise carry the work of the pass before (softwareTimingNote()).
+    void setFinishEachPass(bool on) { finishEachPass_ = on; }
+    bool finishEachPass() const { return finishEachPass_; }
 
     const std::vector<PassTimings>& passes() const { return passes_; }
     const RollingStats& frameGpuMs() const { return frameGpuMs_; }
@@ -106,6 +112,7 @@ private:
     long long frameIndex_ = 0;
     long long droppedFrames_ = 0;
     bool recording_ = false;
+    bool finishEachPass_ = false;
     bool inFrame_ = false;
     std::chrono::steady_clock::time_point frameStart_;
     double frameCpuStartMs_ = 0.0;

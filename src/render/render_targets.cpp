@@ -82,9 +82,9 @@ bool RenderTargets::resize(glm::ivec2 size) {
     sparseSky_.historyError = makeTexture(GL_R16F, sparseSky_.size, "sparse sky history error");
     sparseSky_.framebuffer = makeFramebuffer({&sparseSky_.inscatter, &sparseSky_.transmittance, &sparseSky_.historyError},
                                              nullptr, "sparse sky T, S, history error");
-    skyRefine_ = makeTexture(GL_R8, size, "sky refine");
-    temporalFramebuffer_ = makeFramebuffer({&hdr_, &skyInscatter_, &skyTransmittance_, &skyRefine_}, nullptr,
-                                           "hdr + sky T, S + refine");
+    skyRefine_ = makeTexture(GL_DEPTH_COMPONENT16, size, "sky refine");
+    temporalFramebuffer_ =
+        makeFramebuffer({&hdr_, &skyInscatter_, &skyTransmittance_}, &skyRefine_, "hdr + sky T, S over refine");
     ldr_ = makeTexture(GL_RGBA8, size, "ldr");
     ldrFramebuffer_ = makeFramebuffer({&ldr_}, nullptr, "ldr");
     seabedDepth_ = makeTexture(GL_DEPTH_COMPONENT32F, size, "seabed depth");

@@ -14,9 +14,11 @@
 //   sparse    a quarter of the size on each side (rounded up): the reduced-rate march's
 //             samples, one pixel of each 4x4 block, and the history's error at each
 //             (render/sky_sparse.frag)
-//   refine    R8: the pixels the temporal reconstruction could not trust, marched again at
-//             full rate (render/sky_temporal.frag marks, render/sky_refine.frag marches);
-//             temporalFramebuffer: hdr, sky S and T, refine
+//   refine    DEPTH16: the pixels the temporal reconstruction could not trust (1; else 0),
+//             marched again at full rate (render/sky_temporal.frag marks them, render/
+//             sky_refine.frag marches them): a depth, so that the refine pass's depth test drops
+//             the other pixels before its fragment shader runs.
+//             temporalFramebuffer: hdr, sky S and T over refine (both passes draw into it)
 //   ldr       RGBA8 tone-mapped sRGB bytes (what the window shows and PNGs hold)
 //   antialiased  RGBA16F: the temporal anti-aliasing's result, copied back into hdr
 //   history   the previous frame's hdr, surface distance and sky T and S, kept for temporal work
@@ -75,7 +77,8 @@ public:
     const FrameHistory& history() const { return history_; }
     // hdr, skyInscatter and skyTransmittance (the sky passes').
     GLuint hdrFramebuffer() const { return hdrFramebuffer_.id(); }
-    // hdr, skyInscatter, skyTransmittance and skyRefine (the temporal reconstruction's).
+    // hdr, skyInscatter and skyTransmittance over skyRefine (the temporal reconstruction writes
+    // the marks, the refine pass tests them).
     GLuint temporalFramebuffer() const { return temporalFramebuffer_.id(); }
     GLuint ldrFramebuffer() const { return ldrFramebuffer_.id(); }
     // surface radiance + distance with the G-buffer's depth attached.
