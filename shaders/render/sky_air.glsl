@@ -70,6 +70,16 @@ vec3 throughWater(vec3 surface, float distance) {
     return transmittance * surface + (1.0 - transmittance) * deepWaterRadiance(light);
 }
 
+// Whether the ray `dir` from the camera never enters the air: the camera above the atmosphere's
+// top and the ray leaving it or passing it by. Then T = 1 and S = 0 exactly, as the march gives.
+bool rayMissesTheAir(vec3 dir) {
+    AtmosphereParameters atmosphere = atmosphereParameters();
+    float r = atmosphere.bottom_radius + frame.cameraAltitude / M_PER_KM;
+    if (r < atmosphere.top_radius) return false;
+    float mu = dot(frame.cameraUp, dir);
+    return mu >= 0.0 || r * r * (mu * mu - 1.0) + atmosphere.top_radius * atmosphere.top_radius < 0.0;
+}
+
 // What the air's T dims along `dir`: the surface's radiance R_G where there is a surface
 // (`distance` > 0), else the sun's disc.
 vec3 behindTheAir(vec3 dir, vec3 surface, float distance) {

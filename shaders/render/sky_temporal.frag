@@ -81,6 +81,13 @@ void main() {
     vec3 dir = worldRayFromNdc(vNdc);
     vec3 surface = texelFetch(surfaceRadiance, pixel, 0).rgb;
     float distance = texelFetch(surfaceDistance, pixel, 0).r;
+    if (distance <= 0.0 && rayMissesTheAir(dir)) {  // space: nothing to march or rebuild
+        outRadiance = vec4(min(SunDiscRadiance(dir, frame.sunDirection), vec3(MAX_HDR_RADIANCE)), 1.0);
+        outSkyInscatter = vec4(0.0, 0.0, 0.0, MAX_HISTORY_SAMPLES);
+        outSkyTransmittance = vec4(1.0);
+        gl_FragDepth = 0.0;
+        return;
+    }
 
     // This frame's samples around the pixel.
     ivec2 block = pixel / SPARSE_BLOCK;
