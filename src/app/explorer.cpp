@@ -193,6 +193,9 @@ public:
         // A reset (a slider dragged, a jump) costs a reduced-rate frame and converges in 16; a
         // path plays as `planet render --path` renders it, its first frame at full rate.
         renderer_.setFullRateOnReset(!options.path.empty());
+        // On a software renderer the passes do not overlap anyway: finish each one, so that the
+        // Frame time panel's CPU + wait is each pass's own work (the panel's checkbox turns it off).
+        renderer_.profiler().setFinishEachPass(softwareRenderer(rendererName_));
         if (!options.path.empty()) {
             path_.emplace(loadSessionPath(paths, options.path, session_));
             pathFrames_ = pathFrameCount(path_->file(), std::nullopt);

@@ -128,7 +128,7 @@ void renderScaleRow(RenderScaleUi& scale) {
 
 }  // namespace
 
-void drawProfilerPanel(const Profiler& profiler, const std::string& renderer, RenderScaleUi* scale) {
+void drawProfilerPanel(Profiler& profiler, const std::string& renderer, RenderScaleUi* scale) {
     placeOnFirstUse("Frame time");
     if (!ImGui::Begin("Frame time")) return ImGui::End();
     if (scale) renderScaleRow(*scale);
@@ -137,6 +137,12 @@ void drawProfilerPanel(const Profiler& profiler, const std::string& renderer, Re
                 profiler.frameWaitMs().median(), profiler.frameGpuMs().median());
     ImGui::TextDisabled("%s", renderer.c_str());
     if (softwareRenderer(renderer)) ImGui::TextWrapped("%s", softwareTimingNote());
+    bool finish = profiler.finishEachPass();
+    if (ImGui::Checkbox("finish each pass", &finish)) profiler.setFinishEachPass(finish);
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("Wait for the GPU before and after each pass (glFinish), so that a pass's CPU + wait is "
+                          "its own work and nothing of the passes before it. On by default on a software renderer; "
+                          "on a GPU it stops the passes overlapping and slows the frame.");
     historyGraph("GPU", profiler.frameGpuMs());
     // CPU: the pass's own CPU time (submitting); wait: the rest of its wall time, off the CPU
     // (mostly the driver waiting for earlier GPU work).

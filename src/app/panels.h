@@ -41,7 +41,7 @@ struct RenderScaleUi {
 
 // Frame time: FPS, frame GPU/CPU graph, and a per-pass min/median/max table; with `scale`,
 // the render scale's slider too.
-void drawProfilerPanel(const Profiler& profiler, const std::string& renderer, RenderScaleUi* scale = nullptr);
+void drawProfilerPanel(Profiler& profiler, const std::string& renderer, RenderScaleUi* scale = nullptr);
 
 // One widget per row of the parameter table, grouped by section. Returns true
 // when a value changed (already clamped to its valid range). While the
