@@ -40,6 +40,19 @@ protected:
         reference->render(scene, camera, size);
         return hdrOf(*reference, size);
     }
+    // Frames [first, last) of the shipped takeoff path at `size`, each against its full-rate
+    // frame (app/temporal_error.h), the temporal renderer's history starting at `first`. Two new
+    // renderers: the terrain's and the sea's grids stay anchored where earlier cameras were
+    // (Michelic's persistent grid), so renderers with different pasts draw slightly different
+    // surfaces (the suite's own pair: 0.4 % mean error in a frame both march at full rate).
+    static std::vector<TemporalFrameError> takeoffErrors(int first, int last, glm::ivec2 size) {
+        Session s = session("beach");
+        const CameraPath path = loadSessionPath(test::repoPaths(), "takeoff", s);
+        Renderer withHistory(test::repoPaths().shaders(), atmosphere::TableSizes::reduced());
+        Renderer atFullRate(test::repoPaths().shaders(), atmosphere::TableSizes::reduced());
+        return measureTemporalError(withHistory, atFullRate, s, path, pathFrameCount(path.file(), std::nullopt), first,
+                                    last, size);
+    }
     static inline std::unique_ptr<Renderer> temporal;
     static inline std::unique_ptr<Renderer> reference;
 };
@@ -214,17 +227,7 @@ TEST_F(Temporal, AlongTheTakeoffPathTheFramesStayNearTheFullRateOnes) {
     // along a grazing ray and no reprojection can predict the full-rate frame's point sample.
     // The share marched again is bounded too (a refinement of every pixel would pass the error
     // bar at the full rate's cost).
-    const glm::ivec2 size{160, 90};
-    Session s = session("beach");
-    const CameraPath path = loadSessionPath(test::repoPaths(), "takeoff", s);
-    const int frames = pathFrameCount(path.file(), std::nullopt);
-    // Two new renderers: the terrain's and the sea's grids stay anchored where earlier cameras
-    // were (Michelic's persistent grid), so renderers with different pasts draw slightly
-    // different surfaces (the suite's own pair: 0.4 % mean error in a frame both march at full
-    // rate).
-    Renderer withHistory(test::repoPaths().shaders(), atmosphere::TableSizes::reduced());
-    Renderer atFullRate(test::repoPaths().shaders(), atmosphere::TableSizes::reduced());
-    const std::vector<TemporalFrameError> errors = measureTemporalError(withHistory, atFullRate, s, path, frames, 0, 46, size);
+    const std::vector<TemporalFrameError> errors = takeoffErrors(0, 46, {160, 90});
     double worstMean = 0.0, worstP99 = 0.0;
     for (const TemporalFrameError& e : errors) {
         EXPECT_EQ(e.reducedRate, e.frame > 0) << "frame " << e.frame;
@@ -237,7 +240,6 @@ TEST_F(Temporal, AlongTheTakeoffPathTheFramesStayNearTheFullRateOnes) {
     EXPECT_LT(worstP99, 0.15);
 }
 
-
 TEST_F(Temporal, ClimbingAboveTheDeckTheHistoryFollowsTheLight) {
     // 13.3-14.3 s of the shipped path, just above the deck's tops and climbing: the whole frame
     // brightens by a few per cent a frame while the points hardly move, and the pixels between
@@ -246,14 +248,7 @@ TEST_F(Temporal, ClimbingAboveTheDeckTheHistoryFollowsTheLight) {
     // found the scene changed (sky_temporal.frag's gain). Judged over the second half, when the
     // history has been built up: the mean relative error averaged over those frames. Measured on
     // llvmpipe: 0.38 %; 1.54 % without the gain.
-    const glm::ivec2 size{96, 54};
-    Session s = session("beach");
-    const CameraPath path = loadSessionPath(test::repoPaths(), "takeoff", s);
-    const int frames = pathFrameCount(path.file(), std::nullopt);
-    Renderer withHistory(test::repoPaths().shaders(), atmosphere::TableSizes::reduced());
-    Renderer atFullRate(test::repoPaths().shaders(), atmosphere::TableSizes::reduced());
-    const std::vector<TemporalFrameError> errors =
-        measureTemporalError(withHistory, atFullRate, s, path, frames, 400, 430, size);
+    const std::vector<TemporalFrameError> errors = takeoffErrors(400, 430, {96, 54});
     double sum = 0.0, worst = 0.0;
     int judged = 0;
     for (const TemporalFrameError& e : errors) {
