@@ -73,6 +73,14 @@ struct QueryKind {
     static GLuint create(GLenum target) { GLuint n = 0; glCreateQueries(target, 1, &n); return n; }
     static void destroy(GLuint n) { glDeleteQueries(1, &n); }
 };
+// A query name from glGenQueries, its object made at the first glBeginQuery: Mesa's 4.5
+// contexts refuse glCreateQueries for ARB_pipeline_statistics_query's targets, which
+// glBeginQuery takes.
+struct GenQueryKind {
+    static constexpr GLenum labelNamespace = GL_QUERY;
+    static GLuint create() { GLuint n = 0; glGenQueries(1, &n); return n; }
+    static void destroy(GLuint n) { glDeleteQueries(1, &n); }
+};
 struct ShaderKind {
     static constexpr GLenum labelNamespace = GL_SHADER;
     static GLuint create(GLenum stage) { return glCreateShader(stage); }
@@ -89,6 +97,7 @@ using VertexArray = GlObject<VertexArrayKind>;
 using Framebuffer = GlObject<FramebufferKind>;
 using Texture = GlObject<TextureKind>;
 using Query = GlObject<QueryKind>;
+using GenQuery = GlObject<GenQueryKind>;  // for pipeline statistics (see GenQueryKind)
 using Shader = GlObject<ShaderKind>;
 using ProgramObject = GlObject<ProgramKind>;
 

@@ -28,15 +28,6 @@
 
 namespace planet {
 
-// A query name from glGenQueries, its object made at the first glBeginQuery: Mesa's 4.5
-// contexts refuse glCreateQueries for ARB_pipeline_statistics_query's targets, which
-// glBeginQuery takes.
-struct GenQueryKind {
-    static constexpr GLenum labelNamespace = GL_QUERY;
-    static GLuint create() { GLuint n = 0; glGenQueries(1, &n); return n; }
-    static void destroy(GLuint n) { glDeleteQueries(1, &n); }
-};
-
 class TerrainPass {
 public:
     explicit TerrainPass(const gl::ShaderSources& sources);
@@ -77,11 +68,11 @@ private:
     bool statistics_ = false;
     Statistics lastStatistics_;
     gl::Query primitives_{GL_PRIMITIVES_GENERATED};
-    gl::GlObject<GenQueryKind> vertices_;
-    gl::GlObject<GenQueryKind> clipped_;
-    gl::GlObject<GenQueryKind> patches_;
-    gl::GlObject<GenQueryKind> evaluations_;
-    gl::GlObject<GenQueryKind> fragments_;
+    gl::GenQuery vertices_;
+    gl::GenQuery clipped_;
+    gl::GenQuery patches_;
+    gl::GenQuery evaluations_;
+    gl::GenQuery fragments_;
 };
 
 }  // namespace planet
