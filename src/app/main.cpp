@@ -146,7 +146,8 @@ int main(int argc, char** argv) {
                          "--suite temporal: this many frames evenly over the path (default: duration x fps + 1)");
     benchCmd->add_option("--finish-each-pass", bench.finishEachPass,
                          "Wait for the GPU before and after each pass, so that its time is its own work: on, off, or auto "
-                         "(on for software renderers such as llvmpipe, whose timestamps otherwise carry the pass before)")
+                         "(on for software renderers such as llvmpipe, where a pass's wait otherwise holds the passes "
+                         "before it and the timestamps are coarse)")
         ->check(CLI::IsMember({"auto", "on", "off"}))
         ->capture_default_str();
     benchCmd->add_option("--warmup", bench.warmup, "Unrecorded frames per view before recording")->capture_default_str();
