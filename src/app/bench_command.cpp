@@ -142,7 +142,7 @@ double skyMs(const std::vector<BenchRow>& rows, const std::string& view, bool wa
 
 // What the sky's times are: the label for skyMs's figures.
 const char* skyTimeLabel(bool wall) {
-    return wall ? "wall medians, CPU + wait, each pass finished" : "GPU medians";
+    return wall ? "wall time, CPU + wait, each pass finished" : "GPU timestamps";
 }
 
 // The clouds suite: each cloud view marched at the reduced rate (render.temporal, the
@@ -191,7 +191,7 @@ std::vector<std::string> benchClouds(Renderer& frame, Session& session, const st
         }
     }
     session.scene = preset;
-    ratios.insert(ratios.begin(), std::string("sky passes (") + skyTimeLabel(frame.profiler().finishEachPass()) +
+    ratios.insert(ratios.begin(), std::string("sky passes (medians of the ") + skyTimeLabel(frame.profiler().finishEachPass()) +
                                       "): the reduced-rate march + its reconstruction + the pixels marched again "
                                       "against the full-rate march");
     return ratios;
@@ -262,7 +262,7 @@ void printPathSkyCost(Renderer& temporal, Renderer& fullRate) {
                  refine = total(temporal, "sky refine"), reset = total(temporal, "sky"), full = total(fullRate, "sky");
     std::printf("sky passes along the path, ms summed over the frames (%s): temporal %.0f (sky march %.0f, sky "
                 "temporal %.0f, sky refine %.0f, full-rate frames without history %.0f) against full rate %.0f: %.3f\n",
-                wall ? "wall, CPU + wait, each pass finished" : "GPU", march + reconstruction + refine + reset, march,
+                skyTimeLabel(wall), march + reconstruction + refine + reset, march,
                 reconstruction, refine, reset, full, (march + reconstruction + refine + reset) / std::max(full, 1.0e-9));
 }
 

@@ -20,8 +20,8 @@ double threadCpuMs() {
 const char* softwareTimingNote() {
     return "software renderer (the GPU is the CPU): GPU timestamps are coarse, taken when the driver's threads reach "
            "them rather than when the work is done (a draw that kept llvmpipe busy 168 ms read 15 ms), so read CPU + "
-           "wait; bench finishes each pass on such a renderer (--finish-each-pass), so that a pass's CPU + wait is its "
-           "own work; vertex and tessellation stages run inside the draw call, as CPU time";
+           "wait; bench and the explorer finish each pass on such a renderer (--finish-each-pass, the checkbox), so that a "
+           "pass's CPU + wait is its own work; vertex and tessellation stages run inside the draw call, as CPU time";
 }
 
 Profiler::Scope::Scope(Profiler& profiler, int pass) : profiler_(profiler), pass_(pass) {

@@ -78,9 +78,10 @@ public:
     void setRecording(bool on);
     void clearRecordings();
     // Each pass waits for all work before it (glFinish) at its start and for its own at its end,
-    // so its timestamps and wall time hold its own work and nothing else. Off by default (it
-    // stops the GPU overlapping the passes); bench turns it on for software renderers, whose
-    // timestamps otherwise carry the work of the pass before (softwareTimingNote()).
+    // so its wall time (CPU + wait) holds its own work and nothing else; without it a pass's wait
+    // holds the work of the passes before it. Off by default (it stops the GPU overlapping the
+    // passes); bench and the explorer turn it on for software renderers, whose timestamps are
+    // coarse besides (softwareTimingNote()).
     void setFinishEachPass(bool on) { finishEachPass_ = on; }
     bool finishEachPass() const { return finishEachPass_; }
 
