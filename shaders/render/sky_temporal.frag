@@ -199,10 +199,12 @@ void main() {
         // away), and only by a box of three samples or more (one or two say little).
         float changed = smoothstep(0.03, 0.1, disagreement / max(boxSamples, 1.0));
         float clampAmount = moving * max(smoothstep(0.05, 0.5, motion), changed) * smoothstep(1.5, 3.5, boxSamples);
-        if (moving > 0.0 && gainWeight > 0.0) {  // L = T behind + S scaled by the gain, through S
+        if (moving > 0.0 && gainWeight > 0.0) {  // L = T R_G + S scaled by the gain, through S
+            // Not T x the sun's disc: a per cent of the disc added to S would stay in the history
+            // as a glare after the disc moved on.
             float gain = exp(gainLog / gainWeight);
-            history.inscatter = max(history.inscatter + (gain - 1.0) * (history.transmittance * behind + history.inscatter),
-                                    vec3(0.0));
+            vec3 radiance = history.transmittance * (distance > 0.0 ? surface : vec3(0.0)) + history.inscatter;
+            history.inscatter = max(history.inscatter + (gain - 1.0) * radiance, vec3(0.0));
         }
         history.inscatter = mix(history.inscatter, clamp(history.inscatter, loS, hiS), clampAmount);
         history.transmittance = mix(history.transmittance, clamp(history.transmittance, loT, hiT), clampAmount);
