@@ -216,8 +216,9 @@ TEST_F(CliTest, BenchCloudsSuiteSweepsStepAndSunSamplesAndCountsMarchSteps) {
     ASSERT_EQ(r.exitCode, 0) << r.output;
     std::ifstream csv(dir / "c.csv");
     std::string text((std::istreambuf_iterator<char>(csv)), {});
-    // The five cloud views at the reduced and the full rate and the 3 x 4 sweep on the first,
-    // each with a frame row holding the march's steps per pixel and skipped share.
+    // The five cloud views at the reduced rate (still, and with the clock running) and at the
+    // full rate and the 3 x 4 sweep on the first, each with a frame row holding the march's
+    // steps per pixel and skipped share.
     std::map<std::string, std::pair<double, double>> frames;
     std::istringstream lines(text);
     std::string line;
@@ -232,14 +233,18 @@ TEST_F(CliTest, BenchCloudsSuiteSweepsStepAndSunSamplesAndCountsMarchSteps) {
         if (f[n - 10] != "frame") continue;
         frames[f[n - 11]] = {std::stod(f[n - 4]), std::stod(f[n - 3])};
     }
-    for (const char* view : {"cumulus", "clouds", "deck", "orbit", "space", "cumulus/full-rate", "space/full-rate",
-                             "cumulus/step0.2km/sun0", "cumulus/step0.05km/sun12"})
+    for (const char* view : {"cumulus", "clouds", "deck", "orbit", "space", "cumulus/clock", "space/clock",
+                             "cumulus/full-rate", "space/full-rate", "cumulus/step0.2km/sun0", "cumulus/step0.05km/sun12"})
         EXPECT_TRUE(frames.count(view)) << view << "\n" << text;
-    EXPECT_EQ(frames.size(), 5u + 5u + 12u) << text;
+    EXPECT_EQ(frames.size(), 5u + 5u + 5u + 12u) << text;
     // The reduced rate marches one pixel of each 4x4 block: about a 16th of the steps per
     // pixel of the image (the blocks at the edges and the jitter make it not exactly that).
     EXPECT_GT(frames["cumulus/full-rate"].first, 8.0 * frames["cumulus"].first);
     EXPECT_LT(frames["cumulus/full-rate"].first, 32.0 * frames["cumulus"].first);
+    EXPECT_TRUE(contains(r.output, "ms clock running; full rate")) << r.output;
+    // No warm-up: the frame that seeds the history is drawn before the recorded one, and its
+    // timings must not land among the recorded (a pass with GPU times and no CPU times: nan).
+    EXPECT_FALSE(contains(r.output, "nan")) << r.output;
     EXPECT_TRUE(contains(r.output, "of the full-rate march")) << r.output;
     for (const auto& [view, m] : frames) {
         EXPECT_GE(m.second, 0.0) << view;

@@ -18,14 +18,14 @@
 #include "clouds/cloud_march.glsl"
 #include "ocean/water.glsl"
 #include "render/sky_air.glsl"
+#include "render/sky_medium.glsl"
 
 in vec2 vNdc;
 layout(binding = UNIT_SURFACE_RADIANCE) uniform sampler2D surfaceRadiance;
 layout(binding = UNIT_SURFACE_DISTANCE) uniform sampler2D surfaceDistance;
 
 layout(location = 0) out vec4 outRadiance;
-layout(location = 1) out vec4 outSkyInscatter;      // S, samples in the history (1: this one)
-layout(location = 2) out vec4 outSkyTransmittance;  // T, 1
+layout(location = 1) out uvec4 outSkyMedium;  // T, S, samples in the history (1: this one)
 
 void main() {
     ivec2 pixel = ivec2(gl_FragCoord.xy);
@@ -35,13 +35,11 @@ void main() {
     vec3 radiance;
     if (frame.cameraDepthBelowSea > 0.0) {
         radiance = throughWater(surface, distance);
-        outSkyInscatter = vec4(0.0);
-        outSkyTransmittance = vec4(0.0);
+        outSkyMedium = packSkyMedium(SkySample(vec3(0.0), vec3(0.0)), 0.0);
     } else {
         AirMarch a = marchPixelAtFullRate(pixel, dir, distance);
         radiance = throughAir(dir, surface, distance, a.transmittance, a.inscatter);
-        outSkyInscatter = vec4(min(a.inscatter, vec3(MAX_HDR_RADIANCE)), 1.0);
-        outSkyTransmittance = vec4(a.transmittance, 1.0);
+        outSkyMedium = packSkyMedium(SkySample(min(a.inscatter, vec3(MAX_HDR_RADIANCE)), a.transmittance), 1.0);
     }
     outRadiance = vec4(min(radiance, vec3(MAX_HDR_RADIANCE)), 1.0);
 }

@@ -2,8 +2,8 @@
 // render/sky_sparse.frag checks it against each new sample): where a pixel's point was in the
 // previous frame, and the previous frame's T and S read there. Include after
 // common/frame_uniforms.glsl.
-layout(binding = UNIT_HISTORY_SKY_INSCATTER) uniform sampler2D historyInscatter;
-layout(binding = UNIT_HISTORY_SKY_TRANSMITTANCE) uniform sampler2D historyTransmittance;
+#include "render/sky_medium.glsl"
+layout(binding = UNIT_HISTORY_SKY_MEDIUM) uniform usampler2D historySkyMedium;
 layout(binding = UNIT_HISTORY_SURFACE_DISTANCE) uniform sampler2D historySurfaceDistance;
 
 // How alike two surface distances (m, 0: no surface) are for sharing a sample: 0 for sky
@@ -19,11 +19,6 @@ float distanceSimilarity(float a, float b) {
 }
 
 float luminance(vec3 c) { return dot(c, vec3(0.2126, 0.7152, 0.0722)); }
-
-struct SkySample {
-    vec3 inscatter;
-    vec3 transmittance;
-};
 
 // The history at `position` (pixels, centres at +0.5) where the previous camera saw its
 // surface at `expected` m (0: sky): Catmull-Rom over 4x4 texels where the 2x2 around the point
@@ -51,13 +46,13 @@ void readHistory(vec2 position, float expected, vec3 behind, out SkySample histo
         sharp = sharp && alike >= 0.5;
         if (alike <= 0.0) continue;
         float b = ((i & 1) != 0 ? f.x : 1.0 - f.x) * ((i >> 1) != 0 ? f.y : 1.0 - f.y) * alike;
-        vec4 s = texelFetch(historyInscatter, tap, 0);
-        vec3 t = texelFetch(historyTransmittance, tap, 0).rgb;
-        history.inscatter += b * s.rgb;
-        history.transmittance += b * t;
-        samples += b * s.a;
+        float n;
+        SkySample s = unpackSkyMedium(texelFetch(historySkyMedium, tap, 0), n);
+        history.inscatter += b * s.inscatter;
+        history.transmittance += b * s.transmittance;
+        samples += b * n;
         weight += b;
-        float l = luminance(t * behind + s.rgb);
+        float l = luminance(s.transmittance * behind + s.inscatter);
         lo = min(lo, l);
         hi = max(hi, l);
     }
@@ -73,10 +68,11 @@ void readHistory(vec2 position, float expected, vec3 behind, out SkySample histo
             for (int i = 0; i < 4; ++i) {
                 ivec2 tap = clamp(ivec2(base) + ivec2(i - 1, j - 1), ivec2(0), size - 1);
                 float c = cx[i] * cy[j];
-                vec4 s = texelFetch(historyInscatter, tap, 0);
-                cubic.inscatter += c * s.rgb;
-                cubic.transmittance += c * texelFetch(historyTransmittance, tap, 0).rgb;
-                cubicSamples += c * s.a;
+                float n;
+                SkySample s = unpackSkyMedium(texelFetch(historySkyMedium, tap, 0), n);
+                cubic.inscatter += c * s.inscatter;
+                cubic.transmittance += c * s.transmittance;
+                cubicSamples += c * n;
             }
         }
         history = SkySample(max(cubic.inscatter, vec3(0.0)), clamp(cubic.transmittance, vec3(0.0), vec3(1.0)));

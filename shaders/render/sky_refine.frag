@@ -13,6 +13,7 @@
 #include "clouds/cloud_march.glsl"
 #include "ocean/water.glsl"
 #include "render/sky_air.glsl"
+#include "render/sky_medium.glsl"
 
 layout(early_fragment_tests) in;  // the depth test, before the shader: see above
 in vec2 vNdc;
@@ -20,8 +21,7 @@ layout(binding = UNIT_SURFACE_RADIANCE) uniform sampler2D surfaceRadiance;
 layout(binding = UNIT_SURFACE_DISTANCE) uniform sampler2D surfaceDistance;
 
 layout(location = 0) out vec4 outRadiance;
-layout(location = 1) out vec4 outSkyInscatter;      // S, samples in the history (1: this one)
-layout(location = 2) out vec4 outSkyTransmittance;  // T, 1
+layout(location = 1) out uvec4 outSkyMedium;  // T, S, samples in the history (1: this one)
 
 void main() {
     ivec2 pixel = ivec2(gl_FragCoord.xy);
@@ -30,6 +30,5 @@ void main() {
     float distance = texelFetch(surfaceDistance, pixel, 0).r;
     AirMarch a = marchPixelAtFullRate(pixel, dir, distance);
     outRadiance = vec4(min(throughAir(dir, surface, distance, a.transmittance, a.inscatter), vec3(MAX_HDR_RADIANCE)), 1.0);
-    outSkyInscatter = vec4(min(a.inscatter, vec3(MAX_HDR_RADIANCE)), 1.0);
-    outSkyTransmittance = vec4(a.transmittance, 1.0);
+    outSkyMedium = packSkyMedium(SkySample(min(a.inscatter, vec3(MAX_HDR_RADIANCE)), a.transmittance), 1.0);
 }

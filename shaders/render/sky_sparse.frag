@@ -19,7 +19,7 @@ layout(binding = UNIT_SURFACE_DISTANCE) uniform sampler2D surfaceDistance;
 
 layout(location = 0) out vec4 outInscatter;      // S, reprojection distance km
 layout(location = 1) out vec4 outTransmittance;  // T, the clouds' opacity
-layout(location = 2) out float outHistoryError;  // how far the history was from this sample
+layout(location = 2) out vec2 outDistanceError;  // the traced pixel's surface distance, m; historyError below
 
 // How far the history, reprojected to the traced pixel as the reconstruction reads it (not
 // clamped), is from the new sample there: the relative difference of the radiance's
@@ -50,5 +50,7 @@ void main() {
     AirMarch a = marchAir(dir, distance, sparseJitter(block));
     outInscatter = vec4(min(a.inscatter, vec3(MAX_HDR_RADIANCE)), a.reprojectionKm);
     outTransmittance = vec4(a.transmittance, a.cloudOpacity);
-    outHistoryError = historyError(pixel, dir, distance, a);
+    // The reconstruction reads these with each sample (one read instead of a read of the
+    // surface distance at the traced pixel besides).
+    outDistanceError = vec2(distance, historyError(pixel, dir, distance, a));
 }

@@ -44,11 +44,10 @@ layout(binding = UNIT_SURFACE_RADIANCE) uniform sampler2D surfaceRadiance;
 layout(binding = UNIT_SURFACE_DISTANCE) uniform sampler2D surfaceDistance;
 layout(binding = UNIT_SPARSE_INSCATTER) uniform sampler2D sparseInscatter;
 layout(binding = UNIT_SPARSE_TRANSMITTANCE) uniform sampler2D sparseTransmittance;
-layout(binding = UNIT_SPARSE_HISTORY_ERROR) uniform sampler2D sparseHistoryError;
+layout(binding = UNIT_SPARSE_DISTANCE_ERROR) uniform sampler2D sparseDistanceError;  // distance m, history error
 
 layout(location = 0) out vec4 outRadiance;
-layout(location = 1) out vec4 outSkyInscatter;      // S, samples in the history
-layout(location = 2) out vec4 outSkyTransmittance;  // T, 1
+layout(location = 1) out uvec4 outSkyMedium;  // T, S, samples in the history
 
 // The history's gain in a moving frame: the nearest samples' ratios of their radiance to the
 // history at their pixel (render/sky_sparse.frag), averaged in the logarithm, where the ratio is
@@ -83,8 +82,7 @@ void main() {
     float distance = texelFetch(surfaceDistance, pixel, 0).r;
     if (distance <= 0.0 && rayMissesTheAir(dir)) {  // space: nothing to march or rebuild
         outRadiance = vec4(min(SunDiscRadiance(dir, frame.sunDirection), vec3(MAX_HDR_RADIANCE)), 1.0);
-        outSkyInscatter = vec4(0.0, 0.0, 0.0, MAX_HISTORY_SAMPLES);
-        outSkyTransmittance = vec4(1.0);
+        outSkyMedium = packSkyMedium(SkySample(vec3(0.0), vec3(1.0)), MAX_HISTORY_SAMPLES);
         gl_FragDepth = 0.0;
         return;
     }
@@ -103,7 +101,7 @@ void main() {
     bool traced = false;
     SkySample fresh;
     float boxSamples = 0.0;  // samples in the box
-    float disagreement = 0.0;  // their summed relative change of S since the previous frame
+    float disagreement = 0.0;  // their summed relative error of the history
     vec3 loS = vec3(1.0e30), hiS = vec3(-1.0e30), loT = vec3(1.0e30), hiT = vec3(-1.0e30);
     float historyError = 0.0;  // the largest error the history had at the nearest samples
     float gainLog = 0.0, gainWeight = 0.0;  // the nearest samples' log(now / history), weighted
@@ -115,7 +113,9 @@ void main() {
             vec4 s = texelFetch(sparseInscatter, b, 0);
             vec4 t = texelFetch(sparseTransmittance, b, 0);
             SkySample here = SkySample(s.rgb, t.rgb);
-            float alike = distanceSimilarity(distance, texelFetch(surfaceDistance, q, 0).r);
+            vec2 at = texelFetch(sparseDistanceError, b, 0).rg;  // its surface distance, the history's error
+            float e = at.y;  // (now - then) / max(now, then)
+            float alike = distanceSimilarity(distance, at.x);
             vec2 offset = abs(vec2(q - pixel)) / float(SPARSE_BLOCK);
             float tent = max(1.0 - offset.x, 0.0) * max(1.0 - offset.y, 0.0);
             // the best match: most alike, then nearest (the traced pixel itself, where it is one:
@@ -140,17 +140,12 @@ void main() {
             broadSum += wide;
             if (alike > 0.1) {
                 boxSamples += 1.0;
-                // how far the sample has moved from what the history held at its pixel
-                if (frame.historyValid > 0.5) {
-                    float now = luminance(here.inscatter), then = luminance(texelFetch(historyInscatter, q, 0).rgb);
-                    disagreement += abs(now - then) / max(max(now, then), 1.0e-6);
-                }
+                disagreement += abs(e);  // how far the sample is from what the history foresaw
                 loS = min(loS, here.inscatter);
                 hiS = max(hiS, here.inscatter);
                 loT = min(loT, here.transmittance);
                 hiT = max(hiT, here.transmittance);
                 if (tent > 0.0) {
-                    float e = texelFetch(sparseHistoryError, b, 0).r;  // (now - then) / max(now, then)
                     historyError = max(historyError, abs(e));
                     if (abs(e) < GAIN_LIMIT) {
                         gainLog += tent * alike * log(e >= 0.0 ? 1.0 / (1.0 - e) : 1.0 + e);
@@ -229,8 +224,7 @@ void main() {
 
     outRadiance = vec4(min(throughAir(dir, surface, distance, result.transmittance, result.inscatter),
                            vec3(MAX_HDR_RADIANCE)), 1.0);
-    outSkyInscatter = vec4(result.inscatter, min(samples, MAX_HISTORY_SAMPLES));
-    outSkyTransmittance = vec4(result.transmittance, 1.0);
+    outSkyMedium = packSkyMedium(result, min(samples, MAX_HISTORY_SAMPLES));
 
     // Where anything moved, the pixels this cannot rebuild are marched again at full rate
     // (render/sky_refine.frag): nothing to reproject, or too few samples of its own surface

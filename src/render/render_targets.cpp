@@ -73,18 +73,17 @@ bool RenderTargets::resize(glm::ivec2 size) {
     surfaceFramebuffer_ =
         makeFramebuffer({&surfaceRadiance_, &surfaceDistance_}, &gbuffer_.depth, "surface radiance + depth");
     hdr_ = makeTexture(GL_RGBA16F, size, "hdr");
-    skyInscatter_ = makeTexture(GL_RGBA16F, size, "sky inscatter");
-    skyTransmittance_ = makeTexture(GL_RGBA16F, size, "sky transmittance");
-    hdrFramebuffer_ = makeFramebuffer({&hdr_, &skyInscatter_, &skyTransmittance_}, nullptr, "hdr + sky T, S");
+    skyMedium_ = makeTexture(GL_RGBA32UI, size, "sky T, S");
+    hdrFramebuffer_ = makeFramebuffer({&hdr_, &skyMedium_}, nullptr, "hdr + sky T, S");
     sparseSky_.size = (size + 3) / 4;
     sparseSky_.inscatter = makeTexture(GL_RGBA16F, sparseSky_.size, "sparse sky inscatter");
     sparseSky_.transmittance = makeTexture(GL_RGBA16F, sparseSky_.size, "sparse sky transmittance");
-    sparseSky_.historyError = makeTexture(GL_R16F, sparseSky_.size, "sparse sky history error");
-    sparseSky_.framebuffer = makeFramebuffer({&sparseSky_.inscatter, &sparseSky_.transmittance, &sparseSky_.historyError},
-                                             nullptr, "sparse sky T, S, history error");
+    sparseSky_.distanceError = makeTexture(GL_RG32F, sparseSky_.size, "sparse sky distance, history error");
+    sparseSky_.framebuffer = makeFramebuffer({&sparseSky_.inscatter, &sparseSky_.transmittance, &sparseSky_.distanceError},
+                                             nullptr, "sparse sky T, S, distance, history error");
     skyRefine_ = makeTexture(GL_DEPTH_COMPONENT16, size, "sky refine");
     temporalFramebuffer_ =
-        makeFramebuffer({&hdr_, &skyInscatter_, &skyTransmittance_}, &skyRefine_, "hdr + sky T, S over refine");
+        makeFramebuffer({&hdr_, &skyMedium_}, &skyRefine_, "hdr + sky T, S over refine");
     ldr_ = makeTexture(GL_RGBA8, size, "ldr");
     ldrFramebuffer_ = makeFramebuffer({&ldr_}, nullptr, "ldr");
     seabedDepth_ = makeTexture(GL_DEPTH_COMPONENT32F, size, "seabed depth");
@@ -99,8 +98,7 @@ bool RenderTargets::resize(glm::ivec2 size) {
     antialiased_ = makeTexture(GL_RGBA16F, size, "antialiased");
     antialiasFramebuffer_ = makeFramebuffer({&antialiased_}, nullptr, "antialiased");
     history_.surfaceDistance = makeTexture(GL_R32F, size, "history.surface distance");
-    history_.skyInscatter = makeTexture(GL_RGBA16F, size, "history.sky inscatter");
-    history_.skyTransmittance = makeTexture(GL_RGBA16F, size, "history.sky transmittance");
+    history_.skyMedium = makeTexture(GL_RGBA32UI, size, "history.sky T, S");
     return true;
 }
 
@@ -120,8 +118,7 @@ void RenderTargets::keepAntialiased() const { copyImage(antialiased_, hdr_, size
 void RenderTargets::keepHistory() const {
     copyImage(hdr_, history_.radiance, size_);
     copyImage(surfaceDistance_, history_.surfaceDistance, size_);
-    copyImage(skyInscatter_, history_.skyInscatter, size_);
-    copyImage(skyTransmittance_, history_.skyTransmittance, size_);
+    copyImage(skyMedium_, history_.skyMedium, size_);
 }
 
 }  // namespace planet

@@ -9,10 +9,11 @@
 //   seabed    copies of the G-buffer depth and of the surface radiance taken before the
 //             ocean, which reads them while drawing over them
 //   hdr       RGBA16F linear radiance arriving at the camera (what `render --out x.exr` writes),
-//             with the sky passes' T and S beside it (skyInscatter: S, samples in the temporal
-//             history; skyTransmittance: T; render/sky_temporal.frag)
+//             with the sky passes' T and S beside it (skyMedium: RGBA32UI, T, S and the samples
+//             in the temporal history as half floats, render/sky_medium.glsl)
 //   sparse    a quarter of the size on each side (rounded up): the reduced-rate march's
-//             samples, one pixel of each 4x4 block, and the history's error at each
+//             samples, one pixel of each 4x4 block, with its surface distance and the
+//             history's error at each
 //             (render/sky_sparse.frag)
 //   refine    DEPTH16: the pixels the temporal reconstruction could not trust (1; else 0),
 //             marched again at full rate (render/sky_temporal.frag marks them, render/
@@ -45,8 +46,7 @@ struct GBuffer {
 struct FrameHistory {
     gl::Texture radiance{GL_TEXTURE_2D};         // RGBA16F, the previous frame's hdr
     gl::Texture surfaceDistance{GL_TEXTURE_2D};  // R32F, the previous frame's surface distance
-    gl::Texture skyInscatter{GL_TEXTURE_2D};     // RGBA16F, its sky S and sample count
-    gl::Texture skyTransmittance{GL_TEXTURE_2D}; // RGBA16F, its sky T
+    gl::Texture skyMedium{GL_TEXTURE_2D};        // RGBA32UI, its sky T, S and sample count
 };
 
 // The reduced-rate march's samples (a quarter of the frame's size on each side).
@@ -54,7 +54,7 @@ struct SparseSky {
     glm::ivec2 size{0, 0};
     gl::Texture inscatter{GL_TEXTURE_2D};      // RGBA16F: S, reprojection distance km
     gl::Texture transmittance{GL_TEXTURE_2D};  // RGBA16F: T, the clouds' opacity
-    gl::Texture historyError{GL_TEXTURE_2D};   // R16F: the history's relative error at the sample
+    gl::Texture distanceError{GL_TEXTURE_2D};  // RG32F: its surface distance, m; the history's relative error there
     gl::Framebuffer framebuffer;
 };
 
@@ -70,14 +70,13 @@ public:
     const gl::Texture& surfaceDistance() const { return surfaceDistance_; }
     const gl::Texture& hdr() const { return hdr_; }
     const gl::Texture& ldr() const { return ldr_; }
-    const gl::Texture& skyInscatter() const { return skyInscatter_; }
-    const gl::Texture& skyTransmittance() const { return skyTransmittance_; }
+    const gl::Texture& skyMedium() const { return skyMedium_; }
     const SparseSky& sparseSky() const { return sparseSky_; }
     const gl::Texture& skyRefine() const { return skyRefine_; }
     const FrameHistory& history() const { return history_; }
-    // hdr, skyInscatter and skyTransmittance (the sky passes').
+    // hdr and skyMedium (the sky passes').
     GLuint hdrFramebuffer() const { return hdrFramebuffer_.id(); }
-    // hdr, skyInscatter and skyTransmittance over skyRefine (the temporal reconstruction writes
+    // hdr and skyMedium over skyRefine (the temporal reconstruction writes
     // the marks, the refine pass tests them).
     GLuint temporalFramebuffer() const { return temporalFramebuffer_.id(); }
     GLuint ldrFramebuffer() const { return ldrFramebuffer_.id(); }
@@ -104,8 +103,7 @@ private:
     gl::Texture surfaceDistance_{GL_TEXTURE_2D};
     gl::Texture hdr_{GL_TEXTURE_2D};
     gl::Texture ldr_{GL_TEXTURE_2D};
-    gl::Texture skyInscatter_{GL_TEXTURE_2D};
-    gl::Texture skyTransmittance_{GL_TEXTURE_2D};
+    gl::Texture skyMedium_{GL_TEXTURE_2D};
     SparseSky sparseSky_;
     gl::Texture skyRefine_{GL_TEXTURE_2D};
     gl::Framebuffer surfaceFramebuffer_;

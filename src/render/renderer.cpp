@@ -154,8 +154,7 @@ std::vector<Renderer::Pass> Renderer::makePasses() {
                           const FrameHistory& history = targets_.history();
                           glBindTextureUnit(binding::UNIT_SURFACE_RADIANCE, targets_.surfaceRadiance().id());
                           glBindTextureUnit(binding::UNIT_SURFACE_DISTANCE, targets_.surfaceDistance().id());
-                          glBindTextureUnit(binding::UNIT_HISTORY_SKY_INSCATTER, history.skyInscatter.id());
-                          glBindTextureUnit(binding::UNIT_HISTORY_SKY_TRANSMITTANCE, history.skyTransmittance.id());
+                          glBindTextureUnit(binding::UNIT_HISTORY_SKY_MEDIUM, history.skyMedium.id());
                           glBindTextureUnit(binding::UNIT_HISTORY_SURFACE_DISTANCE, history.surfaceDistance.id());
                           glBindVertexArray(emptyVertexArray_.id());
                           glUseProgram(skySparse_.get(s.atmosphere.elek_3d_table, lightShafts(s)).id());
@@ -172,9 +171,8 @@ std::vector<Renderer::Pass> Renderer::makePasses() {
                           glBindTextureUnit(binding::UNIT_SURFACE_DISTANCE, targets_.surfaceDistance().id());
                           glBindTextureUnit(binding::UNIT_SPARSE_INSCATTER, sparse.inscatter.id());
                           glBindTextureUnit(binding::UNIT_SPARSE_TRANSMITTANCE, sparse.transmittance.id());
-                          glBindTextureUnit(binding::UNIT_SPARSE_HISTORY_ERROR, sparse.historyError.id());
-                          glBindTextureUnit(binding::UNIT_HISTORY_SKY_INSCATTER, history.skyInscatter.id());
-                          glBindTextureUnit(binding::UNIT_HISTORY_SKY_TRANSMITTANCE, history.skyTransmittance.id());
+                          glBindTextureUnit(binding::UNIT_SPARSE_DISTANCE_ERROR, sparse.distanceError.id());
+                          glBindTextureUnit(binding::UNIT_HISTORY_SKY_MEDIUM, history.skyMedium.id());
                           glBindTextureUnit(binding::UNIT_HISTORY_SURFACE_DISTANCE, history.surfaceDistance.id());
                           glBindVertexArray(emptyVertexArray_.id());
                           glUseProgram(skyTemporal_.get(s.atmosphere.elek_3d_table, lightShafts(s)).id());
