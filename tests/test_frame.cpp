@@ -142,6 +142,43 @@ TEST(FrameUniformsTest, ReprojectionFindsAPointWhereThePreviousCameraSawIt) {
     EXPECT_EQ(first.cameraFromPrevious, glm::vec3(0.0f));
 }
 
+TEST(FrameUniformsTest, TheViewStandsStillWhileTheClockRunsAndToWithinRounding) {
+    // The clock alone moved: the view stood still, the frame did not (the temporal march marks
+    // only what its samples missed, render/sky_temporal.frag). A camera path between two equal
+    // keyframes moves the camera by rounding errors, which count as standing still; a millimetre
+    // or a few microradians of the camera or the sun do not.
+    Scene scene;
+    Camera camera;
+    camera.position = glm::dvec3(6371.0e3 + 30.0, 0.0, 0.0);
+    camera.orientation = orientationFromAxes({0, 1, 0}, {1, 0, 0}, glm::normalize(glm::dvec3(-0.05, 0.0, -1.0)));
+    const glm::ivec2 size{64, 36};
+    const glm::dvec3 sun = scene.sunDirection();
+    const PreviousFrame before{camera, size, scene.time_s, sun};
+    const FrameUniforms still = makeFrameUniforms(scene, camera, size, 1, before);
+    EXPECT_EQ(still.stillSincePrevious, 1.0f);
+    EXPECT_EQ(still.viewStillSincePrevious, 1.0f);
+    Scene later = scene;
+    later.time_s += 1.0 / 30.0;
+    const FrameUniforms clock = makeFrameUniforms(later, camera, size, 1, before);
+    EXPECT_EQ(clock.stillSincePrevious, 0.0f);
+    EXPECT_EQ(clock.viewStillSincePrevious, 1.0f);
+
+    Camera rounded = camera;
+    rounded.position += glm::dvec3(1.0e-6, -2.0e-6, 0.0);
+    rounded.orientation = glm::normalize(rounded.orientation + glm::dquat(0.0, 1.0e-12, 0.0, 0.0));
+    EXPECT_TRUE(viewStoodStill(camera, rounded, sun, sun));
+    Camera moved = camera;
+    moved.position += glm::dvec3(0.0, 2.0e-3, 0.0);
+    EXPECT_FALSE(viewStoodStill(camera, moved, sun, sun));
+    EXPECT_EQ(makeFrameUniforms(later, moved, size, 1, before).viewStillSincePrevious, 0.0f);
+    Camera turned = camera;
+    turned.orientation = glm::angleAxis(5.0e-6, glm::dvec3(0.0, 0.0, 1.0)) * turned.orientation;
+    EXPECT_FALSE(viewStoodStill(camera, turned, sun, sun));
+    const glm::dvec3 sunMoved = glm::angleAxis(5.0e-6, glm::dvec3(0.0, 0.0, 1.0)) * sun;
+    EXPECT_FALSE(viewStoodStill(camera, camera, sun, sunMoved));
+    EXPECT_TRUE(viewStoodStill(camera, camera, sun, glm::angleAxis(1.0e-8, glm::dvec3(0.0, 0.0, 1.0)) * sun));
+}
+
 TEST(FrameUniformsTest, JitterIsAHaltonSequenceInsideThePixel) {
     EXPECT_DOUBLE_EQ(halton(1, 2), 0.5);
     EXPECT_DOUBLE_EQ(halton(2, 2), 0.25);

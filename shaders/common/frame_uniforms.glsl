@@ -23,11 +23,12 @@ layout(std140, binding = BLOCK_FRAME) uniform FrameBlock {
     float exposure;              // tone mapping: display = 1 - exp(-exposure * radiance)
     int frameIndex;              // frames since the renderer started
     float cameraDepthBelowSea;   // m below the mean sea surface (> 0: the camera is under water)
-    float stillSincePrevious;    // 1: the camera and the clock are the previous frame's (nothing moved)
+    float stillSincePrevious;    // 1: the camera, the sun and the clock are the previous frame's (nothing moved)
     float previousJitterX;       // pixels: the previous frame's jitter (its clipFromView's offset), x ...
     vec3 cloudDriftSincePrevious; // m, world axes: how far the wind moved the clouds since the previous frame
     float previousJitterY;       // ... and y
     float temporalRefineError;   // render.temporal_refine_error (render/sky_temporal.frag)
+    float viewStillSincePrevious; // 1: the camera and the sun are the previous frame's (the clock may have run on)
 } frame;
 
 // World-oriented direction of the view ray through a point in NDC (x, y in [-1, 1]).

@@ -1,5 +1,7 @@
 #include "render/frame_uniforms.h"
 
+#include <cmath>
+
 #include "clouds/cloud_block.h"
 
 namespace planet {
@@ -25,6 +27,17 @@ glm::dvec2 stillSampleJitter(int sample, int samples) {
     glm::dvec2 mean(0.0);
     for (int i = 0; i < samples; ++i) mean += element(i) / static_cast<double>(samples);
     return element(sample) - mean;
+}
+
+// The camera and the sun stood still between two frames: the camera moved by less than a
+// millimetre, and it and the sun turned by less than a microradian (a camera path between two
+// equal keyframes moves them by rounding errors, which nothing on screen shows).
+bool viewStoodStill(const Camera& before, const Camera& now, glm::dvec3 sunBefore, glm::dvec3 sunNow) {
+    constexpr double kMetres = 1.0e-3, kRadians = 1.0e-6;
+    // |q1 . q2| = cos(angle / 2): 1 - that is about angle^2 / 8
+    const double turned = 1.0 - std::abs(glm::dot(before.orientation, now.orientation));
+    return glm::length(now.position - before.position) < kMetres && turned < kRadians * kRadians / 8.0 &&
+           glm::dot(sunBefore, sunNow) > 1.0 - kRadians * kRadians / 2.0;
 }
 
 glm::dmat4 jitteredClipFromView(const Camera& camera, glm::ivec2 size, glm::dvec2 jitterPx) {
@@ -73,10 +86,10 @@ FrameUniforms makeFrameUniforms(const Scene& scene, const Camera& camera, glm::i
     u.time = static_cast<float>(scene.time_s);
     u.cameraFromPrevious = glm::vec3(camera.position - before.position);
     u.historyValid = previous ? 1.0f : 0.0f;
-    u.stillSincePrevious = previous && before.position == camera.position && before.orientation == camera.orientation &&
-                                   previous->time_s == scene.time_s
-                               ? 1.0f
-                               : 0.0f;
+    // The view: the camera and the light; with the clock, everything (the wind moves the clouds).
+    const bool viewStill = previous && viewStoodStill(before, camera, previous->sunDirection, scene.sunDirection());
+    u.viewStillSincePrevious = viewStill ? 1.0f : 0.0f;
+    u.stillSincePrevious = viewStill && previous->time_s == scene.time_s ? 1.0f : 0.0f;
     u.viewportSize = glm::vec2(size);
     u.inverseViewportSize = 1.0f / glm::vec2(size);
     u.jitter = glm::vec2(jitterPx);

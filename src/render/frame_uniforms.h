@@ -48,19 +48,21 @@ struct FrameUniforms {
     float exposure;
     int frameIndex;
     float cameraDepthBelowSea;        // m below the mean sea surface (> 0: under water)
-    float stillSincePrevious;         // 1: the camera and the clock are the previous frame's (nothing moved)
+    float stillSincePrevious;         // 1: the camera, the sun and the clock are the previous frame's (nothing moved)
     float previousJitterX;            // pixels: the previous frame's jitter (x; y after the drift)
     glm::vec3 cloudDriftSincePrevious; // m, world axes: how far the wind moved the clouds since the previous frame
     float previousJitterY;
     float temporalRefineError;        // render.temporal_refine_error (render/sky_temporal.frag)
-    float padding[3];
+    float viewStillSincePrevious;     // 1: the camera and the sun are the previous frame's (the clock may have run)
+    float padding[2];
 };
 static_assert(offsetof(FrameUniforms, planetCenterFromCamera) == 320 && offsetof(FrameUniforms, cameraUp) == 336 &&
                   offsetof(FrameUniforms, sunDirection) == 352 && offsetof(FrameUniforms, cameraFromPrevious) == 368 &&
                   offsetof(FrameUniforms, viewportSize) == 384 && offsetof(FrameUniforms, jitter) == 400 &&
                   offsetof(FrameUniforms, nearPlane) == 408 && offsetof(FrameUniforms, frameIndex) == 416 &&
                   offsetof(FrameUniforms, cloudDriftSincePrevious) == 432 &&
-                  offsetof(FrameUniforms, temporalRefineError) == 448 && sizeof(FrameUniforms) == 464,
+                  offsetof(FrameUniforms, temporalRefineError) == 448 &&
+                  offsetof(FrameUniforms, viewStillSincePrevious) == 452 && sizeof(FrameUniforms) == 464,
               "FrameUniforms must match the std140 block in shaders/common/frame_uniforms.glsl");
 
 // The camera a previous frame was rendered with, kept in double for reprojection.
@@ -71,6 +73,10 @@ struct PreviousFrame {
     glm::dvec3 sunDirection{0.0};     // the scene's sun
     glm::dvec2 jitterPx{0.0};         // the sub-pixel offset its projection had, pixels
 };
+
+// The camera and the sun stood still between two frames, to within rounding (a millimetre, a
+// microradian): FrameUniforms::viewStillSincePrevious.
+bool viewStoodStill(const Camera& before, const Camera& now, glm::dvec3 sunBefore, glm::dvec3 sunNow);
 
 // A camera's clipFromView for a frame size, moved by a sub-pixel offset (pixels; +x right,
 // +y up): the image content moves by jitterPx.
