@@ -178,7 +178,7 @@ TEST_F(Temporal, WithOnlyTheClockRunningOnlyTheSamplesErrorsMarkPixels) {
     // pixels around a sample its history missed, not every edge and line as in a moving view
     // (there the cumulus field's edges and lines are half of the pixels), and the frames stay
     // near the full-rate ones. Measured on llvmpipe at 96x54 over 40 frames:
-    // 6.7 % of the pixels a frame, last frame mean 0.55 %; with the edges and lines marked as for
+    // 6.9 % of the pixels a frame, last frame mean 0.59 %; with the edges and lines marked as for
     // a moving camera, 54 % (and 0.21 %).
     const glm::ivec2 size{96, 54};
     Session s = session("cumulus");

@@ -75,6 +75,21 @@ const float SPATIAL_SHARE_MOVING = 0.5;
 // again.
 const float REFINE_HISTORY_CONTRAST = 0.15;
 
+// The traced pixel's new sample added to its history's running mean (of `samples` so far).
+void addSample(inout SkySample result, inout float samples, SkySample fresh) {
+    float alpha = 1.0 / (samples + 1.0);
+    result.inscatter = mix(result.inscatter, fresh.inscatter, alpha);
+    result.transmittance = mix(result.transmittance, fresh.transmittance, alpha);
+    samples += 1.0;
+}
+
+// The pixel's radiance through the air from its T and S, and T, S and samples for the history.
+void writeSky(vec3 dir, vec3 surface, float distance, SkySample result, float samples) {
+    outRadiance = vec4(min(throughAir(dir, surface, distance, result.transmittance, result.inscatter),
+                           vec3(MAX_HDR_RADIANCE)), 1.0);
+    outSkyMedium = packSkyMedium(result, min(samples, MAX_HISTORY_SAMPLES));
+}
+
 void main() {
     ivec2 pixel = ivec2(gl_FragCoord.xy);
     vec3 dir = worldRayFromNdc(vNdc);
@@ -87,6 +102,7 @@ void main() {
         return;
     }
 
+    vec3 behind = behindTheAir(dir, surface, distance);
     // This frame's samples around the pixel.
     ivec2 block = pixel / SPARSE_BLOCK;
     ivec2 blocks = textureSize(sparseInscatter, 0);
@@ -105,7 +121,6 @@ void main() {
     vec3 loS = vec3(1.0e30), hiS = vec3(-1.0e30), loT = vec3(1.0e30), hiT = vec3(-1.0e30);
     float historyError = 0.0;  // the largest error the history had at the nearest samples
     float gainLog = 0.0, gainWeight = 0.0;  // the nearest samples' log(now / history), weighted
-    vec3 behind = behindTheAir(dir, surface, distance);
     for (int dy = -1; dy <= 1; ++dy) {
         for (int dx = -1; dx <= 1; ++dx) {
             ivec2 b = clamp(block + ivec2(dx, dy), ivec2(0), blocks - 1);
@@ -208,12 +223,7 @@ void main() {
         float toSpatial = SPATIAL_SHARE_MOVING * moving * smoothstep(0.05, 0.5, motion);
         result.inscatter = mix(result.inscatter, spatial.inscatter, toSpatial);
         result.transmittance = mix(result.transmittance, spatial.transmittance, toSpatial);
-        if (traced) {
-            float alpha = 1.0 / (samples + 1.0);
-            result.inscatter = mix(result.inscatter, fresh.inscatter, alpha);
-            result.transmittance = mix(result.transmittance, fresh.transmittance, alpha);
-            samples += 1.0;
-        }
+        if (traced) addSample(result, samples, fresh);
     } else if (traced) {
         result = fresh;
         samples = 1.0;
@@ -222,9 +232,7 @@ void main() {
         samples = 0.0;
     }
 
-    outRadiance = vec4(min(throughAir(dir, surface, distance, result.transmittance, result.inscatter),
-                           vec3(MAX_HDR_RADIANCE)), 1.0);
-    outSkyMedium = packSkyMedium(result, min(samples, MAX_HISTORY_SAMPLES));
+    writeSky(dir, surface, distance, result, samples);
 
     // Where anything moved, the pixels this cannot rebuild are marched again at full rate
     // (render/sky_refine.frag): nothing to reproject, or too few samples of its own surface
