@@ -316,7 +316,7 @@ TEST_F(RenderPathTest, BadSequenceArgumentsFail) {
     EXPECT_TRUE(test::contains(r.output, "--frames needs --path")) << r.output;
     r = test::runCommand(planet("render --path nowhere --out f_%d.png --size 32x18"));
     EXPECT_NE(r.exitCode, 0);
-    EXPECT_TRUE(test::contains(r.output, "available paths: takeoff")) << r.output;
+    EXPECT_TRUE(test::contains(r.output, "available paths: cumulus_wind, takeoff, twilight")) << r.output;
     EXPECT_FALSE(fs::exists(dir / "f_0.png"));
 }
 
