@@ -69,6 +69,11 @@
 #ifndef LIGHT_SHAFTS_TERRAIN
 #define LIGHT_SHAFTS_TERRAIN 0
 #endif
+// The pixel (centre, as gl_FragCoord.xy) whose light shafts are marched: their jitter's seed. A
+// compute shader that marches pixels (render/sky_refine.comp) defines it as its own variable.
+#ifndef SHAFT_PIXEL
+#define SHAFT_PIXEL gl_FragCoord.xy
+#endif
 
 #ifndef ELEK_TABLE
 #define ELEK_TABLE 0
@@ -151,7 +156,7 @@ float SunShadowLength(vec3 camera, vec3 viewRay, float distance, vec3 sun) {
     leave = min(leave, enter + LIGHT_SHAFT_MAX_KM);
     if (discriminant <= 0.0 || leave <= enter) samples = 0;
     float spacing = (leave - enter) / float(LIGHT_SHAFT_SAMPLES);
-    float jitter = fract(fract(52.9829189 * fract(dot(gl_FragCoord.xy, vec2(0.06711056, 0.00583715)))) +
+    float jitter = fract(fract(52.9829189 * fract(dot(SHAFT_PIXEL, vec2(0.06711056, 0.00583715)))) +
                          0.6180340 * float(frame.frameIndex % 64));
     float shadowed = 0.0;
     for (int i = 0; i < samples; ++i) {

@@ -19,6 +19,11 @@ const int BUFFER_PROBE_INPUT = 0;   // the compute probes' inputs and outputs (t
 const int BUFFER_PROBE_OUTPUT = 1;
 const int BUFFER_OCEAN_WAVES = 3;   // one record per wave (ocean/ocean_waves.glsl)
 const int BUFFER_CLOUD_STATISTICS = 4;  // the sky pass's march step counts, when asked (planet bench)
+const int BUFFER_SKY_REFINE = 5;    // the pixels the temporal reconstruction marks for a full-rate march (render/sky_refine_list.glsl)
+
+// Image units (the passes that store into a frame target from a compute shader).
+const int IMAGE_HDR_RADIANCE = 0;   // RGBA16F radiance arriving at the camera
+const int IMAGE_SKY_MEDIUM = 1;     // RGBA32UI the sky passes' T, S and samples (render/sky_medium.glsl)
 
 // Texture units.
 const int UNIT_GBUFFER_NORMAL = 0;          // RGBA16F world normal

@@ -32,6 +32,12 @@ layout(std140, binding = BLOCK_FRAME) uniform FrameBlock {
 } frame;
 
 // World-oriented direction of the view ray through a point in NDC (x, y in [-1, 1]).
+// The NDC of a pixel's centre (pixels, as gl_FragCoord.xy: +0.5): the sky passes that march a
+// pixel form its ray from this, in fragment and compute shaders alike, so that a pixel marched
+// again by render/sky_refine.comp is the full-rate pass's to the bit (an interpolated NDC
+// differs from it by rounding, and a march's step decisions can turn on that).
+vec2 pixelCentreNdc(vec2 centre) { return centre * frame.inverseViewportSize * 2.0 - 1.0; }
+
 vec3 worldRayFromNdc(vec2 ndc) {
     vec4 view = frame.viewFromClip * vec4(ndc, 0.5, 1.0);
     return normalize(mat3(frame.worldFromView) * (view.xyz / view.w));

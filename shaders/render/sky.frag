@@ -20,7 +20,6 @@
 #include "render/sky_air.glsl"
 #include "render/sky_medium.glsl"
 
-in vec2 vNdc;
 layout(binding = UNIT_SURFACE_RADIANCE) uniform sampler2D surfaceRadiance;
 layout(binding = UNIT_SURFACE_DISTANCE) uniform sampler2D surfaceDistance;
 
@@ -29,7 +28,7 @@ layout(location = 1) out uvec4 outSkyMedium;  // T, S, samples in the history (1
 
 void main() {
     ivec2 pixel = ivec2(gl_FragCoord.xy);
-    vec3 dir = worldRayFromNdc(vNdc);
+    vec3 dir = worldRayFromNdc(pixelCentreNdc(gl_FragCoord.xy));  // as render/sky_refine.comp
     vec3 surface = texelFetch(surfaceRadiance, pixel, 0).rgb;
     float distance = texelFetch(surfaceDistance, pixel, 0).r;
     vec3 radiance;

@@ -1,5 +1,5 @@
 // What the sky passes share (render/sky.frag, sky_sparse.frag, sky_temporal.frag,
-// sky_refine.frag): the march
+// sky_refine.comp): the march
 // of one view ray through the air and the clouds, the water body under the sea, and the
 // composite of the surface behind. Include after common/frame_uniforms.glsl,
 // atmosphere/interface.glsl, clouds/cloud_march.glsl and ocean/water.glsl.
@@ -50,7 +50,7 @@ AirMarch marchAir(vec3 dir, float distanceM, float jitter) {
     return a;
 }
 
-// A pixel marched at full rate: render/sky.frag's, and render/sky_refine.frag's for the pixels
+// A pixel marched at full rate: render/sky.frag's, and render/sky_refine.comp's for the pixels
 // the temporal reconstruction could not trust; the same start in both, so a refined pixel is
 // the full-rate frame's.
 AirMarch marchPixelAtFullRate(ivec2 pixel, vec3 dir, float distanceM) {

@@ -44,7 +44,7 @@ float historyError(ivec2 pixel, vec3 dir, float distance, AirMarch a) {
 void main() {
     ivec2 block = ivec2(gl_FragCoord.xy);
     ivec2 pixel = sparseTracedPixel(block);
-    vec2 ndc = (vec2(pixel) + 0.5) * frame.inverseViewportSize * 2.0 - 1.0;
+    vec2 ndc = pixelCentreNdc(vec2(pixel) + 0.5);
     float distance = texelFetch(surfaceDistance, pixel, 0).r;
     vec3 dir = worldRayFromNdc(ndc);
     AirMarch a = marchAir(dir, distance, sparseJitter(block));

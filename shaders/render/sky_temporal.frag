@@ -25,8 +25,9 @@
 //    sample; when nothing moved, nothing is clamped and the traced pixel adds its sample to a
 //    running mean of up to 16 (each visit with another jitter), so a still frame converges.
 //  - the other pixels keep the history, or the spatial estimate where there is none;
-//  - in a frame where anything moved, the pixels none of this can rebuild are marked
-//    (gl_FragDepth 1, the end of main) and marched again at full rate by render/sky_refine.frag.
+//  - in a frame where anything moved, the pixels none of this can rebuild are listed (the end
+//    of main; render/sky_refine_list.glsl) and marched again at full rate by
+//    render/sky_refine.comp.
 // The history is the frame's only state; it is dropped on a jump, a resize or a parameter
 // change (frame.historyValid 0), and then this frame is the spatial estimate alone.
 #include "common/frame_uniforms.glsl"
@@ -38,6 +39,7 @@
 #include "render/sky_air.glsl"
 #include "render/sparse_pattern.glsl"
 #include "render/sky_history.glsl"
+#include "render/sky_refine_list.glsl"
 
 in vec2 vNdc;
 layout(binding = UNIT_SURFACE_RADIANCE) uniform sampler2D surfaceRadiance;
@@ -98,7 +100,6 @@ void main() {
     if (distance <= 0.0 && rayMissesTheAir(dir)) {  // space: nothing to march or rebuild
         outRadiance = vec4(min(SunDiscRadiance(dir, frame.sunDirection), vec3(MAX_HDR_RADIANCE)), 1.0);
         outSkyMedium = packSkyMedium(SkySample(vec3(0.0), vec3(1.0)), MAX_HISTORY_SAMPLES);
-        gl_FragDepth = 0.0;
         return;
     }
 
@@ -235,7 +236,7 @@ void main() {
     writeSky(dir, surface, distance, result, samples);
 
     // Where anything moved, the pixels this cannot rebuild are marched again at full rate
-    // (render/sky_refine.frag): nothing to reproject, or too few samples of its own surface
+    // (render/sky_refine.comp): nothing to reproject, or too few samples of its own surface
     // around; an edge between surfaces, or surface and sky, at the pixel (what lies along it
     // changes as it moves: the sky just above the horizon, a grazing ray past a ridge; a band
     // one pixel tall that samples four apart cannot see); a history read across a line or an
@@ -260,7 +261,5 @@ void main() {
     bool refine = frame.historyValid > 0.5 && moving > 0.0 &&
                   (!reprojected || boxSamples < 2.0 || historyError > frame.temporalRefineError ||
                    (!clockOnly && (edge || historyContrast > REFINE_HISTORY_CONTRAST)));
-    // As a depth: the refine pass's depth test keeps these pixels and drops the others before
-    // its shader runs (src/render/render_targets.h).
-    gl_FragDepth = refine ? 1.0 : 0.0;
+    if (refine) listForRefine(pixel);
 }

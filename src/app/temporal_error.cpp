@@ -1,5 +1,7 @@
 #include "app/temporal_error.h"
 
+#include <algorithm>
+
 #include "render/readback.h"
 
 namespace planet {
@@ -7,9 +9,9 @@ namespace planet {
 std::vector<std::size_t> refinedPixels(const Renderer& r, glm::ivec2 size) {
     std::vector<std::size_t> marked;
     if (!r.lastPrepare().reducedRate) return marked;
-    const std::vector<float> mask = readTextureDepth(r.targets().skyRefine(), size.x, size.y);
-    for (std::size_t i = 0; i < mask.size(); ++i)
-        if (mask[i] > 0.5f) marked.push_back(i);
+    for (glm::ivec2 p : r.targets().readSkyRefineList())
+        marked.push_back(std::size_t(size.y - 1 - p.y) * std::size_t(size.x) + std::size_t(p.x));  // row 0 the top
+    std::sort(marked.begin(), marked.end());
     return marked;
 }
 

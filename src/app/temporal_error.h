@@ -36,7 +36,7 @@ struct TemporalWorstFrame {
 };
 
 // The pixels the reconstruction of the renderer's last frame marked for a full-rate march
-// (render/sky_refine.frag), as indices into an image read by readTextureRGBAF (row 0 at the
+// (render/sky_refine.comp), as indices into an image read by readTextureRGBAF (row 0 at the
 // top); none where that frame was not marched at the reduced rate.
 std::vector<std::size_t> refinedPixels(const Renderer& r, glm::ivec2 size);
 

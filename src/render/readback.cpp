@@ -35,15 +35,6 @@ ImageRGBAF readTextureRGBAF(const gl::Texture& texture, int width, int height) {
     return image;
 }
 
-std::vector<float> readTextureDepth(const gl::Texture& texture, int width, int height) {
-    std::vector<float> depth(static_cast<std::size_t>(width) * height);
-    glPixelStorei(GL_PACK_ALIGNMENT, 4);
-    glGetTextureImage(texture.id(), 0, GL_DEPTH_COMPONENT, GL_FLOAT, static_cast<GLsizei>(depth.size() * sizeof(float)),
-                      depth.data());
-    flipRows(depth, width, height, 1);
-    return depth;
-}
-
 ImageRGBA8 readFramebufferRGBA8(GLuint framebuffer, int width, int height) {
     ImageRGBA8 image{width, height, std::vector<std::uint8_t>(static_cast<std::size_t>(width) * height * 4)};
     glBindFramebuffer(GL_READ_FRAMEBUFFER, framebuffer);

@@ -8,8 +8,6 @@ namespace planet {
 
 ImageRGBA8 readTextureRGBA8(const gl::Texture& texture, int width, int height);
 ImageRGBAF readTextureRGBAF(const gl::Texture& texture, int width, int height);
-// A depth texture's values in [0, 1], one float per pixel.
-std::vector<float> readTextureDepth(const gl::Texture& texture, int width, int height);
 // Colour of a framebuffer (0: the window's back buffer).
 ImageRGBA8 readFramebufferRGBA8(GLuint framebuffer, int width, int height);
 

@@ -9,6 +9,8 @@ namespace planet {
 
 namespace {
 
+constexpr GLsizeiptr kRefineListHeaderBytes = 16;  // render/sky_refine_list.glsl: groups x, y, z, count
+
 gl::Texture makeTexture(GLenum format, glm::ivec2 size, const char* label) {
     gl::Texture t(GL_TEXTURE_2D);
     glTextureStorage2D(t.id(), 1, format, size.x, size.y);
@@ -81,9 +83,11 @@ bool RenderTargets::resize(glm::ivec2 size) {
     sparseSky_.distanceError = makeTexture(GL_RG32F, sparseSky_.size, "sparse sky distance, history error");
     sparseSky_.framebuffer = makeFramebuffer({&sparseSky_.inscatter, &sparseSky_.transmittance, &sparseSky_.distanceError},
                                              nullptr, "sparse sky T, S, distance, history error");
-    skyRefine_ = makeTexture(GL_DEPTH_COMPONENT16, size, "sky refine");
-    temporalFramebuffer_ =
-        makeFramebuffer({&hdr_, &skyMedium_}, &skyRefine_, "hdr + sky T, S over refine");
+    skyRefineList_ = gl::Buffer();
+    glNamedBufferStorage(skyRefineList_.id(), kRefineListHeaderBytes + GLsizeiptr(sizeof(GLuint)) * size.x * size.y,
+                         nullptr, GL_DYNAMIC_STORAGE_BIT);
+    skyRefineList_.label("sky refine list");
+    clearSkyRefineList();
     ldr_ = makeTexture(GL_RGBA8, size, "ldr");
     ldrFramebuffer_ = makeFramebuffer({&ldr_}, nullptr, "ldr");
     seabedDepth_ = makeTexture(GL_DEPTH_COMPONENT32F, size, "seabed depth");
@@ -114,6 +118,25 @@ void RenderTargets::copySeabed() const {
 }
 
 void RenderTargets::keepAntialiased() const { copyImage(antialiased_, hdr_, size_); }
+
+void RenderTargets::clearSkyRefineList() const {
+    const GLuint header[4] = {0, 1, 1, 0};  // groups x, y, z; count (render/sky_refine_list.glsl)
+    glNamedBufferSubData(skyRefineList_.id(), 0, sizeof header, header);
+}
+
+std::vector<glm::ivec2> RenderTargets::readSkyRefineList() const {
+    glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+    GLuint header[4] = {0, 0, 0, 0};
+    glGetNamedBufferSubData(skyRefineList_.id(), 0, sizeof header, header);
+    std::vector<GLuint> packed(std::min<std::size_t>(header[3], std::size_t(size_.x) * std::size_t(size_.y)));
+    if (!packed.empty())
+        glGetNamedBufferSubData(skyRefineList_.id(), kRefineListHeaderBytes, GLsizeiptr(packed.size() * sizeof(GLuint)),
+                                packed.data());
+    std::vector<glm::ivec2> pixels;
+    pixels.reserve(packed.size());
+    for (GLuint p : packed) pixels.emplace_back(int(p & 0xffffu), int(p >> 16));
+    return pixels;
+}
 
 void RenderTargets::keepHistory() const {
     copyImage(hdr_, history_.radiance, size_);

@@ -15,11 +15,10 @@
 //             samples, one pixel of each 4x4 block, with its surface distance and the
 //             history's error at each
 //             (render/sky_sparse.frag)
-//   refine    DEPTH16: the pixels the temporal reconstruction could not trust (1; else 0),
-//             marched again at full rate (render/sky_temporal.frag marks them, render/
-//             sky_refine.frag marches them): a depth, so that the refine pass's depth test drops
-//             the other pixels before its fragment shader runs.
-//             temporalFramebuffer: hdr, sky S and T over refine (both passes draw into it)
+//   refine    a buffer: the pixels the temporal reconstruction could not trust, listed
+//             (render/sky_temporal.frag lists them, render/sky_refine.comp marches them again
+//             at full rate, one invocation each; render/sky_refine_list.glsl): a 16-byte
+//             header (the indirect dispatch's group counts, the count), then a uint per pixel
 //   ldr       RGBA8 tone-mapped sRGB bytes (what the window shows and PNGs hold)
 //   antialiased  RGBA16F: the temporal anti-aliasing's result, copied back into hdr
 //   history   the previous frame's hdr, surface distance and sky T and S, kept for temporal work
@@ -28,6 +27,8 @@
 // Layout must match shaders/common/gbuffer.glsl. Resized only when the frame size
 // changes (which drops the history); a 0x0 size (minimised window) holds no textures.
 #pragma once
+
+#include <vector>
 
 #include <glm/glm.hpp>
 
@@ -72,13 +73,14 @@ public:
     const gl::Texture& ldr() const { return ldr_; }
     const gl::Texture& skyMedium() const { return skyMedium_; }
     const SparseSky& sparseSky() const { return sparseSky_; }
-    const gl::Texture& skyRefine() const { return skyRefine_; }
+    const gl::Buffer& skyRefineList() const { return skyRefineList_; }
+    // Empties the refine list: no pixel listed, an indirect dispatch of no groups.
+    void clearSkyRefineList() const;
+    // The pixels listed for refinement (x, y), read back (a test's or bench's look, it waits).
+    std::vector<glm::ivec2> readSkyRefineList() const;
     const FrameHistory& history() const { return history_; }
     // hdr and skyMedium (the sky passes').
     GLuint hdrFramebuffer() const { return hdrFramebuffer_.id(); }
-    // hdr and skyMedium over skyRefine (the temporal reconstruction writes
-    // the marks, the refine pass tests them).
-    GLuint temporalFramebuffer() const { return temporalFramebuffer_.id(); }
     GLuint ldrFramebuffer() const { return ldrFramebuffer_.id(); }
     // surface radiance + distance with the G-buffer's depth attached.
     GLuint surfaceFramebuffer() const { return surfaceFramebuffer_.id(); }
@@ -105,10 +107,9 @@ private:
     gl::Texture ldr_{GL_TEXTURE_2D};
     gl::Texture skyMedium_{GL_TEXTURE_2D};
     SparseSky sparseSky_;
-    gl::Texture skyRefine_{GL_TEXTURE_2D};
+    gl::Buffer skyRefineList_;
     gl::Framebuffer surfaceFramebuffer_;
     gl::Framebuffer hdrFramebuffer_;
-    gl::Framebuffer temporalFramebuffer_;
     gl::Framebuffer ldrFramebuffer_;
     gl::Texture seabedDepth_{GL_TEXTURE_2D};
     gl::Texture seabedRadiance_{GL_TEXTURE_2D};

@@ -51,7 +51,7 @@ const char* frameResourceName(FrameResource r) {
         case R::GBuffer: return "G-buffer";
         case R::SurfaceRadiance: return "surface radiance";
         case R::SparseSky: return "sparse sky";
-        case R::SkyRefine: return "sky refine mask";
+        case R::SkyRefine: return "sky refine list";
         case R::HdrRadiance: return "HDR radiance";
         case R::LdrImage: return "LDR image";
         case R::Window: return "window";
@@ -86,7 +86,7 @@ Renderer::Renderer(const std::filesystem::path& shaderRoot, const atmosphere::Ta
       skyTemporal_(sources_, programTables_,
                    gl::ProgramDesc{"sky temporal", {"common/fullscreen.vert", "render/sky_temporal.frag"}}),
       skyRefine_(sources_, programTables_,
-                 gl::ProgramDesc{"sky refine", {"common/fullscreen.vert", "render/sky_refine.frag"}}),
+                 gl::ProgramDesc{"sky refine", {"render/sky_refine.comp"}}),
       antialias_(sources_, "antialias", "render/antialias.frag"),
       tonemap_(sources_, "tonemap", "render/tonemap.frag"),
       passes_(makePasses()) {
@@ -164,7 +164,10 @@ std::vector<Renderer::Pass> Renderer::makePasses() {
                       [this] { return skySparse_.built(); }});
     passes.push_back({{"sky temporal", {R::SurfaceRadiance, R::SparseSky}, {R::HdrRadiance, R::SkyRefine}}, reducedRate,
                       [this](const Scene& s) {
-                          glBindFramebuffer(GL_FRAMEBUFFER, targets_.temporalFramebuffer());
+                          glBindFramebuffer(GL_FRAMEBUFFER, targets_.hdrFramebuffer());
+                          targets_.clearSkyRefineList();
+                          glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding::BUFFER_SKY_REFINE,
+                                           targets_.skyRefineList().id());
                           const SparseSky& sparse = targets_.sparseSky();
                           const FrameHistory& history = targets_.history();
                           glBindTextureUnit(binding::UNIT_SURFACE_RADIANCE, targets_.surfaceRadiance().id());
@@ -176,29 +179,32 @@ std::vector<Renderer::Pass> Renderer::makePasses() {
                           glBindTextureUnit(binding::UNIT_HISTORY_SURFACE_DISTANCE, history.surfaceDistance.id());
                           glBindVertexArray(emptyVertexArray_.id());
                           glUseProgram(skyTemporal_.get(s.atmosphere.elek_3d_table, lightShafts(s)).id());
-                          glEnable(GL_DEPTH_TEST);  // the marks, as a depth, for the refine pass's depth test
-                          glDepthFunc(GL_ALWAYS);
-                          glDepthMask(GL_TRUE);
                           glDrawArrays(GL_TRIANGLES, 0, 3);
-                          glDisable(GL_DEPTH_TEST);
                       },
                       [this] { return skyTemporal_.built(); }});
     passes.push_back({{"sky refine", {R::SurfaceRadiance, R::SkyRefine}, {R::HdrRadiance}}, reducedRate,
                       [this](const Scene& s) {
-                          glBindFramebuffer(GL_FRAMEBUFFER, targets_.temporalFramebuffer());
                           glBindTextureUnit(binding::UNIT_SURFACE_RADIANCE, targets_.surfaceRadiance().id());
                           glBindTextureUnit(binding::UNIT_SURFACE_DISTANCE, targets_.surfaceDistance().id());
-                          glBindVertexArray(emptyVertexArray_.id());
+                          glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding::BUFFER_SKY_REFINE,
+                                           targets_.skyRefineList().id());
+                          glBindImageTexture(binding::IMAGE_HDR_RADIANCE, targets_.hdr().id(), 0, GL_FALSE, 0,
+                                             GL_WRITE_ONLY, GL_RGBA16F);
+                          glBindImageTexture(binding::IMAGE_SKY_MEDIUM, targets_.skyMedium().id(), 0, GL_FALSE, 0,
+                                             GL_WRITE_ONLY, GL_RGBA32UI);
                           glUseProgram(skyRefine_.get(s.atmosphere.elek_3d_table, lightShafts(s)).id());
-                          // Only the marked pixels (depth 1) pass the triangle's depth 0, before the
-                          // shader runs: a software renderer runs a large shader's straight-line code
-                          // even for pixels it discards (an all-discard pass cost 40 ms at 320x180).
-                          glEnable(GL_DEPTH_TEST);
-                          glDepthFunc(GL_LESS);
-                          glDepthMask(GL_FALSE);
-                          glDrawArrays(GL_TRIANGLES, 0, 3);
-                          glDepthMask(GL_TRUE);
-                          glDisable(GL_DEPTH_TEST);
+                          // The list and its group counts, written by the reconstruction's fragments.
+                          glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT);
+                          // One invocation per listed pixel: a software renderer pays for the pixels
+                          // it marches, not for each marked pixel's 4x4 block (a fragment pass over
+                          // the marks did), and a still frame, which lists none, dispatches nothing.
+                          glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, targets_.skyRefineList().id());
+                          glDispatchComputeIndirect(0);
+                          glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, 0);
+                          // The passes after read hdr and the history copies T, S.
+                          glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT |
+                                          GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT |
+                                          GL_PIXEL_BUFFER_BARRIER_BIT);
                       },
                       [this] { return skyRefine_.built(); }});
     passes.push_back({{"antialias", {R::HdrRadiance, R::SurfaceRadiance}, {R::HdrRadiance}},

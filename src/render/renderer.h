@@ -31,9 +31,10 @@
 //   sky temporal   sparse sky, surface radiance +       HDR radiance, from the sparse samples and the
 //                  distance, history                    reprojected history (render/sky_temporal.frag),
 //                                                       T and S beside it for the next frame's history,
-//                                                       and the mask of pixels it cannot trust
-//   sky refine     refine mask, surface radiance +      HDR radiance, T and S of the masked pixels
-//                  distance, atmosphere                 marched at full rate (render/sky_refine.frag)
+//                                                       and the list of pixels it cannot trust
+//   sky refine     refine list, surface radiance +      HDR radiance, T and S of the listed pixels
+//                  distance, atmosphere                 marched at full rate, one compute invocation
+//                                                       each (render/sky_refine.comp)
 //   antialias      HDR radiance, surface distance,      HDR radiance, anti-aliased over time (the
 //                  history                              explorer: render/antialias.frag; off by default)
 //   tonemap        HDR radiance, exposure               LDR (display-ready sRGB)

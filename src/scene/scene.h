@@ -48,7 +48,7 @@ struct RenderParams {
     bool temporal = true;
     // With the temporal march, in a frame where anything moved: the pixels around a sample
     // whose reprojected history was off by more than this share (relative luminance) are
-    // marched again at full rate (render/sky_refine.frag), as are those with nothing to
+    // marched again at full rate (render/sky_refine.comp), as are those with nothing to
     // reproject, on an edge between surfaces, or with a history read across one. 1: only
     // those. [0, 1]
     double temporal_refine_error = 0.05;
