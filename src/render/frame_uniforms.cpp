@@ -88,7 +88,9 @@ FrameUniforms makeFrameUniforms(const Scene& scene, const Camera& camera, glm::i
     u.historyValid = previous ? 1.0f : 0.0f;
     // The view: the camera and the light; with the clock, everything (the wind moves the clouds).
     const bool viewStill = previous && viewStoodStill(before, camera, previous->sunDirection, scene.sunDirection());
-    u.viewStillSincePrevious = viewStill ? 1.0f : 0.0f;
+    // Only the clock ran: the view, and its sub-pixel jitter too (the explorer's anti-aliasing
+    // moves it every frame, and then every point moves by a fraction of a pixel).
+    u.viewStillSincePrevious = viewStill && previous->jitterPx == jitterPx ? 1.0f : 0.0f;
     u.stillSincePrevious = viewStill && previous->time_s == scene.time_s ? 1.0f : 0.0f;
     u.viewportSize = glm::vec2(size);
     u.inverseViewportSize = 1.0f / glm::vec2(size);

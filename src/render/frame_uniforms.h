@@ -53,7 +53,7 @@ struct FrameUniforms {
     glm::vec3 cloudDriftSincePrevious; // m, world axes: how far the wind moved the clouds since the previous frame
     float previousJitterY;
     float temporalRefineError;        // render.temporal_refine_error (render/sky_temporal.frag)
-    float viewStillSincePrevious;     // 1: the camera and the sun are the previous frame's (the clock may have run)
+    float viewStillSincePrevious;     // 1: the camera, its jitter and the sun are the previous frame's (the clock may have run)
     float padding[2];
 };
 static_assert(offsetof(FrameUniforms, planetCenterFromCamera) == 320 && offsetof(FrameUniforms, cameraUp) == 336 &&
