@@ -175,6 +175,46 @@ TEST_F(Temporal, PixelsTheHistoryCannotRebuildAreMarchedAtFullRateAndAStillFrame
     EXPECT_LT(edgesOnly, marked.size());
 }
 
+TEST_F(Temporal, AStillFrameRunsTheStillProgramAndItIsTheGeneralOnesImage) {
+    // Where nothing moved, the reconstruction runs its still-frame program (STILL_FRAME: the
+    // history's own texel, and the traced pixel's running mean); the general program gives the
+    // same frames, pixel for pixel, over 20 still frames (more than a pixel's 16-sample mean),
+    // after a first frame at full rate (stills, sequences) or reconstructed from its samples
+    // alone (the explorer's reset: its pixels hold no sample of their own until traced). Not
+    // when the clock ran, or the sub-pixel jitter moved.
+    const glm::ivec2 size{64, 36};
+    for (const char* view : {"cumulus", "space", "clouds"}) {
+        const bool fullRateOnReset = view != std::string("clouds");
+        Session s = session(view);
+        Renderer still(test::repoPaths().shaders(), atmosphere::TableSizes::reduced());
+        Renderer general(test::repoPaths().shaders(), atmosphere::TableSizes::reduced());
+        general.setStillFrameProgram(false);
+        still.setFullRateOnReset(fullRateOnReset);
+        general.setFullRateOnReset(fullRateOnReset);
+        std::size_t differing = 0;
+        for (int frame = 0; frame < 20; ++frame) {
+            still.render(s.scene, s.camera, size);
+            general.render(s.scene, s.camera, size);
+            ASSERT_EQ(still.lastPrepare().stillFrame, frame > 0) << view << " frame " << frame;
+            ASSERT_EQ(still.lastPrepare().reducedRate, frame > 0 || !fullRateOnReset);
+            const ImageRGBAF a = hdrOf(still, size), b = hdrOf(general, size);
+            for (std::size_t i = 0; i < a.pixels.size(); ++i) differing += a.pixels[i] != b.pixels[i];
+        }
+        std::printf("%-8s values that differ between the still and the general program over 20 frames: %zu\n",
+                    view, differing);
+        EXPECT_EQ(differing, 0u) << view;
+
+        s.scene.time_s += 1.0 / 30.0;
+        still.render(s.scene, s.camera, size);
+        EXPECT_FALSE(still.lastPrepare().stillFrame) << "the clock ran";
+        still.setJitter({0.25, 0.0});
+        still.render(s.scene, s.camera, size);
+        EXPECT_FALSE(still.lastPrepare().stillFrame) << "the jitter moved";
+        still.render(s.scene, s.camera, size);
+        EXPECT_TRUE(still.lastPrepare().stillFrame);
+    }
+}
+
 TEST_F(Temporal, WithOnlyTheClockRunningOnlyTheSamplesErrorsMarkPixels) {
     // The explorer's clock runs while the camera stands: only the clouds move, with the wind, a
     // small fraction of a pixel a frame. The reconstruction marks for a full-rate march only the

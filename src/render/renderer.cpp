@@ -85,6 +85,9 @@ Renderer::Renderer(const std::filesystem::path& shaderRoot, const atmosphere::Ta
                  gl::ProgramDesc{"sky march", {"common/fullscreen.vert", "render/sky_sparse.frag"}}),
       skyTemporal_(sources_, programTables_,
                    gl::ProgramDesc{"sky temporal", {"common/fullscreen.vert", "render/sky_temporal.frag"}}),
+      skyTemporalStill_(gl::ShaderSources{sources_.root, sources_.preamble + "#define STILL_FRAME\n"}, programTables_,
+                        gl::ProgramDesc{"sky temporal (still frame)",
+                                        {"common/fullscreen.vert", "render/sky_temporal.frag"}}),
       skyRefine_(sources_, programTables_,
                  gl::ProgramDesc{"sky refine", {"render/sky_refine.comp"}}),
       antialias_(sources_, "antialias", "render/antialias.frag"),
@@ -178,10 +181,17 @@ std::vector<Renderer::Pass> Renderer::makePasses() {
                           glBindTextureUnit(binding::UNIT_HISTORY_SKY_MEDIUM, history.skyMedium.id());
                           glBindTextureUnit(binding::UNIT_HISTORY_SURFACE_DISTANCE, history.surfaceDistance.id());
                           glBindVertexArray(emptyVertexArray_.id());
-                          glUseProgram(skyTemporal_.get(s.atmosphere.elek_3d_table, lightShafts(s)).id());
+                          AtmosphereProgram& program =
+                              lastPrepare_.stillFrame && stillFrameProgram_ ? skyTemporalStill_ : skyTemporal_;
+                          glUseProgram(program.get(s.atmosphere.elek_3d_table, lightShafts(s)).id());
                           glDrawArrays(GL_TRIANGLES, 0, 3);
                       },
-                      [this] { return skyTemporal_.built(); }});
+                      [this] {
+                          std::vector<gl::HotProgram*> p = skyTemporal_.built();
+                          const std::vector<gl::HotProgram*> still = skyTemporalStill_.built();
+                          p.insert(p.end(), still.begin(), still.end());
+                          return p;
+                      }});
     passes.push_back({{"sky refine", {R::SurfaceRadiance, R::SkyRefine}, {R::HdrRadiance}}, reducedRate,
                       [this](const Scene& s) {
                           glBindTextureUnit(binding::UNIT_SURFACE_RADIANCE, targets_.surfaceRadiance().id());
@@ -288,6 +298,10 @@ void Renderer::prepare(const Scene& scene, const Camera& camera, glm::ivec2 size
     frameJitterPx_ = temporalAntialiasing_ ? glm::dvec2(subPixelJitter(frameIndex_)) : jitterPx_;
     const FrameUniforms uniforms = makeFrameUniforms(scene, camera, size, frameIndex_,
                                                      report.historyValid ? previous_ : std::nullopt, frameJitterPx_);
+    // Nothing moved, the sub-pixel jitter included (with the explorer's anti-aliasing every
+    // point moves by a fraction of a pixel: the general reconstruction reads its history there).
+    report.stillFrame =
+        report.historyValid && uniforms.stillSincePrevious > 0.5f && uniforms.viewStillSincePrevious > 0.5f;
     glNamedBufferSubData(frameUniforms_.id(), 0, sizeof uniforms, &uniforms);
     glBindBufferBase(GL_UNIFORM_BUFFER, binding::BLOCK_FRAME, frameUniforms_.id());
     atmosphere_.bind();
@@ -364,7 +378,7 @@ bool Renderer::matchAtmosphereTables() {
     programTables_ = sizes;
     surfaceLight_.program().setSources(withAtmosphere(sources_, sizes));
     std::vector<gl::HotProgram*> rebuilt{&surfaceLight_.program()};
-    for (AtmosphereProgram* p : {&ocean_.program(), &sky_, &skySparse_, &skyTemporal_, &skyRefine_}) {
+    for (AtmosphereProgram* p : {&ocean_.program(), &sky_, &skySparse_, &skyTemporal_, &skyTemporalStill_, &skyRefine_}) {
         p->setTableSizes(sizes);
         const std::vector<gl::HotProgram*> built = p->built();
         rebuilt.insert(rebuilt.end(), built.begin(), built.end());

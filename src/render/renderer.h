@@ -108,6 +108,8 @@ struct PrepareReport {
     bool cloudsUpdated = false;          // the cloud volume or weather map was made and uploaded
     bool historyValid = false;           // the previous frame may be reprojected
     bool reducedRate = false;            // the sky was marched at the reduced rate (sky march, temporal, refine)
+    bool stillFrame = false;             // with a history, nothing moved since it: the reconstruction's
+                                         // still-frame program (render/sky_temporal.frag, STILL_FRAME)
 };
 
 class Renderer {
@@ -153,6 +155,10 @@ public:
     // stills and sequences start exact) or reconstruct from its sparse samples alone (the
     // explorer: a reset costs no more than any other frame, and converges in 16 frames).
     void setFullRateOnReset(bool on) { fullRateOnReset_ = on; }
+    // Frames where nothing moved run the reconstruction's still-frame program (on, the default),
+    // or the general one, which gives the same image at five times the cost on llvmpipe (tests
+    // compare the two).
+    void setStillFrameProgram(bool on) { stillFrameProgram_ = on; }
     // The sub-pixel offset (pixels, about [-0.5, 0.5]) of the projection of the frames
     // rendered from now on; (0, 0), the default, renders unjittered.
     void setJitter(glm::dvec2 pixels) { jitterPx_ = pixels; }
@@ -205,6 +211,7 @@ private:
     AtmosphereProgram sky_;
     AtmosphereProgram skySparse_;
     AtmosphereProgram skyTemporal_;
+    AtmosphereProgram skyTemporalStill_;  // the same file with STILL_FRAME: frames where nothing moved
     AtmosphereProgram skyRefine_;
     FullscreenPass antialias_;
     FullscreenPass tonemap_;
@@ -217,6 +224,7 @@ private:
 
     int frameIndex_ = 0;
     bool fullRateOnReset_ = true;
+    bool stillFrameProgram_ = true;
     glm::dvec2 jitterPx_{0.0};
     bool temporalAntialiasing_ = false;
     glm::dvec2 frameJitterPx_{0.0};          // this frame's: jitterPx_, or the TAA's
