@@ -70,7 +70,9 @@ void addCloudParams(std::vector<ParamSpec>& table) {
         "border_voxels - 1 voxels.",
         &CloudParams::border_voxels);
     add("weather_seed", "", 0.0, 1e6, "Seed of the weather map.", &CloudParams::weather_seed);
-    add("weather_map_size", "texels", 4.0, 4096.0, "Texels per cube face of the weather map.",
+    add("weather_map_size", "texels", 4.0, 4096.0,
+        "Texels per cube face of the weather map: 10 km a texel on the earth at 1024 (at 256, 39 km: the edges of "
+        "the cloud fields seen from orbit are stair-steps of its texels).",
         &CloudParams::weather_map_size);
     add("weather_frequency", "1/radius", 0.01, 100.0, "Cycles per planet radius of the largest weather systems.",
         &CloudParams::weather_frequency);

@@ -43,7 +43,7 @@ struct CloudParams {
     int border_voxels = 4;                 // zero-density border around clouds (Michelic fig. 9), voxels, [2, 32]
     // The weather map (noise/weather_map.h): where the clouds are and of which type; a change rebakes it.
     int weather_seed = 1;                  // any int
-    int weather_map_size = 256;            // texels per cube face, [4, 4096]
+    int weather_map_size = 1024;           // texels per cube face, [4, 4096]
     double weather_frequency = 2.0;        // cycles per planet radius of the largest weather systems, (0, 100]
     double latitude_bands = 0.5;           // strength of the zonal pattern (ITCZ, subtropics, storm tracks), [0, 2]
     double wind_speed_mps = 10.0;          // the clouds drift with the scene's clock, m/s, [0, 200]
