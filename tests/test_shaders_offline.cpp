@@ -44,6 +44,11 @@ TEST(ShadersOffline, EveryStageValidatesWithGlslang) {
                     withShafts.push_back(v + shafts);
             variants = withShafts;
         }
+        // The reconstruction's still-frame program (src/render/renderer.cpp: STILL_FRAME).
+        if (expanded.text.find("#ifdef STILL_FRAME") != std::string::npos) {
+            const std::size_t n = variants.size();
+            for (std::size_t i = 0; i < n; ++i) variants.push_back(variants[i] + "#define STILL_FRAME\n");
+        }
         for (const std::string& variant : variants) {
             std::string text = expanded.text;
             text.insert(text.find('\n') + 1, variant);  // after #version
