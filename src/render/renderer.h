@@ -32,6 +32,7 @@
 //                  distance, history                    reprojected history (render/sky_temporal.frag),
 //                                                       T and S beside it for the next frame's history,
 //                                                       and the list of pixels it cannot trust
+//                                                       (where nothing moved: its STILL_FRAME program)
 //   sky refine     refine list, surface radiance +      HDR radiance, T and S of the listed pixels
 //                  distance, atmosphere                 marched at full rate, one compute invocation
 //                                                       each (render/sky_refine.comp)
