@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -127,8 +128,12 @@ CloudResources::Baked CloudResources::bake(const CloudParams& c, const std::shar
     b.weatherSize = c.weather_map_size;
     const bool volume = volumeParams_ != b.volumeParams;
     const bool weather = weatherParams_ != std::make_pair(b.weatherParams, b.weatherSize);
-    // The volume is the long part: 0-0.9 of the progress when both are made.
-    const double split = volume && weather ? 0.9 : volume ? 1.0 : 0.0;
+    // Each its share of the progress by its expected time: on 2 cores the 256³ volume took 11 s and
+    // the 1024² x 6 weather map 13.6 s (docs/PERFORMANCE.md, 2026-12-04), each in proportion to
+    // its voxels or texels.
+    const double volumeSeconds = 11.0 * std::pow(b.volumeParams.size / 256.0, 3.0);
+    const double weatherSeconds = 13.6 * std::pow(b.weatherSize / 1024.0, 2.0);
+    const double split = volume && weather ? volumeSeconds / (volumeSeconds + weatherSeconds) : volume ? 1.0 : 0.0;
     auto report = [progress](double from, double to) -> noise::BakeProgress {
         return [progress, from, to](double f) { progress->store(from + (to - from) * f); };
     };
