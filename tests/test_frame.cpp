@@ -267,7 +267,7 @@ TEST(FrameSources, AerialPerspectiveIsComputedInOneShaderFunctionCalledFromOnePa
     // interface's SkyRadianceToPoint(At), nothing outside the interface calls the model's
     // in-scattering lookups, and the only passes that march to a surface point are the sky
     // passes, through one function (render/sky_air.glsl, marchAir: at full rate and at the
-    // reduced rate); the ocean marches its reflected rays to space (no surface, no aerial
+    // reduced rate); the ocean marches its reflected rays to space (ocean/cloud_reflection.glsl: no surface, no aerial
     // perspective), except where its screen-space reflection finds land: the air along the
     // reflected ray from the water to that land is the one other aerial perspective
     // (ocean/screen_space_reflections.glsl).
@@ -295,7 +295,7 @@ TEST(FrameSources, AerialPerspectiveIsComputedInOneShaderFunctionCalledFromOnePa
               (std::vector<std::string>{"clouds/cloud_march.glsl", "ocean/screen_space_reflections.glsl"}));
     std::sort(marchCallers.begin(), marchCallers.end());
     for (const std::string& caller : marchCallers)
-        EXPECT_TRUE(caller == "render/sky_air.glsl" || caller == "ocean/ocean.frag" || caller.ends_with("_probe.comp"))
+        EXPECT_TRUE(caller == "render/sky_air.glsl" || caller == "ocean/cloud_reflection.glsl" || caller.ends_with("_probe.comp"))
             << caller;
     EXPECT_NE(std::find(marchCallers.begin(), marchCallers.end(), "render/sky_air.glsl"), marchCallers.end());
 }

@@ -49,6 +49,11 @@ TEST(ShadersOffline, EveryStageValidatesWithGlslang) {
             const std::size_t n = variants.size();
             for (std::size_t i = 0; i < n; ++i) variants.push_back(variants[i] + "#define STILL_FRAME\n");
         }
+        // The ocean's flat-mirror program (src/ocean/ocean_pass.cpp: OCEAN_FLAT_MIRROR 1).
+        if (expanded.text.find("#if OCEAN_FLAT_MIRROR") != std::string::npos) {
+            const std::size_t n = variants.size();
+            for (std::size_t i = 0; i < n; ++i) variants.push_back(variants[i] + "#define OCEAN_FLAT_MIRROR 1\n");
+        }
         for (const std::string& variant : variants) {
             std::string text = expanded.text;
             text.insert(text.find('\n') + 1, variant);  // after #version

@@ -5,7 +5,9 @@
 //   - Fresnel reflection (Schlick, F0 = 0.02 for water; Elek Eq. 18 is a cruder fit of
 //     the same curve) of the sky and the clouds along the reflected ray: the sky pass's own
 //     march (clouds/cloud_march.glsl) with one atmosphere slice per crossing of the layer
-//     and an eighth of its cloud steps, so the clouds show in the sea, a little coarser;
+//     and a 32nd of its cloud steps, so the clouds show in the sea, a little coarser; seen
+//     from high up, the clear sky per pixel and the clouds' change to it from the grid's
+//     points (ocean/cloud_reflection.glsl, OCEAN_FLAT_MIRROR);
 //     and of the terrain where the reflected ray meets it on screen (Michelic §6: "screen-
 //     space reflections of the terrain"; ocean/screen_space_reflections.glsl), seen through
 //     the air between, faded into the sky's reflection where the search is unsure;
@@ -38,6 +40,7 @@
 #include "ocean/gerstner.glsl"
 #include "ocean/ocean_waves.glsl"
 #include "ocean/water.glsl"
+#include "ocean/cloud_reflection.glsl"
 #include "noise/simplex.glsl"
 #include "terrain/height.glsl"
 #include "terrain/terrain_block.glsl"
@@ -46,6 +49,7 @@
 in vec3 tePosition;
 in vec3 teDirection;
 in vec3 teOffset;
+in vec3 teCloudReflection;  // with OCEAN_FLAT_MIRROR: dL_C (ocean/cloud_reflection.glsl)
 
 layout(binding = UNIT_SEABED_DEPTH) uniform sampler2D seabedDepth;         // copy of the G-buffer depth (reversed-Z)
 layout(binding = UNIT_SEABED_RADIANCE) uniform sampler2D seabedRadiance;   // copy of the surface radiance
@@ -67,15 +71,15 @@ vec3 reflectedRadiance(vec3 point, vec3 reflected, vec3 up, ivec2 pixel, vec3 su
     ScreenReflection land = traceScreenReflection(tePosition, reflected, up, ocean.seaLevel, pixel, seabedDepth,
                                                   seabedRadiance);
     vec3 radiance = vec3(0.0);
-    if (land.confidence < 1.0) {  // the sky's march only where the terrain does not hide it all
-        // One slice, a 32nd of the steps, two sun samples and the far field.
-        MarchQuality quality = MarchQualityOf(0.5);
-        quality.slicesPerCrossing = 1;
-        quality.stepBudget = max(clouds.maxSteps / 32, 4);
-        quality.sunSamples = min(clouds.sunSamples, 2);
-        quality.minFootprintKm = CloudFarFieldFootprint();
-        radiance = MarchView(point, reflected, 0.0, sun, quality).inscatter;
-    }
+#if OCEAN_FLAT_MIRROR
+    // The sea a flat mirror to every pixel: the clear sky along its own ray, the clouds' change
+    // from the grid's points.
+    vec3 clearTransmittance;
+    radiance = SkyRadiance(point, reflected, sun, clearTransmittance) + teCloudReflection;
+#else
+    if (land.confidence < 1.0)  // the sky's march only where the terrain does not hide it all
+        radiance = ReflectedMarch(point, reflected, sun);
+#endif
     if (land.confidence > 0.0)
         radiance = mix(radiance, reflectedTerrainRadiance(land, point, reflected, sun), land.confidence);
     return radiance;
@@ -177,8 +181,7 @@ void main() {
         return;
     }
 
-    vec3 reflected = reflect(view, normal);
-    reflected = normalize(reflected + up * max(0.0, 0.01 - dot(reflected, up)));  // keep it above the horizon
+    vec3 reflected = SeaReflectedRay(view, normal, up);
     vec3 sky = reflectedRadiance(point, reflected, up, pixel, sun);
     // The sun's visibility from the water's surface (the clouds' shadows and the terrain's, the
     // march starting at sea level, not on the sea floor), formed once for the light into the

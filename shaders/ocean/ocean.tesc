@@ -12,7 +12,9 @@
 
 layout(vertices = 4) out;
 in vec2 vGrid[];
+in vec3 vCloudReflection[];
 out vec2 tcGrid[];
+out vec3 tcCloudReflection[];
 
 // Whether the patch lies over land throughout (src/ocean/land_cull.h): the continent value at
 // its centre, less the map's steepest slope times the patch's angular radius, above the value
@@ -35,6 +37,7 @@ bool overLand(dvec3 directions[4]) {
 
 void main() {
     tcGrid[gl_InvocationID] = vGrid[gl_InvocationID];
+    tcCloudReflection[gl_InvocationID] = vCloudReflection[gl_InvocationID];
     if (gl_InvocationID != 0) return;
     vec3 mean[4];
     vec3 corners[8];

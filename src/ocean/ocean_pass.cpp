@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <vector>
 
+#include "ocean/flat_mirror.h"
 #include "ocean/ocean_block.h"
 #include "ocean/ocean_gpu.h"
 #include "ocean/land_cull.h"
@@ -14,11 +15,16 @@ namespace {
 constexpr int kGridExponent = 4;  // Michelic Eq. 2's n for the ocean grid
 
 double seaRadiusM(const Scene& scene) { return scene.planetRadiusM() + scene.ocean.sea_level_m; }
+
+gl::ProgramDesc oceanProgram(std::string name) {
+    return gl::ProgramDesc{std::move(name), {"ocean/ocean.vert", "ocean/ocean.tesc", "ocean/ocean.tese", "ocean/ocean.frag"}};
+}
 }  // namespace
 
 OceanPass::OceanPass(const gl::ShaderSources& sources, const atmosphere::TableSizes& tables)
-    : program_(sources, tables,
-               gl::ProgramDesc{"ocean", {"ocean/ocean.vert", "ocean/ocean.tesc", "ocean/ocean.tese", "ocean/ocean.frag"}}) {
+    : program_(sources, tables, oceanProgram("ocean")),
+      flatMirrorProgram_(gl::ShaderSources{sources.root, sources.preamble + "#define OCEAN_FLAT_MIRROR 1\n"}, tables,
+                         oceanProgram("ocean (flat mirror)")) {
     waves_.label("ocean waves");
     glNamedBufferStorage(block_.id(), sizeof(ocean::OceanBlock), nullptr, GL_DYNAMIC_STORAGE_BIT);
     block_.label("OceanBlock");
@@ -40,7 +46,7 @@ void OceanPass::uploadWaves(const Scene& scene, const Camera& camera) {
                              records.data());
 }
 
-void OceanPass::prepare(const Scene& scene, const Camera& camera,
+void OceanPass::prepare(const Scene& scene, const Camera& camera, double radiansPerPixel,
                         const std::shared_ptr<const noise::CubeMap>& continents) {
     GridParams grid;
     grid.size = scene.ocean.grid_size;
@@ -65,6 +71,18 @@ void OceanPass::prepare(const Scene& scene, const Camera& camera,
     block.continentLipschitz = static_cast<float>(lipschitz_);
     block.landCulling = landCulling_ && landContinent_ <= 1.0 ? 1 : 0;
     glNamedBufferSubData(block_.id(), 0, sizeof block, &block);
+    const double height = glm::length(camera.position) - radius;
+    flatMirror_ = flatMirrorMode_ == FlatMirror::Auto
+                      ? ocean::seaIsAFlatMirror(scene.waves, height, radiansPerPixel,
+                                                scene.clouds.top_altitude_km * 1000.0 - scene.ocean.sea_level_m)
+                      : flatMirrorMode_ == FlatMirror::On;
+}
+
+std::vector<gl::HotProgram*> OceanPass::programs() {
+    std::vector<gl::HotProgram*> p = program_.built();
+    const std::vector<gl::HotProgram*> flat = flatMirrorProgram_.built();
+    p.insert(p.end(), flat.begin(), flat.end());
+    return p;
 }
 
 void OceanPass::draw(bool elekTable) {
@@ -74,7 +92,7 @@ void OceanPass::draw(bool elekTable) {
     glDepthFunc(GL_GREATER);  // reversed-Z
     glDepthMask(GL_TRUE);
     glDisable(GL_CULL_FACE);  // the surface is seen from below too
-    glUseProgram(program_.get(elekTable).id());
+    glUseProgram((flatMirror_ ? flatMirrorProgram_ : program_).get(elekTable).id());
     if (countPrimitives_) glBeginQuery(GL_PRIMITIVES_GENERATED, primitives_.id());
     mesh_.draw();
     if (countPrimitives_) {

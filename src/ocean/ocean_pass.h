@@ -2,14 +2,16 @@
 // projected grid (src/grid), tessellated, displaced and shaded as water, drawn into the
 // surface radiance and distance targets over the sea floor's (see shaders/ocean/ocean.frag).
 //
-//   ocean.vert   grid coordinates of the N x N vertices
+//   ocean.vert   grid coordinates of the N x N vertices; seen from high up (flat_mirror.h), the
+//                clouds' change to the sea's reflection at each (ocean/cloud_reflection.glsl)
 //   ocean.tesc   frustum culling with the highest crest and lowest trough, patches over land
 //                dropped (land_cull.h), levels from edge size
 //   ocean.tese   grid -> sea sphere direction (double) -> Eq. 8 displacement (in shallow water
 //                each wave no higher than 0.78 x depth) -> camera-relative position
 //   ocean.frag   fragments under land or behind the terrain discarded first (cheap tests that
-//                give the same pixels), then Eq. 10 normal per pixel, Fresnel sky reflection,
-//                sun glitter, water body
+//                give the same pixels), then Eq. 10 normal per pixel, Fresnel sky reflection
+//                (the reflected ray marched through the clouds, or from high up the clear sky plus
+//                the grid's change for the clouds), sun glitter, water body
 //
 // prepare() (before the frame's passes) uploads the waves (a shader storage buffer at
 // BUFFER_OCEAN_WAVES, one record per wave, refreshed every frame with the camera's phases:
@@ -36,14 +38,25 @@ public:
     OceanPass(const gl::ShaderSources& sources, const atmosphere::TableSizes& tables);
 
     // `continents`: the CPU map the GPU samples (the land culling's bounds are made from it
-    // when it changes).
-    void prepare(const Scene& scene, const Camera& camera, const std::shared_ptr<const noise::CubeMap>& continents);
+    // when it changes); `radiansPerPixel`: the angle of a pixel (the flat mirror's test).
+    void prepare(const Scene& scene, const Camera& camera, double radiansPerPixel,
+                 const std::shared_ptr<const noise::CubeMap>& continents);
     // The sea surface into the bound target (surface radiance and distance + the G-buffer's
     // depth, tested and written), reading the seabed copies, the atmosphere and the terrain's
     // height field (the sea floor), with the program for the table in use.
     void draw(bool elekTable);
 
     AtmosphereProgram& program() { return program_; }
+    AtmosphereProgram& flatMirrorProgram() { return flatMirrorProgram_; }
+    // Both programs' variants built so far, for hot reload.
+    std::vector<gl::HotProgram*> programs();
+
+    // The program with OCEAN_FLAT_MIRROR (the clouds' share of the reflection from the grid's
+    // points) where the sea is a flat mirror to every pixel (Auto: flat_mirror.h, per frame), or
+    // always (On) or never (Off), to compare with (tests). flatMirror(): the last prepare()'s.
+    enum class FlatMirror { Auto, On, Off };
+    void setFlatMirror(FlatMirror mode) { flatMirrorMode_ = mode; }
+    bool flatMirror() const { return flatMirror_; }
 
     // Land culling (on by default): patches over land dropped in the control stage, fragments
     // under land or behind the terrain discarded before the water is shaded. Off only to
@@ -62,6 +75,9 @@ private:
     void uploadWaves(const Scene& scene, const Camera& camera);
 
     AtmosphereProgram program_;
+    AtmosphereProgram flatMirrorProgram_;  // the same files with OCEAN_FLAT_MIRROR 1
+    FlatMirror flatMirrorMode_ = FlatMirror::Auto;
+    bool flatMirror_ = false;
     GridMesh mesh_{"ocean"};
     gl::Buffer waves_;
     gl::Buffer block_;  // OceanBlock

@@ -136,7 +136,7 @@ std::vector<Renderer::Pass> Renderer::makePasses() {
                           glBindTextureUnit(binding::UNIT_SEABED_RADIANCE, targets_.seabedRadiance().id());
                           ocean_.draw(s.atmosphere.elek_3d_table);
                       },
-                      [this] { return ocean_.program().built(); }});
+                      [this] { return ocean_.programs(); }});
     auto fullRate = [this](const Scene&) { return !lastPrepare_.reducedRate; };
     auto reducedRate = [this](const Scene&) { return lastPrepare_.reducedRate; };
     passes.push_back({{"sky", {R::SurfaceRadiance}, {R::HdrRadiance}}, fullRate,
@@ -308,7 +308,7 @@ void Renderer::prepare(const Scene& scene, const Camera& camera, glm::ivec2 size
     report.cloudsUpdated = clouds_.update(scene, camera, size.y);
     clouds_.bind();
     terrain_.prepare(scene, camera, *continents_->map());
-    if (scene.terrain.ocean) ocean_.prepare(scene, camera, continents_->map());
+    if (scene.terrain.ocean) ocean_.prepare(scene, camera, camera.fovY_rad / size.y, continents_->map());
     lastPrepare_ = report;
 }
 
@@ -378,7 +378,7 @@ bool Renderer::matchAtmosphereTables() {
     programTables_ = sizes;
     surfaceLight_.program().setSources(withAtmosphere(sources_, sizes));
     std::vector<gl::HotProgram*> rebuilt{&surfaceLight_.program()};
-    for (AtmosphereProgram* p : {&ocean_.program(), &sky_, &skySparse_, &skyTemporal_, &skyTemporalStill_, &skyRefine_}) {
+    for (AtmosphereProgram* p : {&ocean_.program(), &ocean_.flatMirrorProgram(), &sky_, &skySparse_, &skyTemporal_, &skyTemporalStill_, &skyRefine_}) {
         p->setTableSizes(sizes);
         const std::vector<gl::HotProgram*> built = p->built();
         rebuilt.insert(rebuilt.end(), built.begin(), built.end());
