@@ -273,7 +273,7 @@ TEST(FrameSources, AerialPerspectiveIsComputedInOneShaderFunctionCalledFromOnePa
     // (ocean/screen_space_reflections.glsl).
     // Probes (compute shaders that run the same functions for tests) may call anything.
     const fs::path root = test::repoPaths().shaders();
-    const std::regex toPoint(R"(\bSkyRadianceToPoint(At)?\s*\()");
+    const std::regex toPoint(R"(\bSkyRadianceToPoint(At|OfRay)?\s*\()");
     const std::regex model(R"(\bGetSkyRadianceToPoint\w*\s*\()");
     const std::regex march(R"(\bMarchView(At)?\s*\()");  // At: the viewpoint by its up and altitude
     std::vector<std::string> toPointCallers, marchCallers;

@@ -21,7 +21,7 @@
 //
 // Written in the subset of GLSL that is also C++ (as cloud_density.glsl):
 // src/clouds/cloud_reference.h compiles it in double, with the interface's functions
-// (SkyRadiance, SkyRadianceToPoint, ...) bound to the atmosphere's CPU model.
+// (AirRay, SkyRadianceOfRay, SkyRadianceToPointOfRay) bound to the atmosphere's CPU model.
 
 // How finely a caller marches: the sky pass gives the preset's (MarchQualityOf), the sea's
 // reflection less (ocean.frag), the probes the preset's with jitter 1/2.
@@ -141,11 +141,16 @@ struct ViewMarch {
                            // the opacity it added (the temporal march reprojects clouds from there); 0: none
 };
 
-// The air from the point `t` km along the ray to `span` km further on: from a viewpoint inside
-// the atmosphere itself (t = 0, `inside`) by its up and altitude (SkyRadianceToPointAt: exact
-// from centimetres above the ground, where `origin`'s float length is rounded to half a
-// metre), else by position (from space as before: the altitude form changed the space
-// reference view's mean luminance by 2 %, cause not found).
+// The air ray from the point `t` km along the ray: from a viewpoint inside the atmosphere itself
+// (t = 0, `inside`) by its up and altitude (exact from centimetres above the ground, where
+// `origin`'s float length is rounded to half a metre), else by position (from space as before:
+// the altitude form changed the space reference view's mean luminance by 2 %, cause not
+// found). One ray either way (AirRay), so each slice is one lookup.
+ViewRay AirRayFrom(vec3 up, Length altitude, bool inside, vec3 origin, vec3 dir, Length t, vec3 sun) {
+    return AirRay(up, altitude, t <= 0.0 && inside, origin + dir * t, dir, sun);
+}
+
+// The air from the point `t` km along the ray to `span` km further on.
 struct AirSlice {
     vec3 inscatter;
     vec3 transmittance;
@@ -153,10 +158,8 @@ struct AirSlice {
 AirSlice AirSliceFrom(vec3 up, Length altitude, bool inside, vec3 origin, vec3 dir, Length t, Length span,
                       vec3 sun) {
     AirSlice a;
-    if (t <= 0.0 && inside)
-        a.inscatter = SkyRadianceToPointAt(up, altitude, dir, span, sun, a.transmittance);
-    else
-        a.inscatter = SkyRadianceToPoint(origin + dir * t, dir, span, sun, a.transmittance);
+    a.inscatter = SkyRadianceToPointOfRay(AirRayFrom(up, altitude, inside, origin, dir, t, sun), origin + dir * t,
+                                          dir, span, sun, a.transmittance);
     return a;
 }
 
@@ -167,7 +170,7 @@ AirSlice AirSliceFrom(vec3 up, Length altitude, bool inside, vec3 origin, vec3 d
 // says: the sky pass gives the preset's with a per-pixel jitter; the sea's reflection one
 // slice, fewer steps and sun samples and the far field (its few steps would alias the
 // volume, and waves and Fresnel blur the reflection anyway).
-// `inside`: the air from the viewpoint by `up` and `altitude` (see AirSliceFrom), else by `origin`.
+// `inside`: the air from the viewpoint by `up` and `altitude` (see AirRayFrom), else by `origin`.
 ViewMarch MarchViewFrom(vec3 origin, vec3 up, Length altitude, bool inside, vec3 dir, Length distance, vec3 sun,
                         MarchQuality quality) {
     ViewMarch m;
@@ -212,12 +215,12 @@ ViewMarch MarchViewFrom(vec3 origin, vec3 up, Length altitude, bool inside, vec3
     }
     // The rest: air to the surface point, or the sky beyond.
     AirSlice rest;
+    ViewRay restRay = AirRayFrom(up, altitude, inside, origin, dir, t, sun);
     if (!toSpace)
-        rest = AirSliceFrom(up, altitude, inside, origin, dir, t, max(distance - t, 0.0), sun);
-    else if (t <= 0.0 && inside)
-        rest.inscatter = SkyRadianceAt(up, altitude, dir, sun, rest.transmittance);
+        rest.inscatter = SkyRadianceToPointOfRay(restRay, origin + dir * t, dir, max(distance - t, 0.0), sun,
+                                                 rest.transmittance);
     else
-        rest.inscatter = SkyRadiance(origin + dir * t, dir, sun, rest.transmittance);
+        rest.inscatter = SkyRadianceOfRay(restRay, origin + dir * t, dir, sun, rest.transmittance);
     CombineSlice(rest.transmittance, rest.inscatter, vec3(1.0), vec3(0.0), m.transmittance, m.inscatter);
     m.cloudOpacity = 1.0 - cloudTransmittance;
     if (m.cloudOpacity > 0.0) m.cloudDistance = depthSum / m.cloudOpacity;

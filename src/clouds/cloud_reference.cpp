@@ -105,30 +105,21 @@ vec4 CloudMarchModel::textureLod(const WeatherSampler& sampler, vec3 direction, 
     return vec4(w.x, w.y, 0.0, 1.0);
 }
 
-// interface.glsl with ELEK_TABLE 0: Bruneton's 4D table.
-vec3 CloudMarchModel::SkyRadiance(vec3 camera, vec3 viewRay, vec3 sun, vec3& transmittance) {
-    return GetSkyRadianceFrom(atmosphere_, false, transmittance_texture, scattering_texture,
-                              single_mie_scattering_texture, camera, viewRay, sun, transmittance);
+// interface.glsl with ELEK_TABLE 0: Bruneton's 4D table, without light shafts
+// (terrain.light_shafts: the CPU reference has none, its SunShadowLength is 0).
+CloudMarchModel::ViewRay CloudMarchModel::AirRay(vec3 up, Length altitudeKm, bool byAltitude, vec3 position,
+                                                 vec3 viewRay, vec3 sun) {
+    return byAltitude ? ViewRayInAtmosphereAt(atmosphere_, up, altitudeKm, viewRay, sun)
+                      : ViewRayInAtmosphere(atmosphere_, position, viewRay, sun);
 }
-
-// interface.glsl without light shafts (terrain.light_shafts: the CPU reference has none, its
-// SunShadowLength is 0).
-vec3 CloudMarchModel::SkyRadianceToPoint(vec3 camera, vec3 viewRay, Length distance, vec3 sun, vec3& transmittance) {
-    return GetSkyRadianceToPointAlongRayFrom(atmosphere_, false, transmittance_texture, scattering_texture,
-                                             single_mie_scattering_texture, camera, viewRay, distance, sun,
-                                             Length(0.0), transmittance);
+vec3 CloudMarchModel::SkyRadianceOfRay(const ViewRay& ray, vec3, vec3, vec3, vec3& transmittance) {
+    return GetSkyRadianceOfRay(atmosphere_, false, transmittance_texture, scattering_texture,
+                               single_mie_scattering_texture, ray, transmittance);
 }
-
-// The same for a viewpoint given by its up and altitude (interface.glsl).
-vec3 CloudMarchModel::SkyRadianceAt(vec3 up, Length altitudeKm, vec3 viewRay, vec3 sun, vec3& transmittance) {
-    return GetSkyRadianceAtFrom(atmosphere_, false, transmittance_texture, scattering_texture,
-                                single_mie_scattering_texture, up, altitudeKm, viewRay, sun, transmittance);
-}
-vec3 CloudMarchModel::SkyRadianceToPointAt(vec3 up, Length altitudeKm, vec3 viewRay, Length distance, vec3 sun,
-                                           vec3& transmittance) {
-    return GetSkyRadianceToPointAlongRayAtFrom(atmosphere_, false, transmittance_texture, scattering_texture,
-                                               single_mie_scattering_texture, up, altitudeKm, viewRay, distance, sun,
-                                               Length(0.0), transmittance);
+vec3 CloudMarchModel::SkyRadianceToPointOfRay(const ViewRay& ray, vec3, vec3, Length distance, vec3,
+                                              vec3& transmittance) {
+    return GetSkyRadianceToPointOfRay(atmosphere_, false, transmittance_texture, scattering_texture,
+                                      single_mie_scattering_texture, ray, distance, Length(0.0), transmittance);
 }
 
 }  // namespace glsl

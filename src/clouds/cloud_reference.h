@@ -10,7 +10,7 @@
 //                               GL_REPEAT, voxel (i, j, k) at ((i, j, k) + 0.5) / size, the
 //                               weather map noise::sampleWeather (a seamless samplerCube);
 //                               without data, CloudResources' placeholders (-1; coverage 0)
-//   the atmosphere interface    SkyRadiance, SkyRadianceToPoint (4D table, no shadow
+//   the atmosphere interface    AirRay, SkyRadianceOfRay, SkyRadianceToPointOfRay (4D table, no shadow
 //                               length: interface.glsl with ELEK_TABLE 0, as the probe is
 //                               built), atmosphereParameters(), the tables, and through the
 //                               base class Model the model's GetTransmittanceToSun,
@@ -106,11 +106,10 @@ public:
     const atmosphere::Table3D& scattering_texture;
     const atmosphere::Table3D& single_mie_scattering_texture;
     const atmosphere::Table2D& irradiance_texture;
-    vec3 SkyRadiance(vec3 camera, vec3 viewRay, vec3 sun, vec3& transmittance);
-    vec3 SkyRadianceToPoint(vec3 camera, vec3 viewRay, Length distance, vec3 sun, vec3& transmittance);
-    vec3 SkyRadianceAt(vec3 up, Length altitudeKm, vec3 viewRay, vec3 sun, vec3& transmittance);
-    vec3 SkyRadianceToPointAt(vec3 up, Length altitudeKm, vec3 viewRay, Length distance, vec3 sun,
-                              vec3& transmittance);
+    ViewRay AirRay(vec3 up, Length altitudeKm, bool byAltitude, vec3 position, vec3 viewRay, vec3 sun);
+    vec3 SkyRadianceOfRay(const ViewRay& ray, vec3 camera, vec3 viewRay, vec3 sun, vec3& transmittance);
+    vec3 SkyRadianceToPointOfRay(const ViewRay& ray, vec3 camera, vec3 viewRay, Length distance, vec3 sun,
+                                 vec3& transmittance);
 
 #include "shaders/clouds/cloud_density.glsl"
 #include "shaders/clouds/cloud_march.glsl"
