@@ -58,18 +58,14 @@
 # 256x64, irradiance 64x16); its ground is a sphere of one albedo, ours a tessellated
 # terrain, an ocean and clouds; its exposure and tone mapping are its own.
 #
-# Our passes on llvmpipe: a pass's CPU column is its own submitting (the vertex and
-# tessellation stages run there, in the draw call); its fragments are rasterized by
-# llvmpipe's threads after it and are waited for by the next pass, which reads what it
-# drew (terrain's fragments in surface light's wait, ocean's in the sky's, the sky's in
-# tonemap's). So a pass's cost is taken here as its CPU time plus the next pass's wait in
-# frame order ("attributed"), not its own CPU + wait (which holds the previous pass's
-# fragments: `sky march`'s own wait is mostly the ocean); the first drawing pass (terrain)
-# keeps its own wait too, so the passes sum to the bench's frame row, the sum over the
-# passes of CPU + wait. That frame leaves out tonemap's own rasterization and the history
-# copies after the last pass (tens of ms at 1280x720: tonemap's GPU timestamps, shown),
-# so it errs in our favour. GPU timestamps are coarse on llvmpipe in general and are
-# shown beside the attributed figures (in the recorded runs they agreed within 1-10 %).
+# Our passes on llvmpipe: the bench is run with --finish-each-pass on (its default on a
+# software renderer), which waits for the GPU before and after each pass, so a pass's CPU +
+# wait is its own work: its submitting (the vertex and tessellation stages run there, in the
+# draw call) and its fragments, rasterized by llvmpipe's threads. (Before that option existed
+# a pass's fragments were waited for by the next pass, and this script attributed them so;
+# its summaries of 2026-12-03 were made that way.) The passes sum to the bench's frame row, the
+# sum over the passes of CPU + wait, which leaves out the history copies after the last pass.
+# GPU timestamps are coarse on llvmpipe in general and are shown beside them.
 #
 # Options (environment): ROUNDS (3), SIZE (1280x720), TABLES (full), FRAMES (5) and
 # WARMUP (2) for ours (a 1280x720 frame takes seconds on two cores; WARMUP must be at
@@ -143,25 +139,16 @@ summarize() {
     END {
         n_order = split("prepare,terrain,surface light,ocean,sky,sky march,sky temporal,sky refine,antialias,tonemap", order, ",")
         n_views = split(views, vs, " ")
-        # attributed: the pass own CPU time + the wait of the next pass in frame order (which
-        # waits for its fragments); the first drawing pass (terrain) keeps its own wait as well
-        # (nothing of this frame before it to wait for: the thread waiting for a core, or
-        # llvmpipe flushing its own bins), prepare its own; the sum is the frame cpu + wait
+        # attributed: the pass own CPU time + its own wait (--finish-each-pass on: each pass
+        # waits for the work before it first, so its wait is its own fragments); the sum is
+        # the frame cpu + wait
         for (i = 1; i <= n_views; ++i) for (var = 1; var <= 2; ++var) {
             variant = var == 1 ? "ours" : "clear"; view = vs[i]
             for (r = 1; r <= rounds; ++r) {
-                first = 1
                 for (p = 1; p <= n_order; ++p) {
                     pass = order[p]
                     if (!((variant SUBSEP view SUBSEP pass SUBSEP r) in cpu)) continue
-                    a = cpu[variant, view, pass, r]
-                    if (pass == "prepare" || first) a += wait[variant, view, pass, r]
-                    if (pass != "prepare") {
-                        first = 0
-                        for (q = p + 1; q <= n_order; ++q)
-                            if ((variant SUBSEP view SUBSEP order[q] SUBSEP r) in cpu) { a += wait[variant, view, order[q], r]; break }
-                    }
-                    v[variant, view, pass, "attr", r] = a
+                    v[variant, view, pass, "attr", r] = cpu[variant, view, pass, r] + wait[variant, view, pass, r]
                 }
                 if ((variant SUBSEP view SUBSEP "sky march" SUBSEP r) in cpu)
                     v[variant, view, "air", r] = v[variant, view, "sky march", "attr", r] + v[variant, view, "sky temporal", "attr", r] + \
@@ -173,7 +160,7 @@ summarize() {
         printf "\nBruneton demo against planet bench, %s, %s; medians of %d interleaved rounds (demo: %d frames after %d warm-up; ours: %d after %d)\n", \
             renderer, size, rounds, dframes, dwarmup, frames, warmup
         printf "ms. ours: the earth preset (clouds, temporal march); clear: the same without clouds (the air marched at full rate).\n"
-        printf "Our frame = cpu + wait summed over the passes; a pass = its cpu + the next pass wait (see the script).\n"
+        printf "Our frame = cpu + wait summed over the passes; a pass = its own cpu + wait (--finish-each-pass on; see the script).\n"
         printf "Bars (issue 15): frame <= 1.5x the demo frame for orbit and space, <= 2x for ground; atmosphere pass <= 0.7x (orbit, space).\n\n"
         printf "| view | demo frame | our frame | / demo | bar | | clear frame | / demo | our sky passes (air + clouds) | / demo | clear sky pass (air alone) | / demo | bar | |\n"
         printf "| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |\n"
@@ -188,13 +175,13 @@ summarize() {
                 abar == "" ? "-" : "<= " abar, abar == "" ? "no bar" : verdict(air, d, abar) " / " verdict(cair, d, abar)
         }
         printf "\nWhere our frame goes (ms, attributed, medians over the rounds; sky: sky march + sky temporal + sky refine, or the full-rate sky)\n\n"
-        printf "| view | variant | terrain | surface light | ocean | sky | tonemap (gpu: its fragments, not in the frame) | frame | demo frame |\n"
+        printf "| view | variant | terrain | surface light | ocean | sky | tonemap | frame | demo frame |\n"
         printf "| --- | --- | --- | --- | --- | --- | --- | --- | --- |\n"
         for (i = 1; i <= n_views; ++i) for (var = 1; var <= 2; ++var) {
             variant = var == 1 ? "ours" : "clear"; view = vs[i]; k = variant SUBSEP view SUBSEP
             printf "| %s | %s | %s | %s | %s | %s | %s | %s | %s |\n", view, variant, ms(median(k "terrain" SUBSEP "attr")), \
                 ms(median(k "surface light" SUBSEP "attr")), ms(median(k "ocean" SUBSEP "attr")), ms(median(k "air")), \
-                ms(median(k "tonemap" SUBSEP "gpu")), ms(median(k "frame")), ms(median("demo" SUBSEP view))
+                ms(median(k "tonemap" SUBSEP "attr")), ms(median(k "frame")), ms(median("demo" SUBSEP view))
         }
         printf "\nPer pass (ms, medians over the rounds): cpu / wait / attributed / gpu timestamps\n\n"
         printf "| view | variant | pass | cpu | wait | attributed | gpu |\n| --- | --- | --- | --- | --- | --- | --- |\n"
@@ -476,7 +463,8 @@ for round in $(seq 1 "$rounds"); do
         [ "$variant" = ours ] || preset=(--preset "$out/earth_no_clouds.toml")
         echo "== round $round/$rounds: planet bench, $variant; load $(cut -d' ' -f1-3 /proc/loadavg)" >&2
         "$planet" bench "${root_option[@]}" "${preset[@]}" --views "${bench_views[@]}" --size "$size" --tables "$tables" \
-            --frames "$frames" --warmup "$warmup" --csv "$dir/$variant.csv" --plot '' > "$dir/$variant.log" 2>&1 ||
+            --frames "$frames" --warmup "$warmup" --finish-each-pass on --csv "$dir/$variant.csv" --plot '' \
+            > "$dir/$variant.log" 2>&1 ||
             { cat "$dir/$variant.log" >&2; exit 1; }
         grep -m1 '^planet bench on' "$dir/$variant.log" | sed 's/^/   /' >&2
         bench_rows "$dir/$variant.csv" | awk -F, '$4 == "frame" { printf "   %-8s frame cpu + wait %.0f ms\n", $3, $8 + $12 }' >&2
