@@ -20,6 +20,14 @@
 #include "render/sky_air.glsl"
 #include "render/sky_medium.glsl"
 
+// A camera under the sea (frame.cameraDepthBelowSea > 0) gets this file built with UNDER_WATER 1
+// (src/render/renderer.cpp): a program rather than an if, because a software renderer runs
+// both sides of an if for every pixel, and the water's side (its light through the sea above
+// the camera) cost the air's pass a tenth more where no pixel took it.
+#ifndef UNDER_WATER
+#define UNDER_WATER 0
+#endif
+
 layout(binding = UNIT_SURFACE_RADIANCE) uniform sampler2D surfaceRadiance;
 layout(binding = UNIT_SURFACE_DISTANCE) uniform sampler2D surfaceDistance;
 
@@ -32,13 +40,13 @@ void main() {
     vec3 surface = texelFetch(surfaceRadiance, pixel, 0).rgb;
     float distance = texelFetch(surfaceDistance, pixel, 0).r;
     vec3 radiance;
-    if (frame.cameraDepthBelowSea > 0.0) {
-        radiance = throughWater(surface, distance);
-        outSkyMedium = packSkyMedium(SkySample(vec3(0.0), vec3(0.0)), 0.0);
-    } else {
-        AirMarch a = marchPixelAtFullRate(pixel, dir, distance);
-        radiance = throughAir(dir, surface, distance, a.transmittance, a.inscatter);
-        outSkyMedium = packSkyMedium(SkySample(min(a.inscatter, vec3(MAX_HDR_RADIANCE)), a.transmittance), 1.0);
-    }
+#if UNDER_WATER
+    radiance = throughWater(surface, distance);
+    outSkyMedium = packSkyMedium(SkySample(vec3(0.0), vec3(0.0)), 0.0);
+#else
+    AirMarch a = marchPixelAtFullRate(pixel, dir, distance);
+    radiance = throughAir(dir, surface, distance, a.transmittance, a.inscatter);
+    outSkyMedium = packSkyMedium(SkySample(min(a.inscatter, vec3(MAX_HDR_RADIANCE)), a.transmittance), 1.0);
+#endif
     outRadiance = vec4(min(radiance, vec3(MAX_HDR_RADIANCE)), 1.0);
 }

@@ -81,6 +81,8 @@ Renderer::Renderer(const std::filesystem::path& shaderRoot, const atmosphere::Ta
       surfaceLight_(withAtmosphere(sources_, programTables_), "surface light", "render/surface_light.frag"),
       ocean_(sources_, programTables_),
       sky_(sources_, programTables_, gl::ProgramDesc{"sky", {"common/fullscreen.vert", "render/sky.frag"}}),
+      skyUnderWater_(gl::ShaderSources{sources_.root, sources_.preamble + "#define UNDER_WATER 1\n"}, programTables_,
+                     gl::ProgramDesc{"sky (under water)", {"common/fullscreen.vert", "render/sky.frag"}}),
       skySparse_(sources_, programTables_,
                  gl::ProgramDesc{"sky march", {"common/fullscreen.vert", "render/sky_sparse.frag"}}),
       skyTemporal_(sources_, programTables_,
@@ -145,10 +147,16 @@ std::vector<Renderer::Pass> Renderer::makePasses() {
                           glBindTextureUnit(binding::UNIT_SURFACE_RADIANCE, targets_.surfaceRadiance().id());
                           glBindTextureUnit(binding::UNIT_SURFACE_DISTANCE, targets_.surfaceDistance().id());
                           glBindVertexArray(emptyVertexArray_.id());
-                          glUseProgram(sky_.get(s.atmosphere.elek_3d_table, lightShafts(s)).id());
+                          AtmosphereProgram& program = lastPrepare_.underWater ? skyUnderWater_ : sky_;
+                          glUseProgram(program.get(s.atmosphere.elek_3d_table, lightShafts(s)).id());
                           glDrawArrays(GL_TRIANGLES, 0, 3);
                       },
-                      [this] { return sky_.built(); }});
+                      [this] {
+                          std::vector<gl::HotProgram*> p = sky_.built();
+                          const std::vector<gl::HotProgram*> water = skyUnderWater_.built();
+                          p.insert(p.end(), water.begin(), water.end());
+                          return p;
+                      }});
     passes.push_back({{"sky march", {R::SurfaceRadiance}, {R::SparseSky}}, reducedRate,
                       [this](const Scene& s) {
                           const SparseSky& sparse = targets_.sparseSky();
@@ -293,6 +301,7 @@ void Renderer::prepare(const Scene& scene, const Camera& camera, glm::ivec2 size
     sceneKey_ = historyKey(scene);
     report.historyValid = historyUsable(scene, camera, resized);
     const bool inAir = cameraDepthBelowSeaM(scene, camera) <= 0.0;
+    report.underWater = !inAir;
     report.reducedRate = scene.render.temporal && scene.clouds.enabled && inAir &&
                          (report.historyValid || !fullRateOnReset_);
     frameJitterPx_ = temporalAntialiasing_ ? glm::dvec2(subPixelJitter(frameIndex_)) : jitterPx_;
@@ -378,7 +387,7 @@ bool Renderer::matchAtmosphereTables() {
     programTables_ = sizes;
     surfaceLight_.program().setSources(withAtmosphere(sources_, sizes));
     std::vector<gl::HotProgram*> rebuilt{&surfaceLight_.program()};
-    for (AtmosphereProgram* p : {&ocean_.program(), &ocean_.flatMirrorProgram(), &sky_, &skySparse_, &skyTemporal_, &skyTemporalStill_, &skyRefine_}) {
+    for (AtmosphereProgram* p : {&ocean_.program(), &ocean_.flatMirrorProgram(), &sky_, &skyUnderWater_, &skySparse_, &skyTemporal_, &skyTemporalStill_, &skyRefine_}) {
         p->setTableSizes(sizes);
         const std::vector<gl::HotProgram*> built = p->built();
         rebuilt.insert(rebuilt.end(), built.begin(), built.end());

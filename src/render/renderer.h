@@ -111,6 +111,8 @@ struct PrepareReport {
     bool reducedRate = false;            // the sky was marched at the reduced rate (sky march, temporal, refine)
     bool stillFrame = false;             // with a history, nothing moved since it: the reconstruction's
                                          // still-frame program (render/sky_temporal.frag, STILL_FRAME)
+    bool underWater = false;             // the camera under the sea: the full-rate sky pass's water program
+                                         // (render/sky.frag, UNDER_WATER)
 };
 
 class Renderer {
@@ -210,6 +212,7 @@ private:
     FullscreenPass surfaceLight_;
     OceanPass ocean_;
     AtmosphereProgram sky_;
+    AtmosphereProgram skyUnderWater_;  // the same file with UNDER_WATER 1: the camera under the sea
     AtmosphereProgram skySparse_;
     AtmosphereProgram skyTemporal_;
     AtmosphereProgram skyTemporalStill_;  // the same file with STILL_FRAME: frames where nothing moved
