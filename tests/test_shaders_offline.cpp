@@ -49,8 +49,8 @@ TEST(ShadersOffline, EveryStageValidatesWithGlslang) {
             const std::size_t n = variants.size();
             for (std::size_t i = 0; i < n; ++i) variants.push_back(variants[i] + "#define STILL_FRAME\n");
         }
-        // The sky pass's program under water (src/render/renderer.cpp: UNDER_WATER 1).
-        if (expanded.text.find("#if UNDER_WATER") != std::string::npos) {
+        // The programs for a camera under the sea (sky and ocean: UNDER_WATER 1).
+        if (expanded.text.find("#ifndef UNDER_WATER") != std::string::npos) {
             const std::size_t n = variants.size();
             for (std::size_t i = 0; i < n; ++i) variants.push_back(variants[i] + "#define UNDER_WATER 1\n");
         }

@@ -59,6 +59,10 @@ layout(location = 1) out float outSurfaceDistance;
 
 layout(depth_greater) out float gl_FragDepth;  // reversed-Z: only ever moved towards the camera
 
+#ifndef UNDER_WATER
+#define UNDER_WATER 0
+#endif
+
 const float SHORE_FADE_M = 0.5;  // water path over which the sea fades in at the shore
 // Off (0), no foam where the waves break at the shore (tests compare the two).
 #define OCEAN_FOAM 1
@@ -154,9 +158,12 @@ void main() {
     float foam;  // the share of the surface under foam where the waves break
     vec3 normal = oceanNormalAndFoam(up, teOffset, footprint, waterDepth,
                                      OCEAN_FOAM != 0 ? ocean.maxWaveHeight / 0.39 : 0.0, slopeVariance, foam);
-    // Seen from below only when the camera is under the sea: not from gl_FrontFacing, which
-    // also flips on the far side of steep crests at grazing views, where the sea is seen from above.
-    bool fromBelow = frame.cameraDepthBelowSea > 0.0;
+    // Seen from below only when the camera is under the sea (frame.cameraDepthBelowSea > 0: the
+    // program built with UNDER_WATER 1, src/ocean/ocean_pass.cpp): not from gl_FrontFacing, which
+    // also flips on the far side of steep crests at grazing views, where the sea is seen from
+    // above. A program rather than an if: a software renderer runs both sides of an if for every
+    // pixel.
+    const bool fromBelow = UNDER_WATER != 0;
     if (fromBelow) normal = -normal;
     // A normal that faces away from the viewer (grazing views of steep waves) is bent back
     // just enough to face it: the reflection stays above the surface.

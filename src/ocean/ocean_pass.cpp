@@ -8,6 +8,7 @@
 #include "ocean/ocean_gpu.h"
 #include "ocean/land_cull.h"
 #include "render/bindings.h"
+#include "render/frame_uniforms.h"
 
 namespace planet {
 
@@ -24,7 +25,9 @@ gl::ProgramDesc oceanProgram(std::string name) {
 OceanPass::OceanPass(const gl::ShaderSources& sources, const atmosphere::TableSizes& tables)
     : program_(sources, tables, oceanProgram("ocean")),
       flatMirrorProgram_(gl::ShaderSources{sources.root, sources.preamble + "#define OCEAN_FLAT_MIRROR 1\n"}, tables,
-                         oceanProgram("ocean (flat mirror)")) {
+                         oceanProgram("ocean (flat mirror)")),
+      underWaterProgram_(gl::ShaderSources{sources.root, sources.preamble + "#define UNDER_WATER 1\n"}, tables,
+                         oceanProgram("ocean (under water)")) {
     waves_.label("ocean waves");
     glNamedBufferStorage(block_.id(), sizeof(ocean::OceanBlock), nullptr, GL_DYNAMIC_STORAGE_BIT);
     block_.label("OceanBlock");
@@ -71,6 +74,7 @@ void OceanPass::prepare(const Scene& scene, const Camera& camera, double radians
     block.continentLipschitz = static_cast<float>(lipschitz_);
     block.landCulling = landCulling_ && landContinent_ <= 1.0 ? 1 : 0;
     glNamedBufferSubData(block_.id(), 0, sizeof block, &block);
+    underWater_ = cameraDepthBelowSeaM(scene, camera) > 0.0;  // as the frame's (render/frame_uniforms.h)
     const double height = glm::length(camera.position) - radius;
     flatMirror_ = flatMirrorMode_ == FlatMirror::Auto
                       ? ocean::seaIsAFlatMirror(scene.waves, height, radiansPerPixel,
@@ -80,8 +84,10 @@ void OceanPass::prepare(const Scene& scene, const Camera& camera, double radians
 
 std::vector<gl::HotProgram*> OceanPass::programs() {
     std::vector<gl::HotProgram*> p = program_.built();
-    const std::vector<gl::HotProgram*> flat = flatMirrorProgram_.built();
-    p.insert(p.end(), flat.begin(), flat.end());
+    for (AtmosphereProgram* other : {&flatMirrorProgram_, &underWaterProgram_}) {
+        const std::vector<gl::HotProgram*> built = other->built();
+        p.insert(p.end(), built.begin(), built.end());
+    }
     return p;
 }
 
@@ -92,7 +98,8 @@ void OceanPass::draw(bool elekTable) {
     glDepthFunc(GL_GREATER);  // reversed-Z
     glDepthMask(GL_TRUE);
     glDisable(GL_CULL_FACE);  // the surface is seen from below too
-    glUseProgram((flatMirror_ ? flatMirrorProgram_ : program_).get(elekTable).id());
+    AtmosphereProgram& program = underWater_ ? underWaterProgram_ : flatMirror_ ? flatMirrorProgram_ : program_;
+    glUseProgram(program.get(elekTable).id());
     if (countPrimitives_) glBeginQuery(GL_PRIMITIVES_GENERATED, primitives_.id());
     mesh_.draw();
     if (countPrimitives_) {

@@ -9,7 +9,8 @@
 //   ocean.tese   grid -> sea sphere direction (double) -> Eq. 8 displacement (in shallow water
 //                each wave no higher than 0.78 x depth) -> camera-relative position
 //   ocean.frag   fragments under land or behind the terrain discarded first (cheap tests that
-//                give the same pixels), then Eq. 10 normal per pixel, Fresnel sky reflection
+//                give the same pixels), then Eq. 10 normal per pixel (from below, with the camera
+//                under the sea: a program of its own, UNDER_WATER), Fresnel sky reflection
 //                (the reflected ray marched through the clouds, or from high up the clear sky plus
 //                the grid's change for the clouds), sun glitter, water body
 //
@@ -48,7 +49,8 @@ public:
 
     AtmosphereProgram& program() { return program_; }
     AtmosphereProgram& flatMirrorProgram() { return flatMirrorProgram_; }
-    // Both programs' variants built so far, for hot reload.
+    AtmosphereProgram& underWaterProgram() { return underWaterProgram_; }
+    // The programs' variants built so far, for hot reload.
     std::vector<gl::HotProgram*> programs();
 
     // The program with OCEAN_FLAT_MIRROR (the clouds' share of the reflection from the grid's
@@ -76,6 +78,8 @@ private:
 
     AtmosphereProgram program_;
     AtmosphereProgram flatMirrorProgram_;  // the same files with OCEAN_FLAT_MIRROR 1
+    AtmosphereProgram underWaterProgram_;  // with UNDER_WATER 1: the camera under the sea, the surface seen from below
+    bool underWater_ = false;
     FlatMirror flatMirrorMode_ = FlatMirror::Auto;
     bool flatMirror_ = false;
     GridMesh mesh_{"ocean"};

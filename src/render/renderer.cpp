@@ -387,7 +387,7 @@ bool Renderer::matchAtmosphereTables() {
     programTables_ = sizes;
     surfaceLight_.program().setSources(withAtmosphere(sources_, sizes));
     std::vector<gl::HotProgram*> rebuilt{&surfaceLight_.program()};
-    for (AtmosphereProgram* p : {&ocean_.program(), &ocean_.flatMirrorProgram(), &sky_, &skyUnderWater_, &skySparse_, &skyTemporal_, &skyTemporalStill_, &skyRefine_}) {
+    for (AtmosphereProgram* p : {&ocean_.program(), &ocean_.flatMirrorProgram(), &ocean_.underWaterProgram(), &sky_, &skyUnderWater_, &skySparse_, &skyTemporal_, &skyTemporalStill_, &skyRefine_}) {
         p->setTableSizes(sizes);
         const std::vector<gl::HotProgram*> built = p->built();
         rebuilt.insert(rebuilt.end(), built.begin(), built.end());
