@@ -135,7 +135,8 @@ namespace {
 // is found by selecting the face of a point a quarter texel beyond the edge: its position
 // along the edge moves by under a quarter texel when projected onto the neighbour, and a
 // texel centre is half a texel from its texel's boundary.
-const glm::vec4* seamlessTexel(const CubeMap& map, int face, int i, int j) {
+template <class Texel>
+const Texel* seamlessTexel(const CubeMapOf<Texel>& map, int face, int i, int j) {
     const int n = map.size;
     const bool insideI = i >= 0 && i < n, insideJ = j >= 0 && j < n;
     if (insideI && insideJ) return &map.at(face, i, j);
@@ -149,9 +150,11 @@ const glm::vec4* seamlessTexel(const CubeMap& map, int face, int i, int j) {
     return &map.at(other, index(s), index(t));
 }
 
-}  // namespace
-
-glm::vec4 sampleContinents(const CubeMap& map, glm::dvec3 direction) {
+// The bilinear, seamless filter of sampleContinents, for a map of any texel type (a glm
+// vector of floats); computed in double.
+template <class Texel>
+Texel sampleSeamless(const CubeMapOf<Texel>& map, glm::dvec3 direction) {
+    using Double = glm::vec<Texel::length(), double>;
     double s = 0.0, t = 0.0;
     const int face = cubeFaceOf(direction, s, t);
     const int n = map.size;
@@ -161,22 +164,29 @@ glm::vec4 sampleContinents(const CubeMap& map, glm::dvec3 direction) {
     const int i = static_cast<int>(fu), j = static_cast<int>(fv);
     // Taps (i, j), (i+1, j), (i, j+1), (i+1, j+1); at most one is missing (beyond a corner),
     // and it becomes the mean of the other three.
-    const glm::vec4* taps[4] = {seamlessTexel(map, face, i, j), seamlessTexel(map, face, i + 1, j),
-                                seamlessTexel(map, face, i, j + 1), seamlessTexel(map, face, i + 1, j + 1)};
-    glm::dvec4 value[4], sum(0.0);
+    const Texel* taps[4] = {seamlessTexel(map, face, i, j), seamlessTexel(map, face, i + 1, j),
+                            seamlessTexel(map, face, i, j + 1), seamlessTexel(map, face, i + 1, j + 1)};
+    Double value[4], sum(0.0);
     int missing = -1;
     for (int k = 0; k < 4; ++k) {
         if (taps[k]) {
-            value[k] = glm::dvec4(*taps[k]);
+            value[k] = Double(*taps[k]);
             sum += value[k];
         } else {
             missing = k;
         }
     }
     if (missing >= 0) value[missing] = sum / 3.0;
-    const glm::dvec4 top = (1.0 - wx) * value[0] + wx * value[1];
-    const glm::dvec4 bottom = (1.0 - wx) * value[2] + wx * value[3];
-    return glm::vec4((1.0 - wy) * top + wy * bottom);
+    const Double top = (1.0 - wx) * value[0] + wx * value[1];
+    const Double bottom = (1.0 - wx) * value[2] + wx * value[3];
+    return Texel((1.0 - wy) * top + wy * bottom);
+}
+
+}  // namespace
+
+glm::vec4 sampleContinents(const CubeMap& map, glm::dvec3 direction) { return sampleSeamless(map, direction); }
+glm::vec2 sampleCubeMap(const CubeMapOf<glm::vec2>& map, glm::dvec3 direction) {
+    return sampleSeamless(map, direction);
 }
 
 double seaFractionOf(const CubeMap& map) {

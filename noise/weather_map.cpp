@@ -59,9 +59,9 @@ float latitudeDegOf(glm::dvec3 d) { return static_cast<float>(glm::degrees(std::
 
 }  // namespace
 
-CubeMap bakeWeatherMap(const WeatherParams& params, int faceSize, const BakeProgress& progress) {
+WeatherMap bakeWeatherMap(const WeatherParams& params, int faceSize, const BakeProgress& progress) {
     validate(params, faceSize);
-    CubeMap map;
+    WeatherMap map;
     map.size = faceSize;
     map.texels.resize(6 * static_cast<std::size_t>(faceSize) * static_cast<std::size_t>(faceSize));
 
@@ -80,7 +80,7 @@ CubeMap bakeWeatherMap(const WeatherParams& params, int faceSize, const BakeProg
                 const glm::vec3 warp(fbm(0.5f * q + warpA, 3), fbm(0.5f * q + warpB, 3), fbm(0.5f * q + warpC, 3));
                 const float raw = fbm(q + 1.0f * warp, params.octaves) + bands * latitudeBand(latitudeDegOf(d));
                 const float typeNoise = fbm(1.5f * frequency * glm::vec3(d) + typeOffset, 4);
-                map.at(face, x, y) = glm::vec4(raw, typeNoise, 0.0f, 0.0f);
+                map.at(face, x, y) = glm::vec2(raw, typeNoise);
             }
         },
         progress, 0.0, 0.9);
@@ -102,7 +102,7 @@ CubeMap bakeWeatherMap(const WeatherParams& params, int faceSize, const BakeProg
         return sum / total;
     };
     const auto [lowest, highest] = std::minmax_element(map.texels.begin(), map.texels.end(),
-                                                       [](const glm::vec4& a, const glm::vec4& b) { return a.x < b.x; });
+                                                       [](const glm::vec2& a, const glm::vec2& b) { return a.x < b.x; });
     // At lo every texel is 1 (0.5 + k (raw - lo) >= 1), at hi every texel 0.
     float lo = lowest->x - 1.0f / kContrast, hi = highest->x + 1.0f / kContrast;
     if (params.coverage <= 0.0) lo = hi;
@@ -118,24 +118,21 @@ CubeMap bakeWeatherMap(const WeatherParams& params, int faceSize, const BakeProg
     for (int f = 0; f < 6; ++f)
         for (int y = 0; y < faceSize; ++y)
             for (int x = 0; x < faceSize; ++x) {
-                glm::vec4& t = map.at(f, x, y);
+                glm::vec2& t = map.at(f, x, y);
                 const float coverage = coverageFrom(t.x, shift);
                 const float lat = std::abs(latitudeDegOf(cubeTexelDirection(f, x, y, faceSize)));
                 const float type = std::clamp(0.5f + 0.8f * t.y - 0.35f * glm::smoothstep(0.7f, 1.0f, coverage) +
                                                   0.4f * gauss(lat, 50.0f, 15.0f) * (1.0f - coverage),
                                               0.0f, 1.0f);
-                t = glm::vec4(static_cast<float>(Imath::half(coverage)), static_cast<float>(Imath::half(type)), 0.0f, 0.0f);
+                t = glm::vec2(static_cast<float>(Imath::half(coverage)), static_cast<float>(Imath::half(type)));
             }
     if (progress) progress(1.0);
     return map;
 }
 
-glm::vec2 sampleWeather(const CubeMap& map, glm::dvec3 direction) {
-    const glm::vec4 v = sampleContinents(map, direction);
-    return {v.x, v.y};
-}
+glm::vec2 sampleWeather(const WeatherMap& map, glm::dvec3 direction) { return sampleCubeMap(map, direction); }
 
-double meanCoverageOf(const CubeMap& map) {
+double meanCoverageOf(const WeatherMap& map) {
     double sum = 0.0, total = 0.0;
     for (int y = 0; y < map.size; ++y)
         for (int x = 0; x < map.size; ++x) {
@@ -161,9 +158,9 @@ CacheFields checkedFields(int faceSize) {
 }
 
 // One image, the faces stacked, with two channels over the texels' x and y.
-std::vector<CacheImage> weatherImages(CubeMap& map) {
+std::vector<CacheImage> weatherImages(WeatherMap& map) {
     float* base = &map.texels.front().x;
-    return {{kWeatherFile, map.size, 6 * map.size, {{"coverage", base, sizeof(glm::vec4)}, {"type", base + 1, sizeof(glm::vec4)}}}};
+    return {{kWeatherFile, map.size, 6 * map.size, {{"coverage", base, sizeof(glm::vec2)}, {"type", base + 1, sizeof(glm::vec2)}}}};
 }
 
 }  // namespace
@@ -183,7 +180,7 @@ std::string weatherMapCacheKey(const WeatherParams& p, int faceSize) {
     return hex16(h.value());
 }
 
-void saveWeatherMap(const CubeMap& map, const WeatherParams& p, const fs::path& dir, const std::string& key) {
+void saveWeatherMap(const WeatherMap& map, const WeatherParams& p, const fs::path& dir, const std::string& key) {
     if (map.size < 1 || map.texels.size() != 6 * static_cast<std::size_t>(map.size) * static_cast<std::size_t>(map.size))
         throw FileError("saveWeatherMap: the map's texels do not match its size");
     CacheFields fields = checkedFields(map.size);
@@ -192,23 +189,23 @@ void saveWeatherMap(const CubeMap& map, const WeatherParams& p, const fs::path& 
                                  {"frequency", exactText(p.frequency)},
                                  {"octaves", std::to_string(p.octaves)},
                                  {"latitude_bands", exactText(p.latitudeBands)}});
-    writeCacheEntry(dir, kWeatherFormat, key, fields, weatherImages(const_cast<CubeMap&>(map)));
+    writeCacheEntry(dir, kWeatherFormat, key, fields, weatherImages(const_cast<WeatherMap&>(map)));
 }
 
-std::optional<CubeMap> loadWeatherMap(const fs::path& dir, const std::string& expectedKey, int faceSize,
+std::optional<WeatherMap> loadWeatherMap(const fs::path& dir, const std::string& expectedKey, int faceSize,
                                       std::string* reason) {
-    auto reject = [&](const std::string& why) -> std::optional<CubeMap> {
+    auto reject = [&](const std::string& why) -> std::optional<WeatherMap> {
         if (reason) *reason = why;
         return std::nullopt;
     };
     if (faceSize < 4 || faceSize > 4096) return reject("face size " + std::to_string(faceSize) + " is outside [4, 4096]");
-    CubeMap map;
+    WeatherMap map;
     map.size = faceSize;
-    map.texels.assign(6 * static_cast<std::size_t>(faceSize) * static_cast<std::size_t>(faceSize), glm::vec4(0.0f));
+    map.texels.assign(6 * static_cast<std::size_t>(faceSize) * static_cast<std::size_t>(faceSize), glm::vec2(0.0f));
     if (!readCacheEntry(dir, kWeatherFormat, expectedKey, checkedFields(faceSize), weatherImages(map), reason))
         return std::nullopt;
     for (std::size_t i = 0; i < map.texels.size(); ++i) {
-        const glm::vec4 t = map.texels[i];
+        const glm::vec2 t = map.texels[i];
         if (!(t.x >= 0.0f && t.x <= 1.0f && t.y >= 0.0f && t.y <= 1.0f))
             return reject(quote(dir / kWeatherFile) + ": texel " + std::to_string(i) + " has coverage " + std::to_string(t.x) + " and type " +
                           std::to_string(t.y) + ", not both in [0, 1]");
@@ -216,7 +213,7 @@ std::optional<CubeMap> loadWeatherMap(const fs::path& dir, const std::string& ex
     return map;
 }
 
-CubeMap loadOrBakeWeatherMap(const WeatherParams& params, int faceSize, const fs::path& root, const BakeProgress& progress) {
+WeatherMap loadOrBakeWeatherMap(const WeatherParams& params, int faceSize, const fs::path& root, const BakeProgress& progress) {
     validate(params, faceSize);
     const std::string key = weatherMapCacheKey(params, faceSize);
     const fs::path dir = root / ("weather-" + key);
@@ -224,7 +221,7 @@ CubeMap loadOrBakeWeatherMap(const WeatherParams& params, int faceSize, const fs
         "weather map", std::to_string(faceSize) + "^2 x 6 texels, seed " + std::to_string(params.seed), dir,
         [&](std::string* reason) { return loadWeatherMap(dir, key, faceSize, reason); },
         [&] { return bakeWeatherMap(params, faceSize, alsoLogged(progress)); },
-        [&](const CubeMap& map) { saveWeatherMap(map, params, dir, key); });
+        [&](const WeatherMap& map) { saveWeatherMap(map, params, dir, key); });
 }
 
 }  // namespace planet::noise

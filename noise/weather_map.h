@@ -6,9 +6,9 @@
 // scale (Schneider 2015's weather texture, made spherical): per direction a coverage, so
 // that from orbit clouds form fields, fronts and clear zones, and a cloud type.
 //
-// Layout: noise/continents.h's CubeMap (faces in OpenGL's order and orientation, texel (x, y)
-// of face f at texels[(f * size + y) * size + x]), reused so that sampleContinents' seamless
-// bilinear filtering serves as the CPU sampler; a texel is
+// Layout: noise/continents.h's cube map (CubeMapOf: faces in OpenGL's order and orientation,
+// texel (x, y) of face f at texels[(f * size + y) * size + x]) with two channels a texel, so
+// that the continents' seamless bilinear filtering serves as the CPU sampler; a texel is
 //   x  coverage in [0, 1]: the share of the volume's clouds kept there (0 clear, 1 overcast);
 //   y  cloud type in [0, 1]:
 //        0    stratus: a low, flat, even layer;
@@ -60,6 +60,9 @@ namespace planet::noise {
 // Bump when the bake (not the noise: that is fingerprinted) changes what it produces.
 constexpr int kWeatherMapVersion = 1;
 
+// The map on the CPU: coverage (x) and type (y) per texel.
+using WeatherMap = CubeMapOf<glm::vec2>;
+
 struct WeatherParams {
     int seed = 1;                 // any int; picks the noise domain (seedOffset stream 2)
     double coverage = 0.5;        // mean coverage over the sphere (by solid angle), [0, 1]
@@ -71,26 +74,26 @@ struct WeatherParams {
 
 // Bakes the map (see the file header) on all cores. faceSize in [4, 4096]; throws
 // std::invalid_argument for that or a parameter out of its range.
-CubeMap bakeWeatherMap(const WeatherParams& params, int faceSize, const BakeProgress& progress = {});
+WeatherMap bakeWeatherMap(const WeatherParams& params, int faceSize, const BakeProgress& progress = {});
 
 // Coverage (x) and type (y) at `direction` (need not be unit length, must not be zero), with
 // the seamless bilinear filtering of a samplerCube (sampleContinents).
-glm::vec2 sampleWeather(const CubeMap& map, glm::dvec3 direction);
+glm::vec2 sampleWeather(const WeatherMap& map, glm::dvec3 direction);
 
 // The solid-angle-weighted mean coverage over the sphere.
-double meanCoverageOf(const CubeMap& map);
+double meanCoverageOf(const WeatherMap& map);
 
 // 16 hex digits: FNV-1a of kWeatherMapVersion, a noise fingerprint, params and faceSize.
 std::string weatherMapCacheKey(const WeatherParams& params, int faceSize);
 
 // Writes weather_map.exr and key.txt into `dir` atomically. Throws FileError.
-void saveWeatherMap(const CubeMap& map, const WeatherParams& params, const std::filesystem::path& dir,
+void saveWeatherMap(const WeatherMap& map, const WeatherParams& params, const std::filesystem::path& dir,
                     const std::string& key);
 
 // The map stored in `dir` if key.txt names `expectedKey`, this version and faceSize, the
 // EXR's checksum matches, OpenEXR reads it, its header key and size match, it has both HALF
 // channels and every value is in [0, 1]; otherwise nullopt with the reason in *reason.
-std::optional<CubeMap> loadWeatherMap(const std::filesystem::path& dir, const std::string& expectedKey, int faceSize,
+std::optional<WeatherMap> loadWeatherMap(const std::filesystem::path& dir, const std::string& expectedKey, int faceSize,
                                       std::string* reason = nullptr);
 
 // The map at run time: from the cache under `root` (<root>/weather-<key>/, root normally
@@ -98,7 +101,7 @@ std::optional<CubeMap> loadWeatherMap(const std::filesystem::path& dir, const st
 // time) and saved there; an unusable entry is reported and rebaked, an unwritable cache
 // reported. Throws std::invalid_argument for parameters out of range.
 // `progress`, when given, is told the bake's progress too.
-CubeMap loadOrBakeWeatherMap(const WeatherParams& params, int faceSize, const std::filesystem::path& root,
+WeatherMap loadOrBakeWeatherMap(const WeatherParams& params, int faceSize, const std::filesystem::path& root,
                              const BakeProgress& progress = {});
 
 }  // namespace planet::noise

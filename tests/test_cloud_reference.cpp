@@ -129,7 +129,7 @@ struct CpuData {
                                               .tables;
     noise::CloudVolume volume =
         noise::loadOrBakeCloudVolume(volumeParamsOf(scene.clouds), noise::defaultCloudCacheRoot());
-    noise::CubeMap weather = noise::loadOrBakeWeatherMap(weatherParamsOf(scene.clouds), scene.clouds.weather_map_size,
+    noise::WeatherMap weather = noise::loadOrBakeWeatherMap(weatherParamsOf(scene.clouds), scene.clouds.weather_map_size,
                                                          noise::defaultCloudCacheRoot());
 };
 const CpuData& cpuData() {

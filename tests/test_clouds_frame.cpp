@@ -154,7 +154,7 @@ TEST_F(CloudFrame, FromSpaceTheCloudsHideWhatTheWeatherMapCovers) {
     const clouds::CloudBlock block =
         clouds::makeCloudBlock(vacuum, camera, textures.largeStepKm(vacuum.clouds.tile_width_km), vacuum.clouds.volume_size,
                                1.0);  // a radian a pixel: the far field everywhere
-    const noise::CubeMap map =
+    const noise::WeatherMap map =
         noise::loadOrBakeWeatherMap(clouds::weatherParamsOf(vacuum.clouds), 64, noise::defaultCloudCacheRoot());
 
     std::mt19937 rng(5);

@@ -24,8 +24,8 @@ namespace {
 
 constexpr int kSize = 48;
 
-const noise::CubeMap& bakedDefault() {
-    static const noise::CubeMap map = noise::bakeWeatherMap({}, kSize);
+const noise::WeatherMap& bakedDefault() {
+    static const noise::WeatherMap map = noise::bakeWeatherMap({}, kSize);
     return map;
 }
 
@@ -33,7 +33,7 @@ const noise::CubeMap& bakedDefault() {
 
 // The change of coverage between two neighbouring texels of a face that all but a thousandth of
 // the pairs stay under.
-float coverageStepAtP999(const noise::CubeMap& map) {
+float coverageStepAtP999(const noise::WeatherMap& map) {
     std::vector<float> steps;
     for (int f = 0; f < 6; ++f)
         for (int y = 0; y + 1 < map.size; ++y)
@@ -55,7 +55,7 @@ TEST(WeatherMap, TheDefaultMapResolvesTheEdgesOfItsFields) {
     // (measured: 0.167 at 1024 per face; 0.298 at 512, 0.501 at 256). From the cache the GL
     // tests share.
     const CloudParams defaults;
-    const noise::CubeMap map = noise::loadOrBakeWeatherMap(clouds::weatherParamsOf(defaults),
+    const noise::WeatherMap map = noise::loadOrBakeWeatherMap(clouds::weatherParamsOf(defaults),
                                                            defaults.weather_map_size, noise::defaultCloudCacheRoot());
     const float step = coverageStepAtP999(map);
     std::printf("weather map %d per face: coverage step between neighbours, 99.9th percentile %.3f\n", map.size,
@@ -67,7 +67,7 @@ TEST(WeatherMap, MeanCoverageOverTheSphereFollowsTheParameter) {
     for (const double coverage : {0.1, 0.3, 0.5, 0.7, 0.9}) {
         noise::WeatherParams p;
         p.coverage = coverage;
-        const noise::CubeMap map = noise::bakeWeatherMap(p, kSize);
+        const noise::WeatherMap map = noise::bakeWeatherMap(p, kSize);
         // Solid-angle weighted, and by an independent Monte Carlo over directions.
         EXPECT_NEAR(noise::meanCoverageOf(map), coverage, 2.0e-3) << coverage;
         std::mt19937 rng(3);
@@ -78,7 +78,7 @@ TEST(WeatherMap, MeanCoverageOverTheSphereFollowsTheParameter) {
         EXPECT_NEAR(sum / samples, coverage, 0.02) << coverage;
         // Somewhere clear and somewhere overcast: fields, not a uniform haze.
         int clear = 0, overcast = 0;
-        for (const glm::vec4& t : map.texels) {
+        for (const glm::vec2& t : map.texels) {
             ASSERT_TRUE(t.x >= 0.0f && t.x <= 1.0f && t.y >= 0.0f && t.y <= 1.0f);
             clear += t.x == 0.0f;
             overcast += t.x == 1.0f;
@@ -92,8 +92,8 @@ TEST(WeatherMap, CoverageZeroIsClearEverywhereAndOneOvercast) {
     for (const double coverage : {0.0, 1.0}) {
         noise::WeatherParams p;
         p.coverage = coverage;
-        const noise::CubeMap map = noise::bakeWeatherMap(p, 16);
-        for (const glm::vec4& t : map.texels) ASSERT_EQ(t.x, static_cast<float>(coverage));
+        const noise::WeatherMap map = noise::bakeWeatherMap(p, 16);
+        for (const glm::vec2& t : map.texels) ASSERT_EQ(t.x, static_cast<float>(coverage));
     }
 }
 
@@ -105,7 +105,7 @@ TEST(WeatherMap, SubtropicsAreClearerThanTheStormTracks) {
         noise::WeatherParams p;
         p.seed = seed;
         p.latitudeBands = 1.0;
-        const noise::CubeMap map = noise::bakeWeatherMap(p, kSize);
+        const noise::WeatherMap map = noise::bakeWeatherMap(p, kSize);
         for (int f = 0; f < 6; ++f)
             for (int y = 0; y < kSize; ++y)
                 for (int x = 0; x < kSize; ++x) {
@@ -129,7 +129,7 @@ TEST(WeatherMap, SubtropicsAreClearerThanTheStormTracks) {
 
 TEST(WeatherMap, AllThreeCloudTypesOccur) {
     double stratus = 0.0, cumulus = 0.0, high = 0.0;
-    for (const glm::vec4& t : bakedDefault().texels) {
+    for (const glm::vec2& t : bakedDefault().texels) {
         stratus += t.y < 0.25f;
         cumulus += t.y >= 0.25f && t.y <= 0.75f;
         high += t.y > 0.75f;
@@ -144,7 +144,7 @@ TEST(WeatherMap, AllThreeCloudTypesOccur) {
 TEST(WeatherMap, IsContinuousAcrossCubeEdges) {
     // (a) The baked field: texels that share a cube edge differ no more than neighbours inside
     // a face (a face baked with a wrong orientation would make the edge a seam).
-    const noise::CubeMap& map = bakedDefault();
+    const noise::WeatherMap& map = bakedDefault();
     double across = 0.0, inside = 0.0;
     int acrossCount = 0, insideCount = 0;
     for (int f = 0; f < 6; ++f)
@@ -156,7 +156,7 @@ TEST(WeatherMap, IsContinuousAcrossCubeEdges) {
             double s = 0.0, t = 0.0;
             const int g = noise::cubeFaceOf(beyond, s, t);
             ASSERT_NE(g, f);
-            const glm::vec4 other = map.at(g, std::clamp(int(s * kSize), 0, kSize - 1), std::clamp(int(t * kSize), 0, kSize - 1));
+            const glm::vec2 other = map.at(g, std::clamp(int(s * kSize), 0, kSize - 1), std::clamp(int(t * kSize), 0, kSize - 1));
             across += std::abs(other.x - map.at(f, kSize - 1, i).x);
             ++acrossCount;
             inside += std::abs(map.at(f, kSize - 2, i).x - map.at(f, kSize - 1, i).x);
@@ -186,7 +186,7 @@ TEST(WeatherMap, IsContinuousAcrossCubeEdges) {
 }
 
 TEST(WeatherMap, SamplerReturnsTexelsAtTheirCentres) {
-    const noise::CubeMap& map = bakedDefault();
+    const noise::WeatherMap& map = bakedDefault();
     for (int f = 0; f < 6; ++f) {
         const glm::vec2 w = noise::sampleWeather(map, noise::cubeTexelDirection(f, 7, 30, kSize));
         EXPECT_NEAR(w.x, map.at(f, 7, 30).x, 1e-5);
@@ -195,11 +195,11 @@ TEST(WeatherMap, SamplerReturnsTexelsAtTheirCentres) {
 }
 
 TEST(WeatherMap, SameSeedSameMapAnotherSeedAnotherMap) {
-    const noise::CubeMap again = noise::bakeWeatherMap({}, kSize);
+    const noise::WeatherMap again = noise::bakeWeatherMap({}, kSize);
     EXPECT_EQ(again.texels, bakedDefault().texels);
     noise::WeatherParams other;
     other.seed = 7;
-    const noise::CubeMap different = noise::bakeWeatherMap(other, kSize);
+    const noise::WeatherMap different = noise::bakeWeatherMap(other, kSize);
     double difference = 0.0;
     for (std::size_t i = 0; i < different.texels.size(); ++i)
         difference += std::abs(different.texels[i].x - bakedDefault().texels[i].x);
@@ -226,10 +226,10 @@ TEST(WeatherMap, CacheRoundTripsAndRejectsDamageWithAReasonThenRebakes) {
     const noise::WeatherParams p;
     const std::string key = noise::weatherMapCacheKey(p, kSize);
     const fs::path dir = root / ("weather-" + key);
-    const noise::CubeMap baked = noise::loadOrBakeWeatherMap(p, kSize, root);
+    const noise::WeatherMap baked = noise::loadOrBakeWeatherMap(p, kSize, root);
     EXPECT_EQ(baked.texels, bakedDefault().texels);
     std::string reason;
-    const std::optional<noise::CubeMap> loaded = noise::loadWeatherMap(dir, key, kSize, &reason);
+    const std::optional<noise::WeatherMap> loaded = noise::loadWeatherMap(dir, key, kSize, &reason);
     ASSERT_TRUE(loaded) << reason;
     EXPECT_EQ(loaded->texels, baked.texels);
     EXPECT_FALSE(noise::loadWeatherMap(dir, key, 32, &reason));

@@ -71,7 +71,7 @@ ImageRGBA8 previewImage(const noise::CubeMap& map) {
 
 // Equirectangular like previewImage: the weather map's coverage as brightness over a dark
 // blue sea, tinted by the cloud type (stratus grey-blue, cumulus white, high cloud amber).
-ImageRGBA8 weatherPreview(const noise::CubeMap& map) {
+ImageRGBA8 weatherPreview(const noise::WeatherMap& map) {
     ImageRGBA8 image;
     image.width = kPreviewWidth;
     image.height = kPreviewHeight;
@@ -203,11 +203,11 @@ void bakeCloudsFor(const BakeOptions& options, const Scene& scene) {
     std::cout << "planet bake: weather map, 6 faces of " << size << "x" << size << ", seed " << w.seed << ", frequency "
               << w.frequency << ", latitude bands " << w.latitudeBands << "\n";
     std::cout.flush();
-    const noise::CubeMap map = loadOrMake(
+    const noise::WeatherMap map = loadOrMake(
         weatherDir, options.force,
         [&](std::string* reason) { return noise::loadWeatherMap(weatherDir, weatherKey, size, reason); },
         [&] { return noise::bakeWeatherMap(w, size, noise::logBakeProgress()); },
-        [&](const noise::CubeMap& baked) { noise::saveWeatherMap(baked, w, weatherDir, weatherKey); }, {}, &outcome);
+        [&](const noise::WeatherMap& baked) { noise::saveWeatherMap(baked, w, weatherDir, weatherKey); }, {}, &outcome);
     reportCacheStep("weather map", weatherDir, outcome);
     char mean[96];
     std::snprintf(mean, sizeof mean, "weather map: mean coverage %.4f (by solid angle; the layer's coverage scales it)\n",

@@ -170,7 +170,7 @@ std::vector<ProbeResult> probeCloudsOnCpu(const std::vector<ProbeRow>& rows, con
                                           const AtmosphereParameters& params, const AtmosphereTables& tables) {
     const CloudParams& c = scene.clouds;
     std::optional<noise::CloudVolume> volume;
-    std::optional<noise::CubeMap> weather;
+    std::optional<noise::WeatherMap> weather;
     if (!c.constant_density) {
         const fs::path root = noise::defaultCloudCacheRoot();
         volume = noise::loadOrBakeCloudVolume(clouds::volumeParamsOf(c), root);

@@ -41,7 +41,7 @@ CloudBlockDouble widen(const CloudBlock& b) {
 
 CloudMarchModel::CloudMarchModel(const AtmosphereParameters& atmosphere, const atmosphere::AtmosphereTables& tables,
                                  const CloudBlock& block, const noise::CloudVolume* volume,
-                                 const std::vector<noise::CloudVolume>* volumeMips, const noise::CubeMap* weather)
+                                 const std::vector<noise::CloudVolume>* volumeMips, const noise::WeatherMap* weather)
     : Model(tables.sizes),
       clouds(widen(block)),
       cloudVolume{volume, volumeMips},
@@ -131,7 +131,7 @@ double largeStepKmOf(const CloudParams& c) {
 
 CloudReference::CloudReference(const atmosphere::AtmosphereParameters& atmosphere,
                                const atmosphere::AtmosphereTables& tables, const noise::CloudVolume* volume,
-                               const noise::CubeMap* weather, int mipLevels)
+                               const noise::WeatherMap* weather, int mipLevels)
     : atmosphere_(atmosphere),
       tables_(tables),
       volume_(volume),

@@ -82,7 +82,7 @@ struct VolumeSampler {
     const std::vector<noise::CloudVolume>* mips = nullptr;  // levels 1, 2, ... (noise::cloudVolumeMips)
 };
 struct WeatherSampler {
-    const noise::CubeMap* map = nullptr;
+    const noise::WeatherMap* map = nullptr;
 };
 
 // The GLSL globals and the shared march, in double (see the file header). Cheap to make:
@@ -91,7 +91,7 @@ class CloudMarchModel : public atmosphere::glsl::Model {
 public:
     CloudMarchModel(const AtmosphereParameters& atmosphere, const atmosphere::AtmosphereTables& tables,
                     const CloudBlock& block, const noise::CloudVolume* volume,
-                    const std::vector<noise::CloudVolume>* volumeMips, const noise::CubeMap* weather);
+                    const std::vector<noise::CloudVolume>* volumeMips, const noise::WeatherMap* weather);
 
     // clouds/cloud_block.glsl
     CloudBlockDouble clouds;
@@ -132,7 +132,7 @@ public:
     // `mipLevels` of the volume are read where a pixel spans voxels, as the GL texture has
     // them (1: level 0 alone).
     CloudReference(const atmosphere::AtmosphereParameters& atmosphere, const atmosphere::AtmosphereTables& tables,
-                   const noise::CloudVolume* volume, const noise::CubeMap* weather,
+                   const noise::CloudVolume* volume, const noise::WeatherMap* weather,
                    int mipLevels = noise::kCloudVolumeMipLevels);
 
     // MarchView as cloud_probe.comp calls it, for one ray with `block` as the CloudBlock.
@@ -146,7 +146,7 @@ private:
     const atmosphere::AtmosphereTables& tables_;
     const noise::CloudVolume* volume_;
     std::vector<noise::CloudVolume> volumeMips_;  // the GL texture's mip levels 1, 2, 3
-    const noise::CubeMap* weather_;
+    const noise::WeatherMap* weather_;
 };
 
 }  // namespace planet::clouds

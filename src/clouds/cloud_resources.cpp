@@ -61,19 +61,11 @@ gl::Texture makeVolumeTexture(const noise::CloudVolume& volume) {
 }
 
 // The weather map as a seamless cube map, RG16F (coverage, type).
-gl::Texture makeWeatherTexture(const noise::CubeMap& map) {
+gl::Texture makeWeatherTexture(const noise::WeatherMap& map) {
     gl::Texture t(GL_TEXTURE_CUBE_MAP);
     const int n = map.size;
     glTextureStorage2D(t.id(), 1, GL_RG16F, n, n);
-    std::vector<float> rg(2 * static_cast<std::size_t>(n) * n);
-    for (int face = 0; face < 6; ++face) {
-        for (std::size_t i = 0; i < rg.size() / 2; ++i) {
-            const glm::vec4& texel = map.texels[static_cast<std::size_t>(face) * n * n + i];
-            rg[2 * i] = texel.x;
-            rg[2 * i + 1] = texel.y;
-        }
-        glTextureSubImage3D(t.id(), 0, 0, 0, face, n, n, 1, GL_RG, GL_FLOAT, rg.data());
-    }
+    glTextureSubImage3D(t.id(), 0, 0, 0, 0, n, n, 6, GL_RG, GL_FLOAT, map.texels.data());  // the faces in GL's order
     setFilters(t, GL_CLAMP_TO_EDGE);
     t.label("weather map " + std::to_string(n) + "^2 x 6");
     return t;

@@ -77,7 +77,7 @@ private:
         noise::WeatherParams weatherParams;
         int weatherSize = 0;
         std::optional<noise::CloudVolume> volume;  // absent when only the weather changed
-        std::optional<noise::CubeMap> weather;
+        std::optional<noise::WeatherMap> weather;
     };
     Baked bake(const CloudParams& clouds, const std::shared_ptr<std::atomic<double>>& progress) const;
     void upload(Baked&& baked);
