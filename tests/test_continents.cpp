@@ -90,7 +90,7 @@ TEST(CubeMapGeometry, BorderTexelsHaveCloseNeighboursOnOtherFaces) {
     // Every texel on a face's border has a texel on another face within about one texel.
     const int n = 16;
     const double texelAngle = 2.0 / n;  // the widest texel, at a face centre, spans 2/n rad
-    auto onBorder = [n](int x, int y) { return x == 0 || y == 0 || x == n - 1 || y == n - 1; };
+    auto onBorder = [](int x, int y) { return x == 0 || y == 0 || x == n - 1 || y == n - 1; };
     double worst = 0.0;
     for (int face = 0; face < 6; ++face)
         for (int y = 0; y < n; ++y)
@@ -238,7 +238,7 @@ TEST(Continents, SampleHalfwayBetweenTexelsIsTheirMeanAcrossEdgesAndCorners) {
     const int n = 16;
     const CubeMap& map = baked(1, 0.6, n);
     // Inside face 4 (+Z: sc = x, tc = -y), halfway between texels (6, 3) and (7, 3).
-    auto onFace4 = [n](double x, double y) {  // texel coordinates, texel centres at integers
+    auto onFace4 = [](double x, double y) {  // texel coordinates, texel centres at integers
         return glm::dvec3(2.0 * (x + 0.5) / n - 1.0, -(2.0 * (y + 0.5) / n - 1.0), 1.0);
     };
     const glm::vec4 inside = sampleContinents(map, onFace4(6.5, 3.0));
