@@ -178,17 +178,6 @@ Spectrum GetSkyRadianceFrom(IN(AtmosphereParameters) atmosphere, bool elek_table
                                ViewRayInAtmosphere(atmosphere, camera_position, view_ray, sun_direction), transmittance);
 }
 
-// The same for a camera given by `up` and `altitude` (km above the bottom radius, formed
-// apart: see ViewRayInAtmosphereAt): exact below the horizon from centimetres up.
-Spectrum GetSkyRadianceAtFrom(IN(AtmosphereParameters) atmosphere, bool elek_table,
-                              IN(TransmittanceTexture) transmittance_texture, IN(ScatteringTexture) scattering_texture,
-                              IN(ScatteringTexture) single_mie_scattering_texture, IN(vec3) up, Length altitude,
-                              IN(vec3) view_ray, IN(vec3) sun_direction, OUT(Spectrum) transmittance) {
-    return GetSkyRadianceOfRay(atmosphere, elek_table, transmittance_texture, scattering_texture,
-                               single_mie_scattering_texture,
-                               ViewRayInAtmosphereAt(atmosphere, up, altitude, view_ray, sun_direction), transmittance);
-}
-
 // Transmittance from the camera to the end of its view ray: the ground where
 // the ray hits it, else the top of the atmosphere (1 for a ray missing it).
 // GetSkyRadiance reports 0 for ground rays, because the sky behind the ground
@@ -314,20 +303,6 @@ Spectrum GetSkyRadianceToPointAlongRayFrom(IN(AtmosphereParameters) atmosphere, 
     return GetSkyRadianceToPointOfRay(atmosphere, elek_table, transmittance_texture, scattering_texture,
                                       single_mie_scattering_texture,
                                       ViewRayInAtmosphere(atmosphere, camera_position, view_ray, sun_direction),
-                                      distance, shadow_length, transmittance);
-}
-
-// The same for a camera given by `up` and `altitude` (see ViewRayInAtmosphereAt).
-Spectrum GetSkyRadianceToPointAlongRayAtFrom(IN(AtmosphereParameters) atmosphere, bool elek_table,
-                                             IN(TransmittanceTexture) transmittance_texture,
-                                             IN(ScatteringTexture) scattering_texture,
-                                             IN(ScatteringTexture) single_mie_scattering_texture, IN(vec3) up,
-                                             Length altitude, IN(vec3) view_ray, Length distance,
-                                             IN(vec3) sun_direction, Length shadow_length,
-                                             OUT(Spectrum) transmittance) {
-    return GetSkyRadianceToPointOfRay(atmosphere, elek_table, transmittance_texture, scattering_texture,
-                                      single_mie_scattering_texture,
-                                      ViewRayInAtmosphereAt(atmosphere, up, altitude, view_ray, sun_direction),
                                       distance, shadow_length, transmittance);
 }
 

@@ -3,20 +3,14 @@
 #include <algorithm>
 #include <cmath>
 
-namespace planet::ocean {
+#include <glm/common.hpp>
 
-namespace {
-// GLSL's smoothstep (gerstner.glsl's gerstnerLod uses it with e0 < e1).
-double smoothstep(double e0, double e1, double x) {
-    const double t = std::clamp((x - e0) / (e1 - e0), 0.0, 1.0);
-    return t * t * (3.0 - 2.0 * t);
-}
-}  // namespace
+namespace planet::ocean {
 
 double resolvedWaveSlope(const std::vector<GerstnerWave>& waves, double footprintM) {
     double variance = 0.0;
     for (const GerstnerWave& w : waves) {
-        const double lod = smoothstep(2.0, 4.0, w.wavelength_m / std::max(footprintM, 1.0e-6));
+        const double lod = glm::smoothstep(2.0, 4.0, w.wavelength_m / std::max(footprintM, 1.0e-6));  // gerstnerLod
         const double ak = w.amplitude_m * w.wavenumber();
         variance += lod * 0.5 * ak * ak;
     }

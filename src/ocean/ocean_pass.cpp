@@ -8,7 +8,6 @@
 #include "ocean/ocean_gpu.h"
 #include "ocean/land_cull.h"
 #include "render/bindings.h"
-#include "render/frame_uniforms.h"
 
 namespace planet {
 
@@ -17,17 +16,14 @@ constexpr int kGridExponent = 4;  // Michelic Eq. 2's n for the ocean grid
 
 double seaRadiusM(const Scene& scene) { return scene.planetRadiusM() + scene.ocean.sea_level_m; }
 
-gl::ProgramDesc oceanProgram(std::string name) {
-    return gl::ProgramDesc{std::move(name), {"ocean/ocean.vert", "ocean/ocean.tesc", "ocean/ocean.tese", "ocean/ocean.frag"}};
-}
+// The program's modes (AtmosphereProgram), by their index in get().
+constexpr int kFlatMirrorMode = 1, kUnderWaterMode = 2;
 }  // namespace
 
 OceanPass::OceanPass(const gl::ShaderSources& sources, const atmosphere::TableSizes& tables)
-    : program_(sources, tables, oceanProgram("ocean")),
-      flatMirrorProgram_(gl::ShaderSources{sources.root, sources.preamble + "#define OCEAN_FLAT_MIRROR 1\n"}, tables,
-                         oceanProgram("ocean (flat mirror)")),
-      underWaterProgram_(gl::ShaderSources{sources.root, sources.preamble + "#define UNDER_WATER 1\n"}, tables,
-                         oceanProgram("ocean (under water)")) {
+    : program_(sources, tables,
+               gl::ProgramDesc{"ocean", {"ocean/ocean.vert", "ocean/ocean.tesc", "ocean/ocean.tese", "ocean/ocean.frag"}},
+               {"OCEAN_FLAT_MIRROR", "UNDER_WATER"}) {
     waves_.label("ocean waves");
     glNamedBufferStorage(block_.id(), sizeof(ocean::OceanBlock), nullptr, GL_DYNAMIC_STORAGE_BIT);
     block_.label("OceanBlock");
@@ -74,7 +70,6 @@ void OceanPass::prepare(const Scene& scene, const Camera& camera, double radians
     block.continentLipschitz = static_cast<float>(lipschitz_);
     block.landCulling = landCulling_ && landContinent_ <= 1.0 ? 1 : 0;
     glNamedBufferSubData(block_.id(), 0, sizeof block, &block);
-    underWater_ = cameraDepthBelowSeaM(scene, camera) > 0.0;  // as the frame's (render/frame_uniforms.h)
     const double height = glm::length(camera.position) - radius;
     flatMirror_ = flatMirrorMode_ == FlatMirror::Auto
                       ? ocean::seaIsAFlatMirror(scene.waves, height, radiansPerPixel,
@@ -82,24 +77,14 @@ void OceanPass::prepare(const Scene& scene, const Camera& camera, double radians
                       : flatMirrorMode_ == FlatMirror::On;
 }
 
-std::vector<gl::HotProgram*> OceanPass::programs() {
-    std::vector<gl::HotProgram*> p = program_.built();
-    for (AtmosphereProgram* other : {&flatMirrorProgram_, &underWaterProgram_}) {
-        const std::vector<gl::HotProgram*> built = other->built();
-        p.insert(p.end(), built.begin(), built.end());
-    }
-    return p;
-}
-
-void OceanPass::draw(bool elekTable) {
+void OceanPass::draw(bool elekTable, bool underWater) {
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding::BUFFER_OCEAN_WAVES, waves_.id());
     glBindBufferBase(GL_UNIFORM_BUFFER, binding::BLOCK_OCEAN, block_.id());
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_GREATER);  // reversed-Z
     glDepthMask(GL_TRUE);
     glDisable(GL_CULL_FACE);  // the surface is seen from below too
-    AtmosphereProgram& program = underWater_ ? underWaterProgram_ : flatMirror_ ? flatMirrorProgram_ : program_;
-    glUseProgram(program.get(elekTable).id());
+    glUseProgram(program_.get(elekTable, false, underWater ? kUnderWaterMode : flatMirror_ ? kFlatMirrorMode : 0).id());
     if (countPrimitives_) glBeginQuery(GL_PRIMITIVES_GENERATED, primitives_.id());
     mesh_.draw();
     if (countPrimitives_) {

@@ -45,15 +45,12 @@ public:
     // The sea surface into the bound target (surface radiance and distance + the G-buffer's
     // depth, tested and written), reading the seabed copies, the atmosphere and the terrain's
     // height field (the sea floor), with the program for the table in use.
-    void draw(bool elekTable);
+    // `underWater`: the camera under the sea (the frame's PrepareReport), the surface seen from below.
+    void draw(bool elekTable, bool underWater);
 
     AtmosphereProgram& program() { return program_; }
-    AtmosphereProgram& flatMirrorProgram() { return flatMirrorProgram_; }
-    AtmosphereProgram& underWaterProgram() { return underWaterProgram_; }
-    // The programs' variants built so far, for hot reload.
-    std::vector<gl::HotProgram*> programs();
 
-    // The program with OCEAN_FLAT_MIRROR (the clouds' share of the reflection from the grid's
+    // The program's mode OCEAN_FLAT_MIRROR (the clouds' share of the reflection from the grid's
     // points) where the sea is a flat mirror to every pixel (Auto: flat_mirror.h, per frame), or
     // always (On) or never (Off), to compare with (tests). flatMirror(): the last prepare()'s.
     enum class FlatMirror { Auto, On, Off };
@@ -76,10 +73,7 @@ public:
 private:
     void uploadWaves(const Scene& scene, const Camera& camera);
 
-    AtmosphereProgram program_;
-    AtmosphereProgram flatMirrorProgram_;  // the same files with OCEAN_FLAT_MIRROR 1
-    AtmosphereProgram underWaterProgram_;  // with UNDER_WATER 1: the camera under the sea, the surface seen from below
-    bool underWater_ = false;
+    AtmosphereProgram program_;  // modes OCEAN_FLAT_MIRROR and UNDER_WATER (the surface seen from below)
     FlatMirror flatMirrorMode_ = FlatMirror::Auto;
     bool flatMirror_ = false;
     GridMesh mesh_{"ocean"};

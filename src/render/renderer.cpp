@@ -80,16 +80,13 @@ Renderer::Renderer(const std::filesystem::path& shaderRoot, const atmosphere::Ta
       terrain_(sources_),
       surfaceLight_(withAtmosphere(sources_, programTables_), "surface light", "render/surface_light.frag"),
       ocean_(sources_, programTables_),
-      sky_(sources_, programTables_, gl::ProgramDesc{"sky", {"common/fullscreen.vert", "render/sky.frag"}}),
-      skyUnderWater_(gl::ShaderSources{sources_.root, sources_.preamble + "#define UNDER_WATER 1\n"}, programTables_,
-                     gl::ProgramDesc{"sky (under water)", {"common/fullscreen.vert", "render/sky.frag"}}),
+      sky_(sources_, programTables_, gl::ProgramDesc{"sky", {"common/fullscreen.vert", "render/sky.frag"}},
+           {"UNDER_WATER"}),
       skySparse_(sources_, programTables_,
                  gl::ProgramDesc{"sky march", {"common/fullscreen.vert", "render/sky_sparse.frag"}}),
       skyTemporal_(sources_, programTables_,
-                   gl::ProgramDesc{"sky temporal", {"common/fullscreen.vert", "render/sky_temporal.frag"}}),
-      skyTemporalStill_(gl::ShaderSources{sources_.root, sources_.preamble + "#define STILL_FRAME\n"}, programTables_,
-                        gl::ProgramDesc{"sky temporal (still frame)",
-                                        {"common/fullscreen.vert", "render/sky_temporal.frag"}}),
+                   gl::ProgramDesc{"sky temporal", {"common/fullscreen.vert", "render/sky_temporal.frag"}},
+                   {"STILL_FRAME"}),
       skyRefine_(sources_, programTables_,
                  gl::ProgramDesc{"sky refine", {"render/sky_refine.comp"}}),
       antialias_(sources_, "antialias", "render/antialias.frag"),
@@ -136,9 +133,9 @@ std::vector<Renderer::Pass> Renderer::makePasses() {
                           glBindFramebuffer(GL_FRAMEBUFFER, targets_.surfaceFramebuffer());
                           glBindTextureUnit(binding::UNIT_SEABED_DEPTH, targets_.seabedDepth().id());
                           glBindTextureUnit(binding::UNIT_SEABED_RADIANCE, targets_.seabedRadiance().id());
-                          ocean_.draw(s.atmosphere.elek_3d_table);
+                          ocean_.draw(s.atmosphere.elek_3d_table, lastPrepare_.underWater);
                       },
-                      [this] { return ocean_.programs(); }});
+                      [this] { return ocean_.program().built(); }});
     auto fullRate = [this](const Scene&) { return !lastPrepare_.reducedRate; };
     auto reducedRate = [this](const Scene&) { return lastPrepare_.reducedRate; };
     passes.push_back({{"sky", {R::SurfaceRadiance}, {R::HdrRadiance}}, fullRate,
@@ -147,16 +144,11 @@ std::vector<Renderer::Pass> Renderer::makePasses() {
                           glBindTextureUnit(binding::UNIT_SURFACE_RADIANCE, targets_.surfaceRadiance().id());
                           glBindTextureUnit(binding::UNIT_SURFACE_DISTANCE, targets_.surfaceDistance().id());
                           glBindVertexArray(emptyVertexArray_.id());
-                          AtmosphereProgram& program = lastPrepare_.underWater ? skyUnderWater_ : sky_;
-                          glUseProgram(program.get(s.atmosphere.elek_3d_table, lightShafts(s)).id());
+                          const int underWater = lastPrepare_.underWater ? 1 : 0;  // sky_'s mode UNDER_WATER
+                          glUseProgram(sky_.get(s.atmosphere.elek_3d_table, lightShafts(s), underWater).id());
                           glDrawArrays(GL_TRIANGLES, 0, 3);
                       },
-                      [this] {
-                          std::vector<gl::HotProgram*> p = sky_.built();
-                          const std::vector<gl::HotProgram*> water = skyUnderWater_.built();
-                          p.insert(p.end(), water.begin(), water.end());
-                          return p;
-                      }});
+                      [this] { return sky_.built(); }});
     passes.push_back({{"sky march", {R::SurfaceRadiance}, {R::SparseSky}}, reducedRate,
                       [this](const Scene& s) {
                           const SparseSky& sparse = targets_.sparseSky();
@@ -189,17 +181,11 @@ std::vector<Renderer::Pass> Renderer::makePasses() {
                           glBindTextureUnit(binding::UNIT_HISTORY_SKY_MEDIUM, history.skyMedium.id());
                           glBindTextureUnit(binding::UNIT_HISTORY_SURFACE_DISTANCE, history.surfaceDistance.id());
                           glBindVertexArray(emptyVertexArray_.id());
-                          AtmosphereProgram& program =
-                              lastPrepare_.stillFrame && stillFrameProgram_ ? skyTemporalStill_ : skyTemporal_;
-                          glUseProgram(program.get(s.atmosphere.elek_3d_table, lightShafts(s)).id());
+                          const int still = lastPrepare_.stillFrame && stillFrameProgram_ ? 1 : 0;  // STILL_FRAME
+                          glUseProgram(skyTemporal_.get(s.atmosphere.elek_3d_table, lightShafts(s), still).id());
                           glDrawArrays(GL_TRIANGLES, 0, 3);
                       },
-                      [this] {
-                          std::vector<gl::HotProgram*> p = skyTemporal_.built();
-                          const std::vector<gl::HotProgram*> still = skyTemporalStill_.built();
-                          p.insert(p.end(), still.begin(), still.end());
-                          return p;
-                      }});
+                      [this] { return skyTemporal_.built(); }});
     passes.push_back({{"sky refine", {R::SurfaceRadiance, R::SkyRefine}, {R::HdrRadiance}}, reducedRate,
                       [this](const Scene& s) {
                           glBindTextureUnit(binding::UNIT_SURFACE_RADIANCE, targets_.surfaceRadiance().id());
@@ -387,7 +373,7 @@ bool Renderer::matchAtmosphereTables() {
     programTables_ = sizes;
     surfaceLight_.program().setSources(withAtmosphere(sources_, sizes));
     std::vector<gl::HotProgram*> rebuilt{&surfaceLight_.program()};
-    for (AtmosphereProgram* p : {&ocean_.program(), &ocean_.flatMirrorProgram(), &ocean_.underWaterProgram(), &sky_, &skyUnderWater_, &skySparse_, &skyTemporal_, &skyTemporalStill_, &skyRefine_}) {
+    for (AtmosphereProgram* p : {&ocean_.program(), &sky_, &skySparse_, &skyTemporal_, &skyRefine_}) {
         p->setTableSizes(sizes);
         const std::vector<gl::HotProgram*> built = p->built();
         rebuilt.insert(rebuilt.end(), built.begin(), built.end());

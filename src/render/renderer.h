@@ -111,8 +111,8 @@ struct PrepareReport {
     bool reducedRate = false;            // the sky was marched at the reduced rate (sky march, temporal, refine)
     bool stillFrame = false;             // with a history, nothing moved since it: the reconstruction's
                                          // still-frame program (render/sky_temporal.frag, STILL_FRAME)
-    bool underWater = false;             // the camera under the sea: the full-rate sky pass's water program
-                                         // (render/sky.frag, UNDER_WATER)
+    bool underWater = false;             // the camera under the sea: the sky pass's and the ocean's UNDER_WATER programs
+                                         // (render/sky.frag, ocean/ocean.frag)
 };
 
 class Renderer {
@@ -211,11 +211,9 @@ private:
     TerrainPass terrain_;
     FullscreenPass surfaceLight_;
     OceanPass ocean_;
-    AtmosphereProgram sky_;
-    AtmosphereProgram skyUnderWater_;  // the same file with UNDER_WATER 1: the camera under the sea
+    AtmosphereProgram sky_;  // mode UNDER_WATER: the camera under the sea
     AtmosphereProgram skySparse_;
-    AtmosphereProgram skyTemporal_;
-    AtmosphereProgram skyTemporalStill_;  // the same file with STILL_FRAME: frames where nothing moved
+    AtmosphereProgram skyTemporal_;  // mode STILL_FRAME: frames where nothing moved
     AtmosphereProgram skyRefine_;
     FullscreenPass antialias_;
     FullscreenPass tonemap_;
