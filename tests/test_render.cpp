@@ -169,7 +169,7 @@ TEST_F(RenderTest, ProfilerTimesEveryPassOnTheGpuAndCpu) {
         EXPECT_GE(p.gpuMs.size(), 2u) << p.name;  // the ring may drop frames on a slow GPU, never all
         EXPECT_GE(p.gpuMs.min(), 0.0) << p.name;
     }
-    EXPECT_EQ(names, (std::vector<std::string>{"prepare", "terrain", "surface light", "ocean", "sky", "tonemap"}));
+    EXPECT_EQ(names, (std::vector<std::string>{"prepare", "terrain", "terrain shadow", "surface light", "ocean", "sky", "tonemap"}));
 }
 
 TEST_F(RenderTest, TerrainLeavesNoHolesWhereTheGroundMustBe) {

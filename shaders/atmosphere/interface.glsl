@@ -104,13 +104,23 @@ const float CLOUD_SHADOW_MAX_KM = 100.0;
 // program did not ask for SUN_VISIBILITY_TERRAIN.
 // TerrainSunVisibilityAbove: from `startM` metres above sea level where the ground is lower
 // (the sea's surface: its light is shadowed from there, not from the sea floor).
-float TerrainSunVisibilityAbove(vec3 point, float startM, vec3 sun) {
+// TerrainShadowClearance: the march's smallest clearance angle instead (rad, 1 where none was
+// marched; terrain_shadow.glsl's terrainShadowClearanceAbove), from the ground.
+float TerrainShadowClearanceAbove(vec3 point, float startM, vec3 sun) {
 #if SUN_VISIBILITY_TERRAIN
     float footprintKm = distance(point, cameraFromPlanetCentreKm()) * radiansPerPixel();
     int samples = terrainShadows != 0 ? TERRAIN_SHADOW_SAMPLES : 0;  // from the uniform: see terrainSunVisibility
-    return terrainSunVisibilityAbove(point, startM, sun, frame.planetRadius / M_PER_KM,
-                                     atmosphereUniforms.sunAngularRadius, footprintKm, samples, terrainShape,
-                                     uContinents);
+    return terrainShadowClearanceAbove(point, startM, sun, frame.planetRadius / M_PER_KM,
+                                       atmosphereUniforms.sunAngularRadius, footprintKm, samples, terrainShape,
+                                       uContinents);
+#else
+    return 1.0;
+#endif
+}
+float TerrainShadowClearance(vec3 point, vec3 sun) { return TerrainShadowClearanceAbove(point, -1.0e9, sun); }
+float TerrainSunVisibilityAbove(vec3 point, float startM, vec3 sun) {
+#if SUN_VISIBILITY_TERRAIN
+    return terrainShadowDiscShare(TerrainShadowClearanceAbove(point, startM, sun), atmosphereUniforms.sunAngularRadius);
 #else
     return 1.0;
 #endif

@@ -51,3 +51,4 @@ const int UNIT_HISTORY_SKY_MEDIUM = 20;     // RGBA32UI: the previous frame's T,
 const int UNIT_HISTORY_SURFACE_DISTANCE = 22;   // R32F: the previous frame's surface distance, m
 const int UNIT_HISTORY_RADIANCE = 24;       // RGBA16F: the previous frame's hdr (anti-aliased when the explorer's TAA is on)
 const int UNIT_TERRAIN_DETAIL = 23;         // RGBA16F tiling detail height field, mipmapped, GL_REPEAT (terrain/detail_texture.h)
+const int UNIT_TERRAIN_SHADOW = 25;         // R32F, half size: the terrain shadow's samples (render/terrain_shadow.frag)

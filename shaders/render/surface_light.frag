@@ -20,35 +20,20 @@
 #include "atmosphere/interface.glsl"
 #include "ocean/water.glsl"
 #include "terrain/rough_cosine.glsl"
+#include "render/terrain_shadow_spacing.glsl"
+// 1: the terrain's shadow from the sparse samples where they agree (render/terrain_shadow.frag);
+// 0: marched at every pixel (tests compare the two).
+#define TERRAIN_SHADOW_FROM_SAMPLES 1
 
-in vec2 vNdc;
 layout(binding = UNIT_GBUFFER_NORMAL) uniform sampler2D gNormal;
 layout(binding = UNIT_GBUFFER_ALBEDO) uniform sampler2D gAlbedo;
 layout(binding = UNIT_GBUFFER_MATERIAL) uniform sampler2D gMaterial;
 layout(binding = UNIT_GBUFFER_DEPTH) uniform sampler2D gDepth;
+layout(binding = UNIT_TERRAIN_SHADOW) uniform sampler2D terrainShadowSamples;
+#include "render/surface_point.glsl"
 
 layout(location = 0) out vec4 outSurfaceRadiance;
 layout(location = 1) out float outSurfaceDistance;
-
-// From afar, the distance along the ray to the height field rather than to the mesh: the
-// terrain's chords sag below the sphere between vertices by (edge length)^2 / 8r (hundreds
-// of metres from space), and a point that deep inside the ground ended the clouds' march
-// below the cloud tops it should have stopped under (speckle and dashes over land wherever
-// the terrain reaches into the cloud layer) and lit the ground from the wrong place. The
-// mesh's point is moved along the ray by its altitude above the ground's height (the
-// G-buffer's) over the rate the ray descends; near the camera, where the sag is far below a
-// metre, nothing changes (the half-float height would add its own rounding there).
-float onTheHeightField(vec3 dir, float meshDistance, float groundHeight) {
-    float sag = meshSagM(meshDistance, 2.0 * terrainTargetEdgePixels);  // fractional tessellation: edges up to 2x
-    float weight = smoothstep(1.0, 10.0, sag);
-    if (weight <= 0.0) return meshDistance;
-    vec3 fromCamera = dir * meshDistance;
-    vec3 camera = -frame.planetCenterFromCamera;
-    float meshAltitude = frame.cameraAltitude + riseFromCameraM(fromCamera);
-    float descent = max(-dot(dir, normalize(camera + fromCamera)), 0.05);  // altitude lost per metre along the ray
-    float limit = 2.0 * sag / descent + 50.0;
-    return meshDistance + weight * clamp((meshAltitude - groundHeight) / descent, -limit, limit);
-}
 
 // A normal whose clamped cosine with the sun is the expected one over facets whose slopes
 // spread by `slopeSpread` (per component) about `normal`: turned towards or away from the sun
@@ -63,24 +48,68 @@ vec3 shadingNormal(vec3 normal, vec3 sun, float slopeSpread) {
     return cosine * sun + sqrt(max(1.0 - cosine * cosine, 0.0)) * (across / acrossLength);
 }
 
+// Where the samples around a pixel all clear the sun's disc by this much more than its radius
+// (rad), the pixel is taken as lit without a march: the margin catches most shadows narrower
+// than the samples' spacing, cast by bumps whose horizon the samples only just clear.
+const float TERRAIN_SHADOW_LIT_MARGIN = 0.03;
+
+// The share of the sun's disc the terrain leaves visible at the pixel's `point`: from the
+// samples (render/terrain_shadow.frag) around the pixel (one, two or four: the corners of its
+// cell of their grid) where they all clear the disc by TERRAIN_SHADOW_LIT_MARGIN (lit) or all
+// hide it (shadowed), or where the pixel is a sample itself; marched here otherwise, where a
+// shadow's edge or penumbra passes or a sample shows no surface (an edge of the terrain on
+// screen). A shadow narrower than the samples' spacing that falls between samples which clear
+// the margin is missed, as the march misses a ridge narrower than its own step. A `facesSun`
+// false pixel needs no visibility (the sun does not light it) and marches none.
+float terrainVisibility(ivec2 pixel, vec3 point, bool facesSun) {
+    if (terrainShadows == 0) return 1.0;
+    float radius = atmosphereUniforms.sunAngularRadius;
+    float clearance = TERRAIN_SHADOW_NO_SURFACE;
+    int marches = facesSun ? 1 : 0;
+#if TERRAIN_SHADOW_FROM_SAMPLES
+    ivec2 last = textureSize(terrainShadowSamples, 0) - 1;
+    ivec2 low = pixel / TERRAIN_SHADOW_SPACING;
+    ivec2 high = min((pixel + TERRAIN_SHADOW_SPACING - 1) / TERRAIN_SHADOW_SPACING, last);
+    float a = texelFetch(terrainShadowSamples, low, 0).r;
+    float b = texelFetch(terrainShadowSamples, ivec2(high.x, low.y), 0).r;
+    float c = texelFetch(terrainShadowSamples, ivec2(low.x, high.y), 0).r;
+    float d = texelFetch(terrainShadowSamples, high, 0).r;
+    float lowest = min(min(a, b), min(c, d));
+    float highest = max(max(a, b), max(c, d));
+    bool surface = lowest > 0.5 * TERRAIN_SHADOW_NO_SURFACE;
+    bool lit = lowest >= radius + TERRAIN_SHADOW_LIT_MARGIN;
+    bool shadowed = surface && highest <= -radius;
+    bool onASample = low == high && surface;
+    if (lit || shadowed || onASample) {
+        clearance = a;
+        marches = 0;
+    }
+#endif
+    // A loop of one turn or none, not an if: a software renderer runs both sides of an if,
+    // but skips a loop that none of its pixels enters.
+    for (int i = 0; i < marches; ++i) clearance = TerrainShadowClearance(point, frame.sunDirection);
+    return terrainShadowDiscShare(clearance, radius);
+}
+
 void main() {
     ivec2 pixel = ivec2(gl_FragCoord.xy);
-    float depth = texelFetch(gDepth, pixel, 0).r;
-    if (depth <= 0.0) discard;  // reversed-Z 0: nothing drawn, the sky pass shows the sky here
-
-    vec3 dir = worldRayFromNdc(vNdc);
-    vec3 forward = -vec3(frame.worldFromView[2]);
-    float rayDistance = viewDistanceFromDepth(depth) / max(dot(dir, forward), 1e-6);  // m
-    vec4 normalAndHeight = texelFetch(gNormal, pixel, 0);
-    rayDistance = onTheHeightField(dir, rayDistance, normalAndHeight.w);
-    vec3 point = cameraFromPlanetCentreKm() + dir * (rayDistance / M_PER_KM);
+    SurfacePoint surface;
+    if (!surfacePointAt(pixel, surface)) discard;  // nothing drawn: the sky pass shows the sky here
+    float rayDistance = surface.rayDistance;
+    vec3 point = surface.point;
+    vec4 normalAndHeight = surface.normalAndHeight;
 
     vec3 normal = normalize(normalAndHeight.xyz);
     vec3 albedo = texelFetch(gAlbedo, pixel, 0).rgb;
     vec3 up = normalize(point);
     vec3 shading = shadingNormal(normal, frame.sunDirection, texelFetch(gMaterial, pixel, 0).b);
     vec3 skyIrradiance;
-    vec3 sunIrradiance = SunAndSkyIrradiance(point, shading, frame.sunDirection, skyIrradiance);
+    vec3 sunIrradiance = SunAndSkyIrradianceUnshadowed(point, shading, frame.sunDirection, skyIrradiance);
+    // The visibility only where the sun lights the surface at all (as SunAndSkyIrradiance).
+    bool facesSun = dot(shading, frame.sunDirection) > 0.0;
+    float visibility = CloudSunTransmittance(point, frame.sunDirection, CLOUD_SHADOW_MAX_KM) *
+                       terrainVisibility(pixel, point, facesSun);
+    if (facesSun) sunIrradiance *= visibility;
     // The sky's share is linear in the normal's rise, (1 + n.up) / 2 (Bruneton's
     // GetSunAndSkyIrradiance): the mean normal's, not the shading normal's.
     skyIrradiance *= (1.0 + dot(normal, up)) / max(1.0 + dot(shading, up), 1.0e-3);

@@ -92,8 +92,11 @@ float terrainShadowHeight(vec3 direction, TerrainShape shape, samplerCube contin
 // loop of 0 iterations, where it would run the march in a branch not taken.
 // `startM`: the march starts that many metres above sea level where the ground is lower (the
 // sea's surface over the sea floor); terrainSunVisibility below starts on the ground.
-float terrainSunVisibilityAbove(vec3 point, float startM, vec3 sun, float planetRadiusKm, float sunAngularRadius,
-                                float footprintKm, int samples, TerrainShape shape, samplerCube continents) {
+// terrainShadowClearanceAbove: the march's smallest clearance angle (rad; 1 where nothing was
+// marched): the disc is whole at sunAngularRadius and above, gone at -sunAngularRadius and below
+// (where the march stops, so a clearance that low says "hidden", not by how much).
+float terrainShadowClearanceAbove(vec3 point, float startM, vec3 sun, float planetRadiusKm, float sunAngularRadius,
+                                  float footprintKm, int samples, TerrainShape shape, samplerCube continents) {
     vec3 up = normalize(point);
     float sinElevation = dot(up, sun);
     float groundM = max(terrainHeight(up, shape, continents), startM);
@@ -122,7 +125,13 @@ float terrainSunVisibilityAbove(vec3 point, float startM, vec3 sun, float planet
         if (clearance <= -sunAngularRadius) break;  // the whole disc is hidden
         t *= growth;
     }
-    return terrainShadowDiscShare(clearance, sunAngularRadius);
+    return clearance;
+}
+float terrainSunVisibilityAbove(vec3 point, float startM, vec3 sun, float planetRadiusKm, float sunAngularRadius,
+                                float footprintKm, int samples, TerrainShape shape, samplerCube continents) {
+    return terrainShadowDiscShare(terrainShadowClearanceAbove(point, startM, sun, planetRadiusKm, sunAngularRadius,
+                                                              footprintKm, samples, shape, continents),
+                                  sunAngularRadius);
 }
 
 // The ground's own visibility: the march starts on the analytic surface under `point`.

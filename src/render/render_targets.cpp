@@ -9,6 +9,10 @@ namespace planet {
 
 namespace {
 
+// The terrain shadow's sample spacing, from the very file the shaders include.
+#include "shaders/render/terrain_shadow_spacing.glsl"
+constexpr int kTerrainShadowSpacing = TERRAIN_SHADOW_SPACING;
+
 constexpr GLsizeiptr kRefineListHeaderBytes = 16;  // render/sky_refine_list.glsl: groups x, y, z, count
 
 gl::Texture makeTexture(GLenum format, glm::ivec2 size, const char* label) {
@@ -77,6 +81,10 @@ bool RenderTargets::resize(glm::ivec2 size) {
     hdr_ = makeTexture(GL_RGBA16F, size, "hdr");
     skyMedium_ = makeTexture(GL_RGBA32UI, size, "sky T, S");
     hdrFramebuffer_ = makeFramebuffer({&hdr_, &skyMedium_}, nullptr, "hdr + sky T, S");
+    terrainShadowSamples_.size = (size + kTerrainShadowSpacing - 1) / kTerrainShadowSpacing;
+    terrainShadowSamples_.visibility = makeTexture(GL_R32F, terrainShadowSamples_.size, "terrain shadow samples");
+    terrainShadowSamples_.framebuffer =
+        makeFramebuffer({&terrainShadowSamples_.visibility}, nullptr, "terrain shadow samples");
     sparseSky_.size = (size + 3) / 4;
     sparseSky_.inscatter = makeTexture(GL_RGBA16F, sparseSky_.size, "sparse sky inscatter");
     sparseSky_.transmittance = makeTexture(GL_RGBA16F, sparseSky_.size, "sparse sky transmittance");

@@ -11,6 +11,8 @@
 //   hdr       RGBA16F linear radiance arriving at the camera (what `render --out x.exr` writes),
 //             with the sky passes' T and S beside it (skyMedium: RGBA32UI, T, S and the samples
 //             in the temporal history as half floats, render/sky_medium.glsl)
+//   terrain shadow  R32F, 1 / TERRAIN_SHADOW_SPACING of the size on each side (rounded up):
+//             the terrain's shadow at the corner pixel of each block (render/terrain_shadow.frag)
 //   sparse    a quarter of the size on each side (rounded up): the reduced-rate march's
 //             samples, one pixel of each 4x4 block, with its surface distance and the
 //             history's error at each
@@ -50,6 +52,14 @@ struct FrameHistory {
     gl::Texture skyMedium{GL_TEXTURE_2D};        // RGBA32UI, its sky T, S and sample count
 };
 
+// The terrain shadow's samples (render/terrain_shadow.frag): one pixel of each
+// TERRAIN_SHADOW_SPACING-square block, the block's corner.
+struct TerrainShadowSamples {
+    glm::ivec2 size{0, 0};
+    gl::Texture visibility{GL_TEXTURE_2D};  // R32F: the sun's visible share, -1 where no surface
+    gl::Framebuffer framebuffer;
+};
+
 // The reduced-rate march's samples (a quarter of the frame's size on each side).
 struct SparseSky {
     glm::ivec2 size{0, 0};
@@ -73,6 +83,7 @@ public:
     const gl::Texture& ldr() const { return ldr_; }
     const gl::Texture& skyMedium() const { return skyMedium_; }
     const SparseSky& sparseSky() const { return sparseSky_; }
+    const TerrainShadowSamples& terrainShadowSamples() const { return terrainShadowSamples_; }
     const gl::Buffer& skyRefineList() const { return skyRefineList_; }
     // Empties the refine list: no pixel listed, an indirect dispatch of no groups.
     void clearSkyRefineList() const;
@@ -107,6 +118,7 @@ private:
     gl::Texture ldr_{GL_TEXTURE_2D};
     gl::Texture skyMedium_{GL_TEXTURE_2D};
     SparseSky sparseSky_;
+    TerrainShadowSamples terrainShadowSamples_;
     gl::Buffer skyRefineList_;
     gl::Framebuffer surfaceFramebuffer_;
     gl::Framebuffer hdrFramebuffer_;

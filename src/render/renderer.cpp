@@ -49,6 +49,7 @@ bool lightShafts(const Scene& s) { return s.terrain.light_shafts && s.terrain.sh
 const char* frameResourceName(FrameResource r) {
     switch (r) {
         case R::GBuffer: return "G-buffer";
+        case R::TerrainShadow: return "terrain shadow samples";
         case R::SurfaceRadiance: return "surface radiance";
         case R::SparseSky: return "sparse sky";
         case R::SkyRefine: return "sky refine list";
@@ -78,6 +79,7 @@ Renderer::Renderer(const std::filesystem::path& shaderRoot, const atmosphere::Ta
       programTables_(atmosphereTables.firstSizes()),
       continents_(continents ? std::move(continents) : std::make_shared<terrain::Continents>()),
       terrain_(sources_),
+      terrainShadow_(withAtmosphere(sources_, programTables_), "terrain shadow", "render/terrain_shadow.frag"),
       surfaceLight_(withAtmosphere(sources_, programTables_), "surface light", "render/surface_light.frag"),
       ocean_(sources_, programTables_),
       sky_(sources_, programTables_, gl::ProgramDesc{"sky", {"common/fullscreen.vert", "render/sky.frag"}},
@@ -113,7 +115,25 @@ std::vector<Renderer::Pass> Renderer::makePasses() {
                           terrain_.draw();
                       },
                       [this] { return std::vector<gl::HotProgram*>{&terrain_.program()}; }});
-    passes.push_back({{"surface light", {R::GBuffer}, {R::SurfaceRadiance}}, always,
+    // The terrain's shadow marched at one pixel of each block (render/terrain_shadow.frag);
+    // the surface light marches only where those around a pixel disagree.
+    passes.push_back({{"terrain shadow", {R::GBuffer}, {R::TerrainShadow}},
+                      [](const Scene& s) { return s.terrain.shadows; },
+                      [this](const Scene&) {
+                          const TerrainShadowSamples& samples = targets_.terrainShadowSamples();
+                          glBindFramebuffer(GL_FRAMEBUFFER, samples.framebuffer.id());
+                          glViewport(0, 0, samples.size.x, samples.size.y);
+                          const GBuffer& g = targets_.gbuffer();
+                          glBindTextureUnit(binding::UNIT_GBUFFER_NORMAL, g.normal.id());
+                          glBindTextureUnit(binding::UNIT_GBUFFER_DEPTH, g.depth.id());
+                          glBindVertexArray(emptyVertexArray_.id());
+                          terrainShadow_.draw();
+                          glViewport(0, 0, targets_.size().x, targets_.size().y);
+                      },
+                      [this] { return std::vector<gl::HotProgram*>{&terrainShadow_.program()}; }});
+    // Reads the terrain shadow's samples only when the preset's terrain.shadows is on (the
+    // block's terrainShadows), which is when that pass runs.
+    passes.push_back({{"surface light", {R::GBuffer, R::TerrainShadow}, {R::SurfaceRadiance}}, always,
                       [this](const Scene&) {
                           targets_.clearSurface();
                           glBindFramebuffer(GL_FRAMEBUFFER, targets_.surfaceFramebuffer());
@@ -122,6 +142,7 @@ std::vector<Renderer::Pass> Renderer::makePasses() {
                           glBindTextureUnit(binding::UNIT_GBUFFER_ALBEDO, g.albedo.id());
                           glBindTextureUnit(binding::UNIT_GBUFFER_MATERIAL, g.material.id());
                           glBindTextureUnit(binding::UNIT_GBUFFER_DEPTH, g.depth.id());
+                          glBindTextureUnit(binding::UNIT_TERRAIN_SHADOW, targets_.terrainShadowSamples().visibility.id());
                           glBindVertexArray(emptyVertexArray_.id());
                           surfaceLight_.draw();
                       },
@@ -372,7 +393,8 @@ bool Renderer::matchAtmosphereTables() {
     const auto started = std::chrono::steady_clock::now();
     programTables_ = sizes;
     surfaceLight_.program().setSources(withAtmosphere(sources_, sizes));
-    std::vector<gl::HotProgram*> rebuilt{&surfaceLight_.program()};
+    terrainShadow_.program().setSources(withAtmosphere(sources_, sizes));
+    std::vector<gl::HotProgram*> rebuilt{&terrainShadow_.program(), &surfaceLight_.program()};
     for (AtmosphereProgram* p : {&ocean_.program(), &sky_, &skySparse_, &skyTemporal_, &skyRefine_}) {
         p->setTableSizes(sizes);
         const std::vector<gl::HotProgram*> built = p->built();

@@ -88,7 +88,7 @@ namespace planet {
 
 // What a pass reads and writes, for the order check. The baked resources, the blocks and
 // the atmosphere tables are made by prepare() and are not listed.
-enum class FrameResource { GBuffer, SurfaceRadiance, SparseSky, SkyRefine, HdrRadiance, LdrImage, Window };
+enum class FrameResource { GBuffer, TerrainShadow, SurfaceRadiance, SparseSky, SkyRefine, HdrRadiance, LdrImage, Window };
 const char* frameResourceName(FrameResource r);
 
 struct PassDeclaration {
@@ -209,6 +209,7 @@ private:
     std::shared_ptr<terrain::Continents> continents_;
     clouds::CloudResources clouds_;
     TerrainPass terrain_;
+    FullscreenPass terrainShadow_;
     FullscreenPass surfaceLight_;
     OceanPass ocean_;
     AtmosphereProgram sky_;  // mode UNDER_WATER: the camera under the sea
