@@ -72,11 +72,13 @@ protected:
         GLTest::SetUp();
         renderer = std::make_unique<Renderer>(test::repoPaths().shaders(), atmosphere::TableSizes::reduced());
     }
-    // One full-rate frame of `view` (no history: every frame alike).
-    ImageRGBAF render(const std::string& view, OceanPass::FlatMirror mode) {
+    // One full-rate frame of `view` (no history: every frame alike); `samples` false: the clouds in
+    // the sea's reflection marched at every pixel (ocean/sea_reflection.glsl), not from samples.
+    ImageRGBAF render(const std::string& view, OceanPass::FlatMirror mode, bool samples = true) {
         Session s = loadSession(test::repoPaths(), "earth", view);
         s.scene.render.temporal = false;
         renderer->ocean().setFlatMirror(mode);
+        renderer->setSeaReflectionSamples(samples);
         renderer->render(s.scene, s.camera, kSize);
         return readTextureRGBAF(renderer->targets().hdr(), kSize.x, kSize.y);
     }
@@ -90,7 +92,7 @@ TEST_F(FlatMirrorFrame, FromOrbitTheGridsCloudsMatchEveryPixelsOwnMarch) {
     // against every pixel's march, mean 0.07 %, p99 1.4 %; the clouds left out of the sea's
     // reflection altogether, mean 0.38 %, p99 4.8 % (so a flat mirror that drops them fails).
     for (const std::string view : {"orbit", "space"}) {
-        const ImageRGBAF marched = render(view, OceanPass::FlatMirror::Off);
+        const ImageRGBAF marched = render(view, OceanPass::FlatMirror::Off, false);
         const ImageRGBAF automatic = render(view, OceanPass::FlatMirror::Auto);
         EXPECT_TRUE(renderer->ocean().flatMirror()) << view << ": seen from orbit the sea is a flat mirror";
         const ImageRGBAF forced = render(view, OceanPass::FlatMirror::On);
@@ -107,7 +109,9 @@ TEST_F(FlatMirrorFrame, FromOrbitTheGridsCloudsMatchEveryPixelsOwnMarch) {
     }
 }
 
-TEST_F(FlatMirrorFrame, FromAShipEveryPixelMarchesItsOwnRay) {
+// From a ship the per-pixel program runs (its clouds from the sea reflection pass: tests/
+// test_sea_reflection.cpp), to the bit what it is with the flat mirror forced off.
+TEST_F(FlatMirrorFrame, FromAShipThePerPixelProgramRuns) {
     for (const std::string view : {"sea", "beach", "clouds"}) {
         const ImageRGBAF automatic = render(view, OceanPass::FlatMirror::Auto);
         EXPECT_FALSE(renderer->ocean().flatMirror()) << view;

@@ -3,11 +3,13 @@
 // distance targets, drawn over the sea floor's own surface radiance (Michelic §6: "shading
 // accounts for the underwater terrain and atmosphere reflections"):
 //   - Fresnel reflection (Schlick, F0 = 0.02 for water; Elek Eq. 18 is a cruder fit of
-//     the same curve) of the sky and the clouds along the reflected ray: the sky pass's own
-//     march (clouds/cloud_march.glsl) with one atmosphere slice per crossing of the layer
-//     and a 32nd of its cloud steps, so the clouds show in the sea, a little coarser; seen
-//     from high up, the clear sky per pixel and the clouds' change to it from the grid's
-//     points (ocean/cloud_reflection.glsl, OCEAN_FLAT_MIRROR);
+//     the same curve) of the sky and the clouds along the reflected ray: the clear sky per
+//     pixel here; the clouds' change to it, the sky pass's own march (clouds/cloud_march.glsl)
+//     with one atmosphere slice per crossing of the layer and a 32nd of its cloud steps, is
+//     added by the sea reflection pass (ocean/sea_reflection.frag: marched at one pixel of
+//     each 2x2 block along that pixel's reflected ray, which this pass writes with the weight
+//     the change takes in its radiance); seen from high up, from the grid's points instead
+//     (ocean/cloud_reflection.glsl, OCEAN_FLAT_MIRROR);
 //     and of the terrain where the reflected ray meets it on screen (Michelic §6: "screen-
 //     space reflections of the terrain"; ocean/screen_space_reflections.glsl), seen through
 //     the air between, faded into the sky's reflection where the search is unsure;
@@ -56,6 +58,10 @@ layout(binding = UNIT_SEABED_RADIANCE) uniform sampler2D seabedRadiance;   // co
 
 layout(location = 0) out vec4 outSurfaceRadiance;
 layout(location = 1) out float outSurfaceDistance;
+// The reflected ray and the weight of the clouds' change to its radiance in this pixel's
+// (coverage x Fresnel x the sky's share beside the terrain's reflection), for the sea
+// reflection pass; weight 0 where it adds nothing (the flat mirror, from below, no sea).
+layout(location = 2) out vec4 outSeaReflection;
 
 layout(depth_greater) out float gl_FragDepth;  // reversed-Z: only ever moved towards the camera
 
@@ -70,27 +76,26 @@ const float SHORE_FADE_M = 0.5;  // water path over which the sea fades in at th
 // What the sea reflects along `reflected` from `point` (km from the planet centre; this
 // fragment): the terrain where the reflected ray finds it on screen (ocean/
 // screen_space_reflections.glsl), over the sky and the clouds where it does not, blended by
-// the search's confidence so that no seam shows where it gives up.
-vec3 reflectedRadiance(vec3 point, vec3 reflected, vec3 up, ivec2 pixel, vec3 sun) {
+// the search's confidence so that no seam shows where it gives up. `skyShare`: the sky's
+// weight in it (1 - the confidence), which the clouds' change takes too.
+vec3 reflectedRadiance(vec3 point, vec3 reflected, vec3 up, ivec2 pixel, vec3 sun, out float skyShare) {
     ScreenReflection land = traceScreenReflection(tePosition, reflected, up, ocean.seaLevel, pixel, seabedDepth,
                                                   seabedRadiance);
-    vec3 radiance = vec3(0.0);
-#if OCEAN_FLAT_MIRROR
-    // The sea a flat mirror to every pixel: the clear sky along its own ray, the clouds' change
-    // from the grid's points.
     vec3 clearTransmittance;
-    radiance = SkyRadiance(point, reflected, sun, clearTransmittance) + teCloudReflection;
-#else
-    if (land.confidence < 1.0)  // the sky's march only where the terrain does not hide it all
-        radiance = ReflectedMarch(point, reflected, sun);
+    vec3 radiance = SkyRadiance(point, reflected, sun, clearTransmittance);
+#if OCEAN_FLAT_MIRROR
+    // The sea a flat mirror to every pixel: the clouds' change from the grid's points.
+    radiance += teCloudReflection;
 #endif
     if (land.confidence > 0.0)
         radiance = mix(radiance, reflectedTerrainRadiance(land, point, reflected, sun), land.confidence);
+    skyShare = 1.0 - land.confidence;
     return radiance;
 }
 
 void main() {
     ivec2 pixel = ivec2(gl_FragCoord.xy);
+    outSeaReflection = vec4(0.0);
     // The surface's step from this pixel to the next, taken before any discard (derivatives
     // need the whole quad): how far the water's depth changes across the pixel (the shore's
     // coverage below).
@@ -189,7 +194,11 @@ void main() {
     }
 
     vec3 reflected = SeaReflectedRay(view, normal, up);
-    vec3 sky = reflectedRadiance(point, reflected, up, pixel, sun);
+    float skyShare;
+    vec3 sky = reflectedRadiance(point, reflected, up, pixel, sun, skyShare);
+#if !OCEAN_FLAT_MIRROR
+    outSeaReflection = vec4(reflected, coverage * fresnel * skyShare);
+#endif
     // The sun's visibility from the water's surface (the clouds' shadows and the terrain's, the
     // march starting at sea level, not on the sea floor), formed once for the light into the
     // water and the glitter.

@@ -4,7 +4,7 @@
 // by more than render.temporal_refine_error; the list is at the end of its main) are marched
 // again here, exactly as the full-rate sky pass marches them (render/sky.frag: the same ray
 // through the pixel's centre, the same start), over the reconstruction's radiance and T, S.
-// One invocation per listed pixel (render/sky_refine_list.glsl), dispatched indirectly with as
+// One invocation per listed pixel (render/pixel_list.glsl), dispatched indirectly with as
 // many groups as the list needs: no work for a pixel not listed.
 #include "common/frame_uniforms.glsl"
 // LIGHT_SHAFTS_TERRAIN (the terrain's shadows in the air) comes from the program builder, 1 only
@@ -16,9 +16,10 @@ vec2 refinedPixelCentre;  // the light shafts' jitter seed, as gl_FragCoord.xy i
 #include "ocean/water.glsl"
 #include "render/sky_air.glsl"
 #include "render/sky_medium.glsl"
-#include "render/sky_refine_list.glsl"
+#define PIXEL_LIST_BINDING BUFFER_SKY_REFINE
+#include "render/pixel_list.glsl"
 
-layout(local_size_x = 64, local_size_y = 1, local_size_z = 1) in;  // REFINE_GROUP_SIZE
+layout(local_size_x = 64, local_size_y = 1, local_size_z = 1) in;  // PIXEL_LIST_GROUP_SIZE
 layout(binding = UNIT_SURFACE_RADIANCE) uniform sampler2D surfaceRadiance;
 layout(binding = UNIT_SURFACE_DISTANCE) uniform sampler2D surfaceDistance;
 layout(binding = IMAGE_HDR_RADIANCE, rgba16f) uniform writeonly image2D hdrRadiance;
@@ -26,7 +27,7 @@ layout(binding = IMAGE_SKY_MEDIUM, rgba32ui) uniform writeonly uimage2D skyMediu
 
 void main() {
     uint i = gl_GlobalInvocationID.x;
-    if (i >= refineList.count) return;
+    if (i >= pixelList.count) return;
     ivec2 pixel = listedPixel(i);
     refinedPixelCentre = vec2(pixel) + 0.5;
     vec3 dir = worldRayFromNdc(pixelCentreNdc(refinedPixelCentre));

@@ -26,7 +26,7 @@
 //    running mean of up to 16 (each visit with another jitter), so a still frame converges.
 //  - the other pixels keep the history, or the spatial estimate where there is none;
 //  - in a frame where anything moved, the pixels none of this can rebuild are listed (the end
-//    of main; render/sky_refine_list.glsl) and marched again at full rate by
+//    of main; render/pixel_list.glsl) and marched again at full rate by
 //    render/sky_refine.comp.
 // The history is the frame's only state; it is dropped on a jump, a resize or a parameter
 // change (frame.historyValid 0), and then this frame is the spatial estimate alone.
@@ -39,7 +39,8 @@
 #include "render/sky_air.glsl"
 #include "render/sparse_pattern.glsl"
 #include "render/sky_history.glsl"
-#include "render/sky_refine_list.glsl"
+#define PIXEL_LIST_BINDING BUFFER_SKY_REFINE
+#include "render/pixel_list.glsl"
 
 in vec2 vNdc;
 layout(binding = UNIT_SURFACE_RADIANCE) uniform sampler2D surfaceRadiance;
@@ -289,6 +290,6 @@ void main() {
     bool refine = frame.historyValid > 0.5 && moving > 0.0 &&
                   (!reprojected || boxSamples < 2.0 || historyError > frame.temporalRefineError ||
                    (!clockOnly && (edge || historyContrast > REFINE_HISTORY_CONTRAST)));
-    if (refine) listForRefine(pixel);
+    if (refine) listPixel(pixel);
 }
 #endif

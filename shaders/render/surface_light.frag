@@ -20,7 +20,7 @@
 #include "atmosphere/interface.glsl"
 #include "ocean/water.glsl"
 #include "terrain/rough_cosine.glsl"
-#include "render/terrain_shadow_spacing.glsl"
+#include "render/sample_spacing.glsl"
 // 1: the terrain's shadow from the sparse samples where they agree (render/terrain_shadow.frag);
 // 0: marched at every pixel (tests compare the two).
 #define TERRAIN_SHADOW_FROM_SAMPLES 1

@@ -9,7 +9,7 @@
 #include "common/gbuffer.glsl"
 #define SUN_VISIBILITY_TERRAIN 1
 #include "atmosphere/interface.glsl"
-#include "render/terrain_shadow_spacing.glsl"
+#include "render/sample_spacing.glsl"
 
 layout(binding = UNIT_GBUFFER_NORMAL) uniform sampler2D gNormal;
 layout(binding = UNIT_GBUFFER_DEPTH) uniform sampler2D gDepth;

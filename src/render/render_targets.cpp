@@ -9,11 +9,10 @@ namespace planet {
 
 namespace {
 
-// The terrain shadow's sample spacing, from the very file the shaders include.
-#include "shaders/render/terrain_shadow_spacing.glsl"
-constexpr int kTerrainShadowSpacing = TERRAIN_SHADOW_SPACING;
+// The sampled passes' spacings, from the very file the shaders include.
+#include "shaders/render/sample_spacing.glsl"
 
-constexpr GLsizeiptr kRefineListHeaderBytes = 16;  // render/sky_refine_list.glsl: groups x, y, z, count
+constexpr GLsizeiptr kRefineListHeaderBytes = 16;  // render/pixel_list.glsl: groups x, y, z, count
 
 gl::Texture makeTexture(GLenum format, glm::ivec2 size, const char* label) {
     gl::Texture t(GL_TEXTURE_2D);
@@ -78,10 +77,18 @@ bool RenderTargets::resize(glm::ivec2 size) {
     surfaceDistance_ = makeTexture(GL_R32F, size, "surface distance");
     surfaceFramebuffer_ =
         makeFramebuffer({&surfaceRadiance_, &surfaceDistance_}, &gbuffer_.depth, "surface radiance + depth");
+    seaReflection_ = makeTexture(GL_RGBA16F, size, "sea reflection");
+    oceanFramebuffer_ = makeFramebuffer({&surfaceRadiance_, &surfaceDistance_, &seaReflection_}, &gbuffer_.depth,
+                                        "surface radiance + sea reflection + depth");
+    surfaceRadianceFramebuffer_ = makeFramebuffer({&surfaceRadiance_}, nullptr, "surface radiance");
+    seaReflectionSamples_.size = (size + SEA_REFLECTION_SPACING - 1) / SEA_REFLECTION_SPACING;
+    seaReflectionSamples_.change = makeTexture(GL_RGBA16F, seaReflectionSamples_.size, "sea reflection samples");
+    seaReflectionSamples_.framebuffer =
+        makeFramebuffer({&seaReflectionSamples_.change}, nullptr, "sea reflection samples");
     hdr_ = makeTexture(GL_RGBA16F, size, "hdr");
     skyMedium_ = makeTexture(GL_RGBA32UI, size, "sky T, S");
     hdrFramebuffer_ = makeFramebuffer({&hdr_, &skyMedium_}, nullptr, "hdr + sky T, S");
-    terrainShadowSamples_.size = (size + kTerrainShadowSpacing - 1) / kTerrainShadowSpacing;
+    terrainShadowSamples_.size = (size + TERRAIN_SHADOW_SPACING - 1) / TERRAIN_SHADOW_SPACING;
     terrainShadowSamples_.visibility = makeTexture(GL_R32F, terrainShadowSamples_.size, "terrain shadow samples");
     terrainShadowSamples_.framebuffer =
         makeFramebuffer({&terrainShadowSamples_.visibility}, nullptr, "terrain shadow samples");
@@ -91,11 +98,8 @@ bool RenderTargets::resize(glm::ivec2 size) {
     sparseSky_.distanceError = makeTexture(GL_RG32F, sparseSky_.size, "sparse sky distance, history error");
     sparseSky_.framebuffer = makeFramebuffer({&sparseSky_.inscatter, &sparseSky_.transmittance, &sparseSky_.distanceError},
                                              nullptr, "sparse sky T, S, distance, history error");
-    skyRefineList_ = gl::Buffer();
-    glNamedBufferStorage(skyRefineList_.id(), kRefineListHeaderBytes + GLsizeiptr(sizeof(GLuint)) * size.x * size.y,
-                         nullptr, GL_DYNAMIC_STORAGE_BIT);
-    skyRefineList_.label("sky refine list");
-    clearSkyRefineList();
+    skyRefineList_ = makePixelList("sky refine list");
+    seaReflectionList_ = makePixelList("sea reflection list");
     ldr_ = makeTexture(GL_RGBA8, size, "ldr");
     ldrFramebuffer_ = makeFramebuffer({&ldr_}, nullptr, "ldr");
     seabedDepth_ = makeTexture(GL_DEPTH_COMPONENT32F, size, "seabed depth");
@@ -120,6 +124,11 @@ void RenderTargets::clearSurface() const {
     glClearNamedFramebufferfv(surfaceFramebuffer_.id(), GL_COLOR, 1, zero);
 }
 
+void RenderTargets::clearSeaReflection() const {
+    const float zero[4] = {0, 0, 0, 0};
+    glClearNamedFramebufferfv(oceanFramebuffer_.id(), GL_COLOR, 2, zero);
+}
+
 void RenderTargets::copySeabed() const {
     copyImage(gbuffer_.depth, seabedDepth_, size_);
     copyImage(surfaceRadiance_, seabedRadiance_, size_);
@@ -127,18 +136,27 @@ void RenderTargets::copySeabed() const {
 
 void RenderTargets::keepAntialiased() const { copyImage(antialiased_, hdr_, size_); }
 
-void RenderTargets::clearSkyRefineList() const {
-    const GLuint header[4] = {0, 1, 1, 0};  // groups x, y, z; count (render/sky_refine_list.glsl)
-    glNamedBufferSubData(skyRefineList_.id(), 0, sizeof header, header);
+gl::Buffer RenderTargets::makePixelList(const char* label) const {
+    gl::Buffer list;
+    glNamedBufferStorage(list.id(), kRefineListHeaderBytes + GLsizeiptr(sizeof(GLuint)) * size_.x * size_.y, nullptr,
+                         GL_DYNAMIC_STORAGE_BIT);
+    list.label(label);
+    clearPixelList(list);
+    return list;
 }
 
-std::vector<glm::ivec2> RenderTargets::readSkyRefineList() const {
+void RenderTargets::clearPixelList(const gl::Buffer& list) {
+    const GLuint header[4] = {0, 1, 1, 0};  // groups x, y, z; count (render/pixel_list.glsl)
+    glNamedBufferSubData(list.id(), 0, sizeof header, header);
+}
+
+std::vector<glm::ivec2> RenderTargets::readPixelList(const gl::Buffer& list) const {
     glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
     GLuint header[4] = {0, 0, 0, 0};
-    glGetNamedBufferSubData(skyRefineList_.id(), 0, sizeof header, header);
+    glGetNamedBufferSubData(list.id(), 0, sizeof header, header);
     std::vector<GLuint> packed(std::min<std::size_t>(header[3], std::size_t(size_.x) * std::size_t(size_.y)));
     if (!packed.empty())
-        glGetNamedBufferSubData(skyRefineList_.id(), kRefineListHeaderBytes, GLsizeiptr(packed.size() * sizeof(GLuint)),
+        glGetNamedBufferSubData(list.id(), kRefineListHeaderBytes, GLsizeiptr(packed.size() * sizeof(GLuint)),
                                 packed.data());
     std::vector<glm::ivec2> pixels;
     pixels.reserve(packed.size());

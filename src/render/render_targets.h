@@ -11,6 +11,12 @@
 //   hdr       RGBA16F linear radiance arriving at the camera (what `render --out x.exr` writes),
 //             with the sky passes' T and S beside it (skyMedium: RGBA32UI, T, S and the samples
 //             in the temporal history as half floats, render/sky_medium.glsl)
+//   sea reflection  RGBA16F: the sea's reflected ray at each pixel and the weight the clouds'
+//             change to its radiance takes there (ocean/ocean.frag writes it beside the surface
+//             targets: oceanFramebuffer); its samples, RGBA16F at 1 / SEA_REFLECTION_SPACING of the
+//             size: that change marched at one pixel of each block (ocean/sea_reflection.frag),
+//             added back into the surface radiance by the same file's compose program
+//             (surfaceRadianceFramebuffer, additive)
 //   terrain shadow  R32F, 1 / TERRAIN_SHADOW_SPACING of the size on each side (rounded up):
 //             the terrain's shadow at the corner pixel of each block (render/terrain_shadow.frag)
 //   sparse    a quarter of the size on each side (rounded up): the reduced-rate march's
@@ -19,7 +25,7 @@
 //             (render/sky_sparse.frag)
 //   refine    a buffer: the pixels the temporal reconstruction could not trust, listed
 //             (render/sky_temporal.frag lists them, render/sky_refine.comp marches them again
-//             at full rate, one invocation each; render/sky_refine_list.glsl): a 16-byte
+//             at full rate, one invocation each; render/pixel_list.glsl): a 16-byte
 //             header (the indirect dispatch's group counts, the count), then a uint per pixel
 //   ldr       RGBA8 tone-mapped sRGB bytes (what the window shows and PNGs hold)
 //   antialiased  RGBA16F: the temporal anti-aliasing's result, copied back into hdr
@@ -60,6 +66,13 @@ struct TerrainShadowSamples {
     gl::Framebuffer framebuffer;
 };
 
+// The clouds' change to the sea's reflection at one pixel of each block (ocean/sea_reflection.frag).
+struct SeaReflectionSamples {
+    glm::ivec2 size{0, 0};
+    gl::Texture change{GL_TEXTURE_2D};  // RGBA16F: dL_C, 1 where marched (0 0 0 0 where no sea)
+    gl::Framebuffer framebuffer;
+};
+
 // The reduced-rate march's samples (a quarter of the frame's size on each side).
 struct SparseSky {
     glm::ivec2 size{0, 0};
@@ -84,17 +97,28 @@ public:
     const gl::Texture& skyMedium() const { return skyMedium_; }
     const SparseSky& sparseSky() const { return sparseSky_; }
     const TerrainShadowSamples& terrainShadowSamples() const { return terrainShadowSamples_; }
+    const gl::Texture& seaReflection() const { return seaReflection_; }
+    const SeaReflectionSamples& seaReflectionSamples() const { return seaReflectionSamples_; }
     const gl::Buffer& skyRefineList() const { return skyRefineList_; }
     // Empties the refine list: no pixel listed, an indirect dispatch of no groups.
-    void clearSkyRefineList() const;
+    void clearSkyRefineList() const { clearPixelList(skyRefineList_); }
     // The pixels listed for refinement (x, y), read back (a test's or bench's look, it waits).
-    std::vector<glm::ivec2> readSkyRefineList() const;
+    std::vector<glm::ivec2> readSkyRefineList() const { return readPixelList(skyRefineList_); }
+    // The sea's pixels that march their own reflection (ocean/sea_reflection.frag), as above.
+    const gl::Buffer& seaReflectionList() const { return seaReflectionList_; }
+    void clearSeaReflectionList() const { clearPixelList(seaReflectionList_); }
+    std::vector<glm::ivec2> readSeaReflectionList() const { return readPixelList(seaReflectionList_); }
     const FrameHistory& history() const { return history_; }
     // hdr and skyMedium (the sky passes').
     GLuint hdrFramebuffer() const { return hdrFramebuffer_.id(); }
     GLuint ldrFramebuffer() const { return ldrFramebuffer_.id(); }
     // surface radiance + distance with the G-buffer's depth attached.
     GLuint surfaceFramebuffer() const { return surfaceFramebuffer_.id(); }
+    // ... and the sea reflection beside them (the ocean's; clearOcean() empties the sea reflection).
+    GLuint oceanFramebuffer() const { return oceanFramebuffer_.id(); }
+    void clearSeaReflection() const;
+    // The surface radiance alone (passes that add to it).
+    GLuint surfaceRadianceFramebuffer() const { return surfaceRadianceFramebuffer_.id(); }
 
     // Clears the surface targets to "no surface" (radiance 0, distance 0).
     void clearSurface() const;
@@ -110,6 +134,11 @@ public:
     void keepAntialiased() const;
 
 private:
+    // A list of pixels (render/pixel_list.glsl) for a frame of this size.
+    gl::Buffer makePixelList(const char* label) const;
+    static void clearPixelList(const gl::Buffer& list);
+    std::vector<glm::ivec2> readPixelList(const gl::Buffer& list) const;
+
     glm::ivec2 size_{0, 0};
     GBuffer gbuffer_;
     gl::Texture surfaceRadiance_{GL_TEXTURE_2D};
@@ -119,7 +148,12 @@ private:
     gl::Texture skyMedium_{GL_TEXTURE_2D};
     SparseSky sparseSky_;
     TerrainShadowSamples terrainShadowSamples_;
+    gl::Texture seaReflection_{GL_TEXTURE_2D};
+    SeaReflectionSamples seaReflectionSamples_;
+    gl::Framebuffer oceanFramebuffer_;
+    gl::Framebuffer surfaceRadianceFramebuffer_;
     gl::Buffer skyRefineList_;
+    gl::Buffer seaReflectionList_;
     gl::Framebuffer surfaceFramebuffer_;
     gl::Framebuffer hdrFramebuffer_;
     gl::Framebuffer ldrFramebuffer_;

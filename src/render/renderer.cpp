@@ -51,6 +51,7 @@ const char* frameResourceName(FrameResource r) {
         case R::GBuffer: return "G-buffer";
         case R::TerrainShadow: return "terrain shadow samples";
         case R::SurfaceRadiance: return "surface radiance";
+        case R::SeaReflection: return "sea reflection";
         case R::SparseSky: return "sparse sky";
         case R::SkyRefine: return "sky refine list";
         case R::HdrRadiance: return "HDR radiance";
@@ -82,6 +83,11 @@ Renderer::Renderer(const std::filesystem::path& shaderRoot, const atmosphere::Ta
       terrainShadow_(withAtmosphere(sources_, programTables_), "terrain shadow", "render/terrain_shadow.frag"),
       surfaceLight_(withAtmosphere(sources_, programTables_), "surface light", "render/surface_light.frag"),
       ocean_(sources_, programTables_),
+      seaReflection_(sources_, programTables_,
+                     gl::ProgramDesc{"sea reflection", {"common/fullscreen.vert", "ocean/sea_reflection.frag"}},
+                     {"SEA_REFLECTION_COMPOSE", "SEA_REFLECTION_LIST_ALL"}),
+      seaReflectionListed_(sources_, programTables_,
+                           gl::ProgramDesc{"sea reflection, listed pixels", {"ocean/sea_reflection.comp"}}),
       sky_(sources_, programTables_, gl::ProgramDesc{"sky", {"common/fullscreen.vert", "render/sky.frag"}},
            {"UNDER_WATER"}),
       skySparse_(sources_, programTables_,
@@ -147,16 +153,66 @@ std::vector<Renderer::Pass> Renderer::makePasses() {
                           surfaceLight_.draw();
                       },
                       [this] { return std::vector<gl::HotProgram*>{&surfaceLight_.program()}; }});
-    passes.push_back({{"ocean", {R::GBuffer, R::SurfaceRadiance}, {R::SurfaceRadiance, R::GBuffer}},
+    passes.push_back({{"ocean", {R::GBuffer, R::SurfaceRadiance}, {R::SurfaceRadiance, R::GBuffer, R::SeaReflection}},
                       [](const Scene& s) { return s.terrain.ocean; },
                       [this](const Scene& s) {
                           targets_.copySeabed();
-                          glBindFramebuffer(GL_FRAMEBUFFER, targets_.surfaceFramebuffer());
+                          targets_.clearSeaReflection();
+                          glBindFramebuffer(GL_FRAMEBUFFER, targets_.oceanFramebuffer());
                           glBindTextureUnit(binding::UNIT_SEABED_DEPTH, targets_.seabedDepth().id());
                           glBindTextureUnit(binding::UNIT_SEABED_RADIANCE, targets_.seabedRadiance().id());
                           ocean_.draw(s.atmosphere.elek_3d_table, lastPrepare_.underWater);
                       },
                       [this] { return ocean_.program().built(); }});
+    // The clouds in the sea's reflection: marched at one pixel of each block along the rays the
+    // ocean left, then spread and added to the surface radiance (ocean/sea_reflection.frag).
+    // Only where the ocean's per-pixel program ran with clouds in the sky: from high up the
+    // flat mirror has them from the grid, and from below the sea reflects nothing of them.
+    passes.push_back({{"sea reflection", {R::SurfaceRadiance, R::SeaReflection}, {R::SurfaceRadiance}},
+                      [this](const Scene& s) {
+                          return s.terrain.ocean && s.clouds.enabled && !ocean_.flatMirror() && !lastPrepare_.underWater;
+                      },
+                      [this](const Scene& s) {
+                          const SeaReflectionSamples& samples = targets_.seaReflectionSamples();
+                          glBindTextureUnit(binding::UNIT_SEA_REFLECTION, targets_.seaReflection().id());
+                          glBindTextureUnit(binding::UNIT_SURFACE_DISTANCE, targets_.surfaceDistance().id());
+                          glBindVertexArray(emptyVertexArray_.id());
+                          if (seaReflectionSamples_) {
+                              glBindFramebuffer(GL_FRAMEBUFFER, samples.framebuffer.id());
+                              glViewport(0, 0, samples.size.x, samples.size.y);
+                              glUseProgram(seaReflection_.get(s.atmosphere.elek_3d_table).id());
+                              glDrawArrays(GL_TRIANGLES, 0, 3);
+                              glViewport(0, 0, targets_.size().x, targets_.size().y);
+                          }
+                          glBindTextureUnit(binding::UNIT_SEA_REFLECTION_SAMPLES, samples.change.id());
+                          glBindFramebuffer(GL_FRAMEBUFFER, targets_.surfaceRadianceFramebuffer());
+                          targets_.clearSeaReflectionList();
+                          glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding::BUFFER_SEA_REFLECTION_LIST,
+                                           targets_.seaReflectionList().id());
+                          glEnablei(GL_BLEND, 0);
+                          glBlendFunci(0, GL_ONE, GL_ONE);
+                          // Mode SEA_REFLECTION_COMPOSE, or SEA_REFLECTION_LIST_ALL (every pixel listed).
+                          glUseProgram(seaReflection_.get(s.atmosphere.elek_3d_table, false, seaReflectionSamples_ ? 1 : 2).id());
+                          glDrawArrays(GL_TRIANGLES, 0, 3);
+                          glDisablei(GL_BLEND, 0);
+                          // The pixels the compose listed, each marched on its own and added in place.
+                          glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT |
+                                          GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+                          glBindImageTexture(binding::IMAGE_SURFACE_RADIANCE, targets_.surfaceRadiance().id(), 0,
+                                             GL_FALSE, 0, GL_READ_WRITE, GL_RGBA16F);
+                          glUseProgram(seaReflectionListed_.get(s.atmosphere.elek_3d_table).id());
+                          glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, targets_.seaReflectionList().id());
+                          glDispatchComputeIndirect(0);
+                          glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, 0);
+                          glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT |
+                                          GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+                      },
+                      [this] {
+                          std::vector<gl::HotProgram*> all = seaReflection_.built();
+                          const std::vector<gl::HotProgram*> listed = seaReflectionListed_.built();
+                          all.insert(all.end(), listed.begin(), listed.end());
+                          return all;
+                      }});
     auto fullRate = [this](const Scene&) { return !lastPrepare_.reducedRate; };
     auto reducedRate = [this](const Scene&) { return lastPrepare_.reducedRate; };
     passes.push_back({{"sky", {R::SurfaceRadiance}, {R::HdrRadiance}}, fullRate,
@@ -395,7 +451,7 @@ bool Renderer::matchAtmosphereTables() {
     surfaceLight_.program().setSources(withAtmosphere(sources_, sizes));
     terrainShadow_.program().setSources(withAtmosphere(sources_, sizes));
     std::vector<gl::HotProgram*> rebuilt{&terrainShadow_.program(), &surfaceLight_.program()};
-    for (AtmosphereProgram* p : {&ocean_.program(), &sky_, &skySparse_, &skyTemporal_, &skyRefine_}) {
+    for (AtmosphereProgram* p : {&ocean_.program(), &seaReflection_, &seaReflectionListed_, &sky_, &skySparse_, &skyTemporal_, &skyRefine_}) {
         p->setTableSizes(sizes);
         const std::vector<gl::HotProgram*> built = p->built();
         rebuilt.insert(rebuilt.end(), built.begin(), built.end());

@@ -88,7 +88,7 @@ namespace planet {
 
 // What a pass reads and writes, for the order check. The baked resources, the blocks and
 // the atmosphere tables are made by prepare() and are not listed.
-enum class FrameResource { GBuffer, TerrainShadow, SurfaceRadiance, SparseSky, SkyRefine, HdrRadiance, LdrImage, Window };
+enum class FrameResource { GBuffer, TerrainShadow, SurfaceRadiance, SeaReflection, SparseSky, SkyRefine, HdrRadiance, LdrImage, Window };
 const char* frameResourceName(FrameResource r);
 
 struct PassDeclaration {
@@ -153,6 +153,10 @@ public:
     // Count the sky pass's cloud march steps from the next frame on (planet bench).
     void setCloudStatistics(bool on) { clouds_.setStatistics(on); }
     OceanPass& ocean() { return ocean_; }
+    // The clouds in the sea's reflection from samples at one pixel of each block and a march
+    // where they do not serve (true, the default; ocean/sea_reflection.glsl), or marched at
+    // every sea pixel (false: tests compare the two).
+    void setSeaReflectionSamples(bool on) { seaReflectionSamples_ = on; }
     TerrainPass& terrain() { return terrain_; }
     // What a reduced-rate frame without history does: march at full rate (true, the default:
     // stills and sequences start exact) or reconstruct from its sparse samples alone (the
@@ -212,6 +216,8 @@ private:
     FullscreenPass terrainShadow_;
     FullscreenPass surfaceLight_;
     OceanPass ocean_;
+    AtmosphereProgram seaReflection_;  // mode SEA_REFLECTION_COMPOSE: the samples' spread (ocean/sea_reflection.frag)
+    AtmosphereProgram seaReflectionListed_;  // the pixels the spread could not serve (ocean/sea_reflection.comp)
     AtmosphereProgram sky_;  // mode UNDER_WATER: the camera under the sea
     AtmosphereProgram skySparse_;
     AtmosphereProgram skyTemporal_;  // mode STILL_FRAME: frames where nothing moved
@@ -228,6 +234,7 @@ private:
     int frameIndex_ = 0;
     bool fullRateOnReset_ = true;
     bool stillFrameProgram_ = true;
+    bool seaReflectionSamples_ = true;
     glm::dvec2 jitterPx_{0.0};
     bool temporalAntialiasing_ = false;
     glm::dvec2 frameJitterPx_{0.0};          // this frame's: jitterPx_, or the TAA's
