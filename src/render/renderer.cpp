@@ -161,7 +161,9 @@ std::vector<Renderer::Pass> Renderer::makePasses() {
                           glBindFramebuffer(GL_FRAMEBUFFER, targets_.oceanFramebuffer());
                           glBindTextureUnit(binding::UNIT_SEABED_DEPTH, targets_.seabedDepth().id());
                           glBindTextureUnit(binding::UNIT_SEABED_RADIANCE, targets_.seabedRadiance().id());
+                          glBeginQuery(GL_ANY_SAMPLES_PASSED, oceanDrew_.id());
                           ocean_.draw(s.atmosphere.elek_3d_table, lastPrepare_.underWater);
+                          glEndQuery(GL_ANY_SAMPLES_PASSED);
                       },
                       [this] { return ocean_.program().built(); }});
     // The clouds in the sea's reflection: marched at one pixel of each block along the rays the
@@ -173,6 +175,9 @@ std::vector<Renderer::Pass> Renderer::makePasses() {
                           return s.terrain.ocean && s.clouds.enabled && !ocean_.flatMirror() && !lastPrepare_.underWater;
                       },
                       [this](const Scene& s) {
+                          // Nothing to do where the ocean drew no pixel (an inland view): its
+                          // draws skipped on the GPU, and the list left empty dispatches no group.
+                          glBeginConditionalRender(oceanDrew_.id(), GL_QUERY_WAIT);
                           const SeaReflectionSamples& samples = targets_.seaReflectionSamples();
                           glBindTextureUnit(binding::UNIT_SEA_REFLECTION, targets_.seaReflection().id());
                           glBindTextureUnit(binding::UNIT_SURFACE_DISTANCE, targets_.surfaceDistance().id());
@@ -195,6 +200,7 @@ std::vector<Renderer::Pass> Renderer::makePasses() {
                           glUseProgram(seaReflection_.get(s.atmosphere.elek_3d_table, false, seaReflectionSamples_ ? 1 : 2).id());
                           glDrawArrays(GL_TRIANGLES, 0, 3);
                           glDisablei(GL_BLEND, 0);
+                          glEndConditionalRender();
                           // The pixels the compose listed, each marched on its own and added in place.
                           glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT |
                                           GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);

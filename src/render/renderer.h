@@ -235,6 +235,9 @@ private:
     bool fullRateOnReset_ = true;
     bool stillFrameProgram_ = true;
     bool seaReflectionSamples_ = true;
+    // Whether the ocean drew any pixel this frame: the sea reflection pass draws only then
+    // (conditional rendering: no read-back, the GPU skips the draws).
+    gl::Query oceanDrew_{GL_ANY_SAMPLES_PASSED};
     glm::dvec2 jitterPx_{0.0};
     bool temporalAntialiasing_ = false;
     glm::dvec2 frameJitterPx_{0.0};          // this frame's: jitterPx_, or the TAA's
