@@ -59,6 +59,12 @@ TEST(ShadersOffline, EveryStageValidatesWithGlslang) {
             const std::size_t n = variants.size();
             for (std::size_t i = 0; i < n; ++i) variants.push_back(variants[i] + "#define OCEAN_FLAT_MIRROR 1\n");
         }
+        // The sea reflection's spread and its every-pixel list (src/render/renderer.cpp: the modes of seaReflection_).
+        if (expanded.text.find("#if SEA_REFLECTION_COMPOSE") != std::string::npos) {
+            const std::size_t n = variants.size();
+            for (const char* mode : {"#define SEA_REFLECTION_COMPOSE 1\n", "#define SEA_REFLECTION_LIST_ALL 1\n"})
+                for (std::size_t i = 0; i < n; ++i) variants.push_back(variants[i] + mode);
+        }
         for (const std::string& variant : variants) {
             std::string text = expanded.text;
             text.insert(text.find('\n') + 1, variant);  // after #version

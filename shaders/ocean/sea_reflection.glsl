@@ -32,8 +32,9 @@ layout(binding = UNIT_SURFACE_DISTANCE) uniform sampler2D surfaceDistance;  // m
 
 // A sample's change is taken for a pixel in proportion to how near its reflected ray passes to
 // the pixel's through the cloud layer (their crossings of the layer's middle): fully where they
-// cross at one place, not at all this far apart (km). Where the samples around weigh less than
-// SEA_REFLECTION_MIN_WEIGHT together, the pixel is marched on its own. Rays that leave the sea
+// cross at one place, not at all this far apart (km). Where the four corner samples around (a
+// corner counted as often as it is one: a pixel on a sample has it four times) weigh less than
+// SEA_REFLECTION_MIN_WEIGHT together, of 4 at most, the pixel is marched on its own. Rays that leave the sea
 // steeply cross close together; near the horizon a small turn moves the crossing by kilometres,
 // and there the pixels march their own.
 const float SEA_REFLECTION_CROSSING_SPREAD_KM = 1.0;
