@@ -51,7 +51,8 @@ void addTerrainParams(std::vector<ParamSpec>& table) {
         &TerrainParams::ocean);
     add("shadows", "", 0.0, 1.0,
         "The terrain casts shadows: mountains shade the ground at a low sun (a march over the height field "
-        "towards the sun for each lit pixel, on the ground and on the sea).",
+        "towards the sun: on the ground at one pixel of each 2x2 block and where those disagree, on the sea "
+        "at each lit pixel near land).",
         &TerrainParams::shadows);
     add("light_shafts", "", 0.0, 1.0,
         "Light shafts: the terrain's shadows in the air, taken out of the light the air scatters towards the camera "
