@@ -7,7 +7,11 @@
 // sky-and-cloud reflection under: it fades out towards the image's edges, where the ray may
 // pass behind a ridge rather than into it (the depth buffer has no thickness), and for rays
 // that turn towards the camera. Rays that leave the screen, or climb above the highest
-// mountain, find nothing (confidence 0): the sky's reflection alone, as before.
+// mountain, find nothing (confidence 0): the sky's reflection alone, as before; nor do rays
+// from the open sea, where the continents map's slope bound keeps all ground within their reach
+// below sea level (terrain/terrain_shadow.glsl's landMayLieWithin): those search no step, in a
+// loop of no turns that a software renderer skips (from orbit most of the sea; the search was
+// half the ocean's fragment cost there).
 //
 // The march is in screen space: a ray P(t) = origin + t dir projects onto the segment from
 // the origin's image (u = 0) to the vanishing point of dir (u = 1), and with w the depth
@@ -22,10 +26,15 @@
 // bisections of the step where the ray went behind the depth buffer: bounded cost on
 // llvmpipe whatever the scene.
 //
-// Needs common/frame_uniforms.glsl, ocean/ocean_block.glsl and terrain/terrain_block.glsl.
+// Needs common/frame_uniforms.glsl, ocean/ocean_block.glsl, terrain/terrain_block.glsl and
+// terrain/terrain_shadow.glsl (with the continents map, uContinents).
 
 // Off (0) the sea reflects the sky and the clouds only (tests compare the two).
 #define OCEAN_SCREEN_SPACE_REFLECTIONS 1
+
+// How far the continents map's filtering may move a sample's place, rad: 2/32 of a texel
+// (src/ocean/land_cull.h), for landMayLieWithin.
+float continentSampleSlack() { return 2.0 / 32.0 / float(textureSize(uContinents, 0).x); }
 
 const int SSR_STEPS = 20;
 const int SSR_REFINEMENTS = 5;
@@ -103,10 +112,12 @@ ScreenReflection traceScreenReflection(vec3 origin, vec3 dir, vec3 up, float hei
     float reach = reachBelowPeaks(heightM, dot(dir, up));
     float uEnd = min(reach / (reach + scale), screenExit(ndc0, ndcEnd));
     if (uEnd <= 0.0) return none;
+    bool land = landMayLieWithin(up, reach / M_PER_KM, heightM, frame.planetRadius / M_PER_KM,
+                                 ocean.continentLipschitz, continentSampleSlack(), uContinents);
 
     float jitter = stepJitter(pixel);
     float uFront = 0.0, uBehind = -1.0;
-    for (int i = 0; i < SSR_STEPS; ++i) {
+    for (int i = 0; i < (land ? SSR_STEPS : 0); ++i) {
         float u = i + 1 < SSR_STEPS ? uEnd * (float(i) + 1.0 - jitter) / float(SSR_STEPS) : uEnd;
         if (behindDepthBuffer(depthCopy, ndc0, ndcEnd, w0, u) > 0.0) {
             uBehind = u;
@@ -115,7 +126,7 @@ ScreenReflection traceScreenReflection(vec3 origin, vec3 dir, vec3 up, float hei
         uFront = u;
     }
     if (uBehind < 0.0) return none;
-    for (int i = 0; i < SSR_REFINEMENTS; ++i) {
+    for (int i = 0; i < (uBehind >= 0.0 ? SSR_REFINEMENTS : 0); ++i) {
         float u = 0.5 * (uFront + uBehind);
         if (behindDepthBuffer(depthCopy, ndc0, ndcEnd, w0, u) > 0.0) uBehind = u;
         else uFront = u;
@@ -123,15 +134,17 @@ ScreenReflection traceScreenReflection(vec3 origin, vec3 dir, vec3 up, float hei
     // Into the terrain, the ray ends up just behind the surface: by no more than the last
     // interval's own depth change (or a pixel's worth of a steep face). Far behind, it went
     // behind a ridge and may come out again: the depth buffer cannot say, so it fades.
-    float behind = behindDepthBuffer(depthCopy, ndc0, ndcEnd, w0, uBehind);
-    float thickness = max(2.0 * (uBehind - uFront) / (1.0 - uBehind), SSR_MIN_THICKNESS);
-    float inside = 1.0 - smoothstep(thickness, 2.0 * thickness, behind);
-    vec2 ndcHit = mix(ndc0, ndcEnd, uBehind);
-    float edge = smoothstep(0.0, SSR_EDGE_FADE_NDC, 1.0 - max(abs(ndcHit.x), abs(ndcHit.y)));
-    ScreenReflection hit;
-    hit.radiance = texelFetch(radianceCopy, pixelAt(ndcHit), 0).rgb;
-    hit.distance = scale * uBehind / (1.0 - uBehind);
-    hit.confidence = forwardFade * inside * edge;
+    ScreenReflection hit = none;
+    for (int i = 0; i < (uBehind >= 0.0 ? 1 : 0); ++i) {  // a loop, not an if: skipped where no pixel hit
+        float behind = behindDepthBuffer(depthCopy, ndc0, ndcEnd, w0, uBehind);
+        float thickness = max(2.0 * (uBehind - uFront) / (1.0 - uBehind), SSR_MIN_THICKNESS);
+        float inside = 1.0 - smoothstep(thickness, 2.0 * thickness, behind);
+        vec2 ndcHit = mix(ndc0, ndcEnd, uBehind);
+        float edge = smoothstep(0.0, SSR_EDGE_FADE_NDC, 1.0 - max(abs(ndcHit.x), abs(ndcHit.y)));
+        hit.radiance = texelFetch(radianceCopy, pixelAt(ndcHit), 0).rgb;
+        hit.distance = scale * uBehind / (1.0 - uBehind);
+        hit.confidence = forwardFade * inside * edge;
+    }
     return hit;
 #else
     return none;

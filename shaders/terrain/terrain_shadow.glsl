@@ -141,6 +141,19 @@ float terrainSunVisibility(vec3 point, vec3 sun, float planetRadiusKm, float sun
                                      shape, continents);
 }
 
+// Whether any ground above sea level (`seaLevelM`, at or above 0) may lie within `reachKm` of
+// the sea's point at `up`: false where the continent value stays below 0 (the sea floor, never
+// above sea level 0) everywhere that close, by the map's slope bound `continentLipschitz` (per
+// radian; src/ocean/land_cull.h) over the reach x 1.25 (a ray's curve over the sphere) plus
+// `sampleSlackRad` (the filter's rounding of a sample's place). A sea level below 0, or no slope
+// bound, says true.
+bool landMayLieWithin(vec3 up, float reachKm, float seaLevelM, float planetRadiusKm, float continentLipschitz,
+                      float sampleSlackRad, samplerCube continents) {
+    if (seaLevelM < 0.0f || !(continentLipschitz > 0.0f)) return true;
+    float reach = 1.25f * reachKm / planetRadiusKm + sampleSlackRad;
+    return continentValue(up, continents) + continentLipschitz * reach >= 0.0f;
+}
+
 // Whether the terrain may shadow the sea's surface at `up` (the march from `seaLevelM`, at or
 // above 0): false where the continent value stays below 0 (the sea floor, never above sea
 // level 0) all along the sun's ray as far as the march reaches (until the ray clears the
@@ -151,8 +164,6 @@ float terrainSunVisibility(vec3 point, vec3 sun, float planetRadiusKm, float sun
 // where nothing could shadow it. A sea level below 0, or no slope bound, always marches.
 bool terrainShadowMayReachSea(vec3 up, vec3 sun, float seaLevelM, float planetRadiusKm, float continentLipschitz,
                               float sampleSlackRad, TerrainShape shape, samplerCube continents) {
-    if (seaLevelM < 0.0f || !(continentLipschitz > 0.0f)) return true;
     float reachKm = min(TERRAIN_SHADOW_MAX_KM, (shape.maxHeight - seaLevelM) * 0.001f / max(dot(up, sun), 1e-4f));
-    float reach = 1.25f * reachKm / planetRadiusKm + sampleSlackRad;
-    return continentValue(up, continents) + continentLipschitz * reach >= 0.0f;
+    return landMayLieWithin(up, reachKm, seaLevelM, planetRadiusKm, continentLipschitz, sampleSlackRad, continents);
 }
