@@ -3,6 +3,7 @@
 // SEA_REFLECTION_LIST_ALL the compose lists every pixel to be marched on its own (the
 // per-pixel march, to compare with: Renderer::setSeaReflectionSamples).
 #include "ocean/sea_reflection.glsl"
+#include "render/block_samples.glsl"
 
 #ifndef SEA_REFLECTION_COMPOSE
 #define SEA_REFLECTION_COMPOSE 0
@@ -21,10 +22,8 @@ void main() {
     vec4 own = texelFetch(seaReflection, pixel, 0);
     if (own.w <= 0.0) discard;
     vec3 crossing = layerCrossing(seaPointAt(pixel), normalize(own.xyz));
-    ivec2 last = textureSize(seaReflectionSamples, 0) - 1;
-    ivec2 low = pixel / SEA_REFLECTION_SPACING;
-    ivec2 high = min((pixel + SEA_REFLECTION_SPACING - 1) / SEA_REFLECTION_SPACING, last);
-    ivec2 corners[4] = ivec2[4](low, ivec2(high.x, low.y), ivec2(low.x, high.y), high);
+    ivec2 corners[4];
+    blockSampleCorners(pixel, SEA_REFLECTION_SPACING, textureSize(seaReflectionSamples, 0) - 1, corners);
     vec3 sum = vec3(0.0);
     float total = 0.0;
     for (int i = 0; i < 4; ++i) {  // a corner counted twice (a pixel in a row or column of samples) weighs twice

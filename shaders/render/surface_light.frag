@@ -21,6 +21,7 @@
 #include "ocean/water.glsl"
 #include "terrain/rough_cosine.glsl"
 #include "render/sample_spacing.glsl"
+#include "render/block_samples.glsl"
 // 1: the terrain's shadow from the sparse samples where they agree (render/terrain_shadow.frag);
 // 0: marched at every pixel (tests compare the two).
 #define TERRAIN_SHADOW_FROM_SAMPLES 1
@@ -67,19 +68,18 @@ float terrainVisibility(ivec2 pixel, vec3 point, bool facesSun) {
     float clearance = TERRAIN_SHADOW_NO_SURFACE;
     int marches = facesSun ? 1 : 0;
 #if TERRAIN_SHADOW_FROM_SAMPLES
-    ivec2 last = textureSize(terrainShadowSamples, 0) - 1;
-    ivec2 low = pixel / TERRAIN_SHADOW_SPACING;
-    ivec2 high = min((pixel + TERRAIN_SHADOW_SPACING - 1) / TERRAIN_SHADOW_SPACING, last);
-    float a = texelFetch(terrainShadowSamples, low, 0).r;
-    float b = texelFetch(terrainShadowSamples, ivec2(high.x, low.y), 0).r;
-    float c = texelFetch(terrainShadowSamples, ivec2(low.x, high.y), 0).r;
-    float d = texelFetch(terrainShadowSamples, high, 0).r;
+    ivec2 corners[4];
+    blockSampleCorners(pixel, TERRAIN_SHADOW_SPACING, textureSize(terrainShadowSamples, 0) - 1, corners);
+    float a = texelFetch(terrainShadowSamples, corners[0], 0).r;
+    float b = texelFetch(terrainShadowSamples, corners[1], 0).r;
+    float c = texelFetch(terrainShadowSamples, corners[2], 0).r;
+    float d = texelFetch(terrainShadowSamples, corners[3], 0).r;
     float lowest = min(min(a, b), min(c, d));
     float highest = max(max(a, b), max(c, d));
     bool surface = lowest > 0.5 * TERRAIN_SHADOW_NO_SURFACE;
     bool lit = lowest >= radius + TERRAIN_SHADOW_LIT_MARGIN;
     bool shadowed = surface && highest <= -radius;
-    bool onASample = low == high && surface;
+    bool onASample = corners[0] == corners[3] && surface;
     if (lit || shadowed || onASample) {
         clearance = a;
         marches = 0;

@@ -114,7 +114,7 @@ public:
     GLuint ldrFramebuffer() const { return ldrFramebuffer_.id(); }
     // surface radiance + distance with the G-buffer's depth attached.
     GLuint surfaceFramebuffer() const { return surfaceFramebuffer_.id(); }
-    // ... and the sea reflection beside them (the ocean's; clearOcean() empties the sea reflection).
+    // ... and the sea reflection beside them (the ocean's; clearSeaReflection() empties it).
     GLuint oceanFramebuffer() const { return oceanFramebuffer_.id(); }
     void clearSeaReflection() const;
     // The surface radiance alone (passes that add to it).
