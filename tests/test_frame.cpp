@@ -51,7 +51,8 @@ TEST_F(FrameTest, TheRenderersPassesAreDeclaredInAnOrderThatHolds) {
     EXPECT_TRUE(checkPassOrder(passes).empty());
     std::vector<std::string> names;
     for (const PassDeclaration& p : passes) names.push_back(p.name);
-    EXPECT_EQ(names, (std::vector<std::string>{"terrain", "terrain shadow", "surface light", "ocean", "sea reflection", "sky", "sky march", "sky temporal",
+    EXPECT_EQ(names, (std::vector<std::string>{"terrain", "terrain shadow", "surface light", "ocean", "terrain reflection",
+                                              "sea reflection", "sky", "sky march", "sky temporal",
                                               "sky refine", "antialias", "tonemap", "ui"}));
 }
 

@@ -169,7 +169,8 @@ TEST_F(RenderTest, ProfilerTimesEveryPassOnTheGpuAndCpu) {
         EXPECT_GE(p.gpuMs.size(), 2u) << p.name;  // the ring may drop frames on a slow GPU, never all
         EXPECT_GE(p.gpuMs.min(), 0.0) << p.name;
     }
-    EXPECT_EQ(names, (std::vector<std::string>{"prepare", "terrain", "terrain shadow", "surface light", "ocean", "sky", "tonemap"}));
+    EXPECT_EQ(names, (std::vector<std::string>{"prepare", "terrain", "terrain shadow", "surface light", "ocean", "terrain reflection", "sky",
+                                              "tonemap"}));
 }
 
 TEST_F(RenderTest, TerrainLeavesNoHolesWhereTheGroundMustBe) {

@@ -21,11 +21,13 @@ const int BUFFER_OCEAN_WAVES = 3;   // one record per wave (ocean/ocean_waves.gl
 const int BUFFER_CLOUD_STATISTICS = 4;  // the sky pass's march step counts, when asked (planet bench)
 const int BUFFER_SKY_REFINE = 5;    // the pixels the temporal reconstruction marks for a full-rate march (render/pixel_list.glsl)
 const int BUFFER_SEA_REFLECTION_LIST = 6;  // the sea's pixels that march their own reflection (ocean/sea_reflection.frag)
+const int BUFFER_TERRAIN_REFLECTION_LIST = 7;  // the sea's pixels that may reflect the terrain (ocean/terrain_reflection.glsl)
 
 // Image units (the passes that store into a frame target from a compute shader).
 const int IMAGE_HDR_RADIANCE = 0;   // RGBA16F radiance arriving at the camera
 const int IMAGE_SKY_MEDIUM = 1;     // RGBA32UI the sky passes' T, S and samples (render/sky_medium.glsl)
 const int IMAGE_SURFACE_RADIANCE = 2;  // RGBA16F radiance leaving the surface (ocean/sea_reflection.comp adds to it)
+const int IMAGE_SEA_REFLECTION = 3;    // RGBA32F the sea's reflected ray and weight (ocean/terrain_reflection.comp lowers it)
 
 // Texture units.
 const int UNIT_GBUFFER_NORMAL = 0;          // RGBA16F world normal
@@ -54,5 +56,6 @@ const int UNIT_HISTORY_SURFACE_DISTANCE = 22;   // R32F: the previous frame's su
 const int UNIT_HISTORY_RADIANCE = 24;       // RGBA16F: the previous frame's hdr (anti-aliased when the explorer's TAA is on)
 const int UNIT_TERRAIN_DETAIL = 23;         // RGBA16F tiling detail height field, mipmapped, GL_REPEAT (terrain/detail_texture.h)
 const int UNIT_TERRAIN_SHADOW = 25;         // R32F, half size: the terrain shadow's samples (render/terrain_shadow.frag)
-const int UNIT_SEA_REFLECTION = 21;         // RGBA16F: the sea's reflected ray and the clouds' weight there (ocean/ocean.frag)
+const int UNIT_SEA_REFLECTION = 21;         // RGBA32F: the sea's reflected ray and the clouds' weight there (ocean/ocean.frag)
+const int UNIT_SEA_SKY_REFLECTION = 28;     // RGBA32F: the sky the sea reflected where the terrain may be reflected, its distance (ocean/ocean.frag)
 const int UNIT_SEA_REFLECTION_SAMPLES = 27; // RGBA16F, half size: the clouds' change to the sea's reflection (ocean/sea_reflection.frag)

@@ -12,7 +12,10 @@
 //     (ocean/cloud_reflection.glsl, OCEAN_FLAT_MIRROR);
 //     and of the terrain where the reflected ray meets it on screen (Michelic §6: "screen-
 //     space reflections of the terrain"; ocean/screen_space_reflections.glsl), seen through
-//     the air between, faded into the sky's reflection where the search is unsure;
+//     the air between, faded into the sky's reflection where the search is unsure: searched
+//     by the terrain reflection pass (ocean/terrain_reflection.comp) at the pixels where
+//     this pass finds that land may lie within the reflected ray's reach, from what it
+//     leaves in its sea sky reflection target (the sky reflected there and its weight);
 //   - sun glitter: the sun's irradiance at the surface (Elek Eq. 17, with the sun's
 //     visibility) times a Gaussian slope distribution whose variance is the slopes of the
 //     waves too small for the pixel plus the ripples finer than any wave (Cox & Munk 1954;
@@ -58,10 +61,15 @@ layout(binding = UNIT_SEABED_RADIANCE) uniform sampler2D seabedRadiance;   // co
 
 layout(location = 0) out vec4 outSurfaceRadiance;
 layout(location = 1) out float outSurfaceDistance;
-// The reflected ray and the weight of the clouds' change to its radiance in this pixel's
-// (coverage x Fresnel x the sky's share beside the terrain's reflection), for the sea
-// reflection pass; weight 0 where it adds nothing (the flat mirror, from below, no sea).
+// The reflected ray and the reflection's weight in this pixel's radiance, coverage x Fresnel
+// (0 where it reflects nothing: from below, no sea), for the passes that change what the
+// pixel reflects: the terrain reflection pass (which lowers the weight to the sky's share
+// beside the terrain) and the sea reflection pass (the clouds' change, times that weight).
 layout(location = 2) out vec4 outSeaReflection;
+// Where the terrain may be reflected instead of the sky (land may lie within the reflected
+// ray's reach): the sky this pixel reflected (with the clouds' change, as a flat mirror) and
+// the sea's own distance along the view ray, m, for the terrain reflection pass; 0 elsewhere.
+layout(location = 3) out vec4 outSeaSkyReflection;
 
 layout(depth_greater) out float gl_FragDepth;  // reversed-Z: only ever moved towards the camera
 
@@ -73,29 +81,23 @@ const float SHORE_FADE_M = 0.5;  // water path over which the sea fades in at th
 // Off (0), no foam where the waves break at the shore (tests compare the two).
 #define OCEAN_FOAM 1
 
-// What the sea reflects along `reflected` from `point` (km from the planet centre; this
-// fragment): the terrain where the reflected ray finds it on screen (ocean/
-// screen_space_reflections.glsl), over the sky and the clouds where it does not, blended by
-// the search's confidence so that no seam shows where it gives up. `skyShare`: the sky's
-// weight in it (1 - the confidence), which the clouds' change takes too.
-vec3 reflectedRadiance(vec3 point, vec3 reflected, vec3 up, ivec2 pixel, vec3 sun, out float skyShare) {
-    ScreenReflection land = traceScreenReflection(tePosition, reflected, up, ocean.seaLevel, pixel, seabedDepth,
-                                                  seabedRadiance);
+// The sky the sea reflects along `reflected` from `point` (km from the planet centre; this
+// fragment): the clear sky, with the clouds' change from the grid's points where the sea is a
+// flat mirror to every pixel (else the sea reflection pass adds it). The terrain reflected in
+// its place is the terrain reflection pass's.
+vec3 reflectedSky(vec3 point, vec3 reflected, vec3 sun) {
     vec3 clearTransmittance;
     vec3 radiance = SkyRadiance(point, reflected, sun, clearTransmittance);
 #if OCEAN_FLAT_MIRROR
-    // The sea a flat mirror to every pixel: the clouds' change from the grid's points.
     radiance += teCloudReflection;
 #endif
-    if (land.confidence > 0.0)
-        radiance = mix(radiance, reflectedTerrainRadiance(land, point, reflected, sun), land.confidence);
-    skyShare = 1.0 - land.confidence;
     return radiance;
 }
 
 void main() {
     ivec2 pixel = ivec2(gl_FragCoord.xy);
     outSeaReflection = vec4(0.0);
+    outSeaSkyReflection = vec4(0.0);
     // The surface's step from this pixel to the next, taken before any discard (derivatives
     // need the whole quad): how far the water's depth changes across the pixel (the shore's
     // coverage below).
@@ -194,11 +196,13 @@ void main() {
     }
 
     vec3 reflected = SeaReflectedRay(view, normal, up);
-    float skyShare;
-    vec3 sky = reflectedRadiance(point, reflected, up, pixel, sun, skyShare);
-#if !OCEAN_FLAT_MIRROR
-    outSeaReflection = vec4(reflected, coverage * fresnel * skyShare);
-#endif
+    vec3 sky = reflectedSky(point, reflected, sun);
+    // The reflection's weight in the pixel, for the passes that change what it reflects: the
+    // sea reflection pass (the clouds' change, but as a flat mirror, which has it) and the
+    // terrain reflection pass, which searches the terrain where it may be reflected instead.
+    outSeaReflection = vec4(reflected, coverage * fresnel);
+    if (terrainMayBeReflected(up, reflected, ocean.seaLevel))
+        outSeaSkyReflection = vec4(sky, surfaceDistance);
     // The sun's visibility from the water's surface (the clouds' shadows and the terrain's, the
     // march starting at sea level, not on the sea floor), formed once for the light into the
     // water and the glitter.

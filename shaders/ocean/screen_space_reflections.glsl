@@ -3,15 +3,18 @@
 // followed across the image against the copy of the G-buffer depth taken before the ocean
 // pass; where it passes behind the terrain the terrain's surface radiance there (the copy of
 // the surface light's target: no air in it) is what the sea reflects. Only what is on screen
-// can be found, so the result comes with a confidence in [0, 1] that ocean.frag blends the
-// sky-and-cloud reflection under: it fades out towards the image's edges, where the ray may
+// can be found, so the result comes with a confidence in [0, 1] that the terrain reflection
+// pass blends the sky-and-cloud reflection under: it fades out towards the image's edges, where the ray may
 // pass behind a ridge rather than into it (the depth buffer has no thickness), and for rays
 // that turn towards the camera. Rays that leave the screen, or climb above the highest
-// mountain, find nothing (confidence 0): the sky's reflection alone, as before; nor do rays
-// from the open sea, where the continents map's slope bound keeps all ground within their reach
-// below sea level (terrain/terrain_shadow.glsl's landMayLieWithin): those search no step, in a
-// loop of no turns that a software renderer skips (from orbit most of the sea; the search was
-// half the ocean's fragment cost there).
+// mountain, find nothing (confidence 0): the sky's reflection alone, as before.
+//
+// Rays from the open sea, where the continents map's slope bound keeps all ground within their
+// reach below sea level (terrainMayBeReflected), are not searched at all: the ocean pass lists
+// the others (it leaves the sky it reflected there), and the terrain reflection pass (ocean/
+// terrain_reflection.comp) searches those alone. A search in the ocean's own program cost every
+// sea pixel, found or not, on a software renderer, which runs the code of an if, and one turn
+// of a loop that no pixel enters, for every pixel, masked (from orbit: a third of the ocean).
 //
 // The march is in screen space: a ray P(t) = origin + t dir projects onto the segment from
 // the origin's image (u = 0) to the vanishing point of dir (u = 1), and with w the depth
@@ -31,6 +34,8 @@
 
 // Off (0) the sea reflects the sky and the clouds only (tests compare the two).
 #define OCEAN_SCREEN_SPACE_REFLECTIONS 1
+// On (1), every sea pixel is searched, land within reach or not (tests: the same image).
+#define TERRAIN_REFLECTION_SEARCH_ALL 0
 
 // How far the continents map's filtering may move a sample's place, rad: 2/32 of a texel
 // (src/ocean/land_cull.h), for landMayLieWithin.
@@ -95,12 +100,11 @@ float behindDepthBuffer(sampler2D depthCopy, vec2 ndc0, vec2 ndcEnd, float w0, f
     return sceneDepth / max(rayDepth, 1e-30) - 1.0;  // w_ray / w_scene - 1
 }
 
-// The terrain seen along the reflected ray from `origin` (m from the camera, world axes, on
-// the sea at heightM above the planet radius), or confidence 0.
-ScreenReflection traceScreenReflection(vec3 origin, vec3 dir, vec3 up, float heightM, ivec2 pixel,
-                                       sampler2D depthCopy, sampler2D radianceCopy) {
+// The search along the reflected ray from `origin` (m from the camera, world axes), which stays
+// below the highest mountain for `reach` m: the terrain it meets on screen, or confidence 0.
+ScreenReflection searchScreenReflection(vec3 origin, vec3 dir, float reach, ivec2 pixel, sampler2D depthCopy,
+                                        sampler2D radianceCopy) {
     ScreenReflection none = ScreenReflection(vec3(0.0), 0.0, 0.0);
-#if OCEAN_SCREEN_SPACE_REFLECTIONS
     vec4 clip0 = clipFromWorldPoint(origin);
     vec4 clipDir = clipFromWorldDirection(dir);
     float w0 = clip0.w, wd = clipDir.w;
@@ -109,15 +113,12 @@ ScreenReflection traceScreenReflection(vec3 origin, vec3 dir, vec3 up, float hei
     if (forwardFade <= 0.0 || w0 <= 0.0) return none;
     float scale = w0 / wd;  // t(u) = scale u / (1 - u)
     vec2 ndc0 = clip0.xy / w0, ndcEnd = clipDir.xy / wd;
-    float reach = reachBelowPeaks(heightM, dot(dir, up));
     float uEnd = min(reach / (reach + scale), screenExit(ndc0, ndcEnd));
     if (uEnd <= 0.0) return none;
-    bool land = landMayLieWithin(up, reach / M_PER_KM, heightM, frame.planetRadius / M_PER_KM,
-                                 ocean.continentLipschitz, continentSampleSlack(), uContinents);
 
     float jitter = stepJitter(pixel);
     float uFront = 0.0, uBehind = -1.0;
-    for (int i = 0; i < (land ? SSR_STEPS : 0); ++i) {
+    for (int i = 0; i < SSR_STEPS; ++i) {
         float u = i + 1 < SSR_STEPS ? uEnd * (float(i) + 1.0 - jitter) / float(SSR_STEPS) : uEnd;
         if (behindDepthBuffer(depthCopy, ndc0, ndcEnd, w0, u) > 0.0) {
             uBehind = u;
@@ -146,8 +147,19 @@ ScreenReflection traceScreenReflection(vec3 origin, vec3 dir, vec3 up, float hei
         hit.confidence = forwardFade * inside * edge;
     }
     return hit;
+}
+
+// Whether the terrain may be reflected along `reflected` from the sea at `up`, heightM above
+// the planet radius: whether land may lie within the ray's reach below the highest mountain
+// (terrain/terrain_shadow.glsl's landMayLieWithin, the continents map's slope bound).
+bool terrainMayBeReflected(vec3 up, vec3 reflected, float heightM) {
+#if OCEAN_SCREEN_SPACE_REFLECTIONS
+    if (TERRAIN_REFLECTION_SEARCH_ALL != 0) return true;
+    float reach = reachBelowPeaks(heightM, dot(reflected, up));
+    return landMayLieWithin(up, reach / M_PER_KM, heightM, frame.planetRadius / M_PER_KM, ocean.continentLipschitz,
+                            continentSampleSlack(), uContinents);
 #else
-    return none;
+    return false;
 #endif
 }
 

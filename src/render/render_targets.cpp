@@ -77,9 +77,12 @@ bool RenderTargets::resize(glm::ivec2 size) {
     surfaceDistance_ = makeTexture(GL_R32F, size, "surface distance");
     surfaceFramebuffer_ =
         makeFramebuffer({&surfaceRadiance_, &surfaceDistance_}, &gbuffer_.depth, "surface radiance + depth");
-    seaReflection_ = makeTexture(GL_RGBA16F, size, "sea reflection");
-    oceanFramebuffer_ = makeFramebuffer({&surfaceRadiance_, &surfaceDistance_, &seaReflection_}, &gbuffer_.depth,
-                                        "surface radiance + sea reflection + depth");
+    // Full floats: the terrain reflection pass searches along the reflected ray from the sea's
+    // distance, where half floats would move its vanishing point by up to a pixel.
+    seaReflection_ = makeTexture(GL_RGBA32F, size, "sea reflection");
+    seaSkyReflection_ = makeTexture(GL_RGBA32F, size, "sea sky reflection");
+    oceanFramebuffer_ = makeFramebuffer({&surfaceRadiance_, &surfaceDistance_, &seaReflection_, &seaSkyReflection_},
+                                        &gbuffer_.depth, "surface radiance + sea reflection + depth");
     surfaceRadianceFramebuffer_ = makeFramebuffer({&surfaceRadiance_}, nullptr, "surface radiance");
     seaReflectionSamples_.size = (size + SEA_REFLECTION_SPACING - 1) / SEA_REFLECTION_SPACING;
     seaReflectionSamples_.change = makeTexture(GL_RGBA16F, seaReflectionSamples_.size, "sea reflection samples");
@@ -100,6 +103,7 @@ bool RenderTargets::resize(glm::ivec2 size) {
                                              nullptr, "sparse sky T, S, distance, history error");
     skyRefineList_ = makePixelList("sky refine list");
     seaReflectionList_ = makePixelList("sea reflection list");
+    terrainReflectionList_ = makePixelList("terrain reflection list");
     ldr_ = makeTexture(GL_RGBA8, size, "ldr");
     ldrFramebuffer_ = makeFramebuffer({&ldr_}, nullptr, "ldr");
     seabedDepth_ = makeTexture(GL_DEPTH_COMPONENT32F, size, "seabed depth");
@@ -127,6 +131,7 @@ void RenderTargets::clearSurface() const {
 void RenderTargets::clearSeaReflection() const {
     const float zero[4] = {0, 0, 0, 0};
     glClearNamedFramebufferfv(oceanFramebuffer_.id(), GL_COLOR, 2, zero);
+    glClearNamedFramebufferfv(oceanFramebuffer_.id(), GL_COLOR, 3, zero);
 }
 
 void RenderTargets::copySeabed() const {

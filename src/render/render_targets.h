@@ -98,6 +98,9 @@ public:
     const SparseSky& sparseSky() const { return sparseSky_; }
     const TerrainShadowSamples& terrainShadowSamples() const { return terrainShadowSamples_; }
     const gl::Texture& seaReflection() const { return seaReflection_; }
+    // The sky the sea reflected where the terrain may be reflected instead, and the sea's
+    // distance there (the ocean's; 0 elsewhere): the terrain reflection pass's input.
+    const gl::Texture& seaSkyReflection() const { return seaSkyReflection_; }
     const SeaReflectionSamples& seaReflectionSamples() const { return seaReflectionSamples_; }
     const gl::Buffer& skyRefineList() const { return skyRefineList_; }
     // Empties the refine list: no pixel listed, an indirect dispatch of no groups.
@@ -108,13 +111,18 @@ public:
     const gl::Buffer& seaReflectionList() const { return seaReflectionList_; }
     void clearSeaReflectionList() const { clearPixelList(seaReflectionList_); }
     std::vector<glm::ivec2> readSeaReflectionList() const { return readPixelList(seaReflectionList_); }
+    // The sea's pixels that may reflect the terrain (ocean/terrain_reflection_list.frag), as above.
+    const gl::Buffer& terrainReflectionList() const { return terrainReflectionList_; }
+    void clearTerrainReflectionList() const { clearPixelList(terrainReflectionList_); }
+    std::vector<glm::ivec2> readTerrainReflectionList() const { return readPixelList(terrainReflectionList_); }
     const FrameHistory& history() const { return history_; }
     // hdr and skyMedium (the sky passes').
     GLuint hdrFramebuffer() const { return hdrFramebuffer_.id(); }
     GLuint ldrFramebuffer() const { return ldrFramebuffer_.id(); }
     // surface radiance + distance with the G-buffer's depth attached.
     GLuint surfaceFramebuffer() const { return surfaceFramebuffer_.id(); }
-    // ... and the sea reflection beside them (the ocean's; clearSeaReflection() empties it).
+    // ... and the sea reflection and sea sky reflection beside them (the ocean's;
+    // clearSeaReflection() empties both).
     GLuint oceanFramebuffer() const { return oceanFramebuffer_.id(); }
     void clearSeaReflection() const;
     // The surface radiance alone (passes that add to it).
@@ -149,11 +157,13 @@ private:
     SparseSky sparseSky_;
     TerrainShadowSamples terrainShadowSamples_;
     gl::Texture seaReflection_{GL_TEXTURE_2D};
+    gl::Texture seaSkyReflection_{GL_TEXTURE_2D};
     SeaReflectionSamples seaReflectionSamples_;
     gl::Framebuffer oceanFramebuffer_;
     gl::Framebuffer surfaceRadianceFramebuffer_;
     gl::Buffer skyRefineList_;
     gl::Buffer seaReflectionList_;
+    gl::Buffer terrainReflectionList_;
     gl::Framebuffer surfaceFramebuffer_;
     gl::Framebuffer hdrFramebuffer_;
     gl::Framebuffer ldrFramebuffer_;

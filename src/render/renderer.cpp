@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cstdio>
 #include <cmath>
+#include <initializer_list>
 #include <set>
 #include <stdexcept>
 
@@ -43,6 +44,26 @@ std::string historyKey(const Scene& scene) {
 
 // The sky passes' program variant with the terrain's shadows in the air (atmosphere_program.h).
 bool lightShafts(const Scene& s) { return s.terrain.light_shafts && s.terrain.shadows; }
+
+// One invocation of the bound compute program per pixel of `list` (render/pixel_list.glsl),
+// dispatched indirectly with the group count its listing left (none when it listed none); what
+// the invocations stored is then visible to texture reads, draws and image loads.
+void dispatchOverList(const gl::Buffer& list) {
+    glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, list.id());
+    glDispatchComputeIndirect(0);
+    glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, 0);
+    glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+}
+
+// The built variants of a pass's programs, for its hot-reload list.
+std::vector<gl::HotProgram*> builtVariants(std::initializer_list<AtmosphereProgram*> programs) {
+    std::vector<gl::HotProgram*> all;
+    for (AtmosphereProgram* p : programs) {
+        const std::vector<gl::HotProgram*> built = p->built();
+        all.insert(all.end(), built.begin(), built.end());
+    }
+    return all;
+}
 
 }  // namespace
 
@@ -88,6 +109,11 @@ Renderer::Renderer(const std::filesystem::path& shaderRoot, const atmosphere::Ta
                      {"SEA_REFLECTION_COMPOSE", "SEA_REFLECTION_LIST_ALL"}),
       seaReflectionListed_(sources_, programTables_,
                            gl::ProgramDesc{"sea reflection, listed pixels", {"ocean/sea_reflection.comp"}}),
+      terrainReflectionList_(sources_, programTables_,
+                             gl::ProgramDesc{"terrain reflection list",
+                                             {"common/fullscreen.vert", "ocean/terrain_reflection_list.frag"}}),
+      terrainReflection_(sources_, programTables_,
+                         gl::ProgramDesc{"terrain reflection", {"ocean/terrain_reflection.comp"}}),
       sky_(sources_, programTables_, gl::ProgramDesc{"sky", {"common/fullscreen.vert", "render/sky.frag"}},
            {"UNDER_WATER"}),
       skySparse_(sources_, programTables_,
@@ -166,6 +192,38 @@ std::vector<Renderer::Pass> Renderer::makePasses() {
                           glEndQuery(GL_ANY_SAMPLES_PASSED);
                       },
                       [this] { return ocean_.program().built(); }});
+    // The terrain in the sea's reflection: searched at the pixels where the ocean found that land
+    // may lie within the reflected ray's reach (ocean/terrain_reflection.glsl); a few per cent of
+    // the sea from orbit, none on the open sea.
+    passes.push_back({{"terrain reflection", {R::SurfaceRadiance, R::SeaReflection}, {R::SurfaceRadiance, R::SeaReflection}},
+                      [this](const Scene& s) { return s.terrain.ocean && !lastPrepare_.underWater; },
+                      [this](const Scene& s) {
+                          glBindTextureUnit(binding::UNIT_SEA_SKY_REFLECTION, targets_.seaSkyReflection().id());
+                          glBindTextureUnit(binding::UNIT_SEABED_DEPTH, targets_.seabedDepth().id());
+                          glBindTextureUnit(binding::UNIT_SEABED_RADIANCE, targets_.seabedRadiance().id());
+                          targets_.clearTerrainReflectionList();
+                          glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding::BUFFER_TERRAIN_REFLECTION_LIST,
+                                           targets_.terrainReflectionList().id());
+                          // Listed by a full-screen draw that writes no colour, skipped on the GPU
+                          // where the ocean drew no pixel (an inland view): the list stays empty and
+                          // the search's indirect dispatch runs no group.
+                          glBeginConditionalRender(oceanDrew_.id(), GL_QUERY_WAIT);
+                          glBindFramebuffer(GL_FRAMEBUFFER, targets_.surfaceRadianceFramebuffer());
+                          glColorMaski(0, GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+                          glBindVertexArray(emptyVertexArray_.id());
+                          glUseProgram(terrainReflectionList_.get(s.atmosphere.elek_3d_table).id());
+                          glDrawArrays(GL_TRIANGLES, 0, 3);
+                          glColorMaski(0, GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+                          glEndConditionalRender();
+                          glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT);
+                          glBindImageTexture(binding::IMAGE_SURFACE_RADIANCE, targets_.surfaceRadiance().id(), 0,
+                                             GL_FALSE, 0, GL_READ_WRITE, GL_RGBA16F);
+                          glBindImageTexture(binding::IMAGE_SEA_REFLECTION, targets_.seaReflection().id(), 0, GL_FALSE,
+                                             0, GL_READ_WRITE, GL_RGBA32F);
+                          glUseProgram(terrainReflection_.get(s.atmosphere.elek_3d_table).id());
+                          dispatchOverList(targets_.terrainReflectionList());
+                      },
+                      [this] { return builtVariants({&terrainReflectionList_, &terrainReflection_}); }});
     // The clouds in the sea's reflection: marched at one pixel of each block along the rays the
     // ocean left, then spread and added to the surface radiance (ocean/sea_reflection.frag).
     // Only where the ocean's per-pixel program ran with clouds in the sky: from high up the
@@ -207,18 +265,9 @@ std::vector<Renderer::Pass> Renderer::makePasses() {
                           glBindImageTexture(binding::IMAGE_SURFACE_RADIANCE, targets_.surfaceRadiance().id(), 0,
                                              GL_FALSE, 0, GL_READ_WRITE, GL_RGBA16F);
                           glUseProgram(seaReflectionListed_.get(s.atmosphere.elek_3d_table).id());
-                          glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, targets_.seaReflectionList().id());
-                          glDispatchComputeIndirect(0);
-                          glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, 0);
-                          glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT |
-                                          GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+                          dispatchOverList(targets_.seaReflectionList());
                       },
-                      [this] {
-                          std::vector<gl::HotProgram*> all = seaReflection_.built();
-                          const std::vector<gl::HotProgram*> listed = seaReflectionListed_.built();
-                          all.insert(all.end(), listed.begin(), listed.end());
-                          return all;
-                      }});
+                      [this] { return builtVariants({&seaReflection_, &seaReflectionListed_}); }});
     auto fullRate = [this](const Scene&) { return !lastPrepare_.reducedRate; };
     auto reducedRate = [this](const Scene&) { return lastPrepare_.reducedRate; };
     passes.push_back({{"sky", {R::SurfaceRadiance}, {R::HdrRadiance}}, fullRate,
@@ -457,7 +506,8 @@ bool Renderer::matchAtmosphereTables() {
     surfaceLight_.program().setSources(withAtmosphere(sources_, sizes));
     terrainShadow_.program().setSources(withAtmosphere(sources_, sizes));
     std::vector<gl::HotProgram*> rebuilt{&terrainShadow_.program(), &surfaceLight_.program()};
-    for (AtmosphereProgram* p : {&ocean_.program(), &seaReflection_, &seaReflectionListed_, &sky_, &skySparse_, &skyTemporal_, &skyRefine_}) {
+    for (AtmosphereProgram* p : {&ocean_.program(), &seaReflection_, &seaReflectionListed_, &terrainReflectionList_,
+                                 &terrainReflection_, &sky_, &skySparse_, &skyTemporal_, &skyRefine_}) {
         p->setTableSizes(sizes);
         const std::vector<gl::HotProgram*> built = p->built();
         rebuilt.insert(rebuilt.end(), built.begin(), built.end());

@@ -218,6 +218,8 @@ private:
     OceanPass ocean_;
     AtmosphereProgram seaReflection_;  // mode SEA_REFLECTION_COMPOSE: the samples' spread (ocean/sea_reflection.frag)
     AtmosphereProgram seaReflectionListed_;  // the pixels the spread could not serve (ocean/sea_reflection.comp)
+    AtmosphereProgram terrainReflectionList_;  // the sea's pixels that may reflect the terrain (ocean/terrain_reflection_list.frag)
+    AtmosphereProgram terrainReflection_;      // their search (ocean/terrain_reflection.comp)
     AtmosphereProgram sky_;  // mode UNDER_WATER: the camera under the sea
     AtmosphereProgram skySparse_;
     AtmosphereProgram skyTemporal_;  // mode STILL_FRAME: frames where nothing moved
