@@ -20,6 +20,13 @@ layout(location = 0) out vec4 outNormal;
 layout(location = 1) out vec4 outAlbedo;
 layout(location = 2) out vec4 outMaterial;
 
+// Built with TERRAIN_DETAIL 1 where the preset's terrain.detail is on (src/terrain/
+// terrain_pass.cpp); without it the detail's code is not in the program at all, where behind the
+// block's flag alone a software renderer would run it for every pixel, masked.
+#ifndef TERRAIN_DETAIL
+#define TERRAIN_DETAIL 0
+#endif
+
 // Linear albedo per material id (sea floor, rock, snow, sand; grass comes from the preset).
 const vec3 MATERIAL_ALBEDO[TERRAIN_MATERIAL_COUNT] =
     vec3[](vec3(0.10, 0.09, 0.07), vec3(0.13, 0.11, 0.09), vec3(0.80, 0.82, 0.86), vec3(0.36, 0.31, 0.21),
@@ -71,8 +78,9 @@ void main() {
     // converge (one grazing a ridge) takes it where the mesh's point drops onto the ground.
     float distance = length(tePointFromCamera);
     float narrowFootprint = min(length(dpdx), length(dpdy));  // the detail's filter follows it (detail.glsl)
-    float strength = terrainDetail != 0 ? 1.0 - smoothstep(0.5 * TERRAIN_NEAR_RANGE_M, TERRAIN_NEAR_RANGE_M, distance)
-                                        : 0.0;
+    float strength = TERRAIN_DETAIL != 0 && terrainDetail != 0
+                         ? 1.0 - smoothstep(0.5 * TERRAIN_NEAR_RANGE_M, TERRAIN_NEAR_RANGE_M, distance)
+                         : 0.0;
     vec3 hit;
     float detailSlopeSpread = 0.0;  // what the detail's filter removed, for the surface light
     if (strength > 0.0 && narrowFootprint < TERRAIN_DETAIL_PERIOD_M[TERRAIN_DETAIL_SCALES - 1]) {

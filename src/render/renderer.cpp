@@ -146,7 +146,7 @@ std::vector<Renderer::Pass> Renderer::makePasses() {
                           glBindFramebuffer(GL_FRAMEBUFFER, fb);
                           terrain_.draw();
                       },
-                      [this] { return std::vector<gl::HotProgram*>{&terrain_.program()}; }});
+                      [this] { return terrain_.programs(); }});
     // The terrain's shadow marched at one pixel of each block (render/terrain_shadow.frag);
     // the surface light marches only where those around a pixel disagree.
     passes.push_back({{"terrain shadow", {R::GBuffer}, {R::TerrainShadow}},

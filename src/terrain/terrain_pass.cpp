@@ -8,10 +8,16 @@
 
 namespace planet {
 
+namespace {
+
+gl::ProgramDesc terrainProgram(const char* name) {
+    return gl::ProgramDesc{name, {"terrain/terrain.vert", "terrain/terrain.tesc", "terrain/terrain.tese", "terrain/terrain.frag"}};
+}
+
+}  // namespace
+
 TerrainPass::TerrainPass(const gl::ShaderSources& sources)
-    : program_(sources, gl::ProgramDesc{"terrain",
-                                        {"terrain/terrain.vert", "terrain/terrain.tesc", "terrain/terrain.tese",
-                                         "terrain/terrain.frag"}}) {
+    : sources_(sources), plain_(sources, terrainProgram("terrain")) {
     glNamedBufferStorage(block_.id(), sizeof(terrain::TerrainBlock), nullptr, GL_DYNAMIC_STORAGE_BIT);
     block_.label("TerrainBlock");
     glNamedBufferStorage(nearBlock_.id(), sizeof(terrain::TerrainNear), nullptr, GL_DYNAMIC_STORAGE_BIT);
@@ -39,6 +45,10 @@ void TerrainPass::prepare(const Scene& scene, const Camera& camera, const noise:
         detail_.emplace(terrain::makeDetailGlTexture(baked));
         detailLostVariance_ = baked.lostSlopeVariance;
     }
+    if (scene.terrain.detail && !detailed_)
+        detailed_.emplace(gl::ShaderSources{sources_.root, sources_.preamble + "#define TERRAIN_DETAIL 1\n"},
+                          terrainProgram("terrain (TERRAIN_DETAIL)"));
+    detailOn_ = scene.terrain.detail;
     if (detail_) glBindTextureUnit(binding::UNIT_TERRAIN_DETAIL, detail_->id());
 }
 
@@ -70,9 +80,10 @@ void TerrainPass::draw() {
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_GREATER);  // reversed-Z
     glDepthMask(GL_TRUE);
-    glUseProgram(program_.id());
+    const gl::HotProgram& program = detailOn_ && detailed_ ? *detailed_ : plain_;
+    glUseProgram(program.id());
     // The detail filter's table (terrain/detail.glsl); absent from the program when unused.
-    const GLint lostVariance = glGetUniformLocation(program_.id(), "uTerrainDetailLostVariance");
+    const GLint lostVariance = glGetUniformLocation(program.id(), "uTerrainDetailLostVariance");
     if (lostVariance >= 0 && !detailLostVariance_.empty())
         glUniform1fv(lostVariance, static_cast<GLsizei>(detailLostVariance_.size()), detailLostVariance_.data());
     const bool stages = statistics_ && pipelineStatistics();
@@ -105,6 +116,12 @@ void TerrainPass::draw() {
         }
     }
     glDisable(GL_DEPTH_TEST);
+}
+
+std::vector<gl::HotProgram*> TerrainPass::programs() {
+    std::vector<gl::HotProgram*> built{&plain_};
+    if (detailed_) built.push_back(&*detailed_);
+    return built;
 }
 
 }  // namespace planet
