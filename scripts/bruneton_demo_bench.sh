@@ -137,7 +137,7 @@ summarize() {
         if (pass == "frame") v[variant, view, "frame", round] = $5 + $6
     }
     END {
-        n_order = split("prepare,terrain,terrain shadow,surface light,ocean,sea reflection,sky,sky march,sky temporal,sky refine,antialias,tonemap", order, ",")
+        n_order = split("prepare,terrain,terrain shadow,surface light,ocean,terrain reflection,sea reflection,sky,sky march,sky temporal,sky refine,antialias,tonemap", order, ",")
         n_views = split(views, vs, " ")
         # attributed: the pass own CPU time + its own wait (--finish-each-pass on: each pass
         # waits for the work before it first, so its wait is its own fragments); the sum is
@@ -175,13 +175,13 @@ summarize() {
                 abar == "" ? "-" : "<= " abar, abar == "" ? "no bar" : verdict(air, d, abar) " / " verdict(cair, d, abar)
         }
         printf "\nWhere our frame goes (ms, attributed, medians over the rounds; sky: sky march + sky temporal + sky refine, or the full-rate sky)\n\n"
-        printf "| view | variant | terrain | terrain shadow | surface light | ocean | sea reflection | sky | tonemap | frame | demo frame |\n"
-        printf "| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |\n"
+        printf "| view | variant | terrain | terrain shadow | surface light | ocean | terrain reflection | sea reflection | sky | tonemap | frame | demo frame |\n"
+        printf "| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |\n"
         for (i = 1; i <= n_views; ++i) for (var = 1; var <= 2; ++var) {
             variant = var == 1 ? "ours" : "clear"; view = vs[i]; k = variant SUBSEP view SUBSEP
-            printf "| %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s |\n", view, variant, ms(median(k "terrain" SUBSEP "attr")), \
+            printf "| %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s |\n", view, variant, ms(median(k "terrain" SUBSEP "attr")), \
                 ms(median(k "terrain shadow" SUBSEP "attr")), ms(median(k "surface light" SUBSEP "attr")), ms(median(k "ocean" SUBSEP "attr")), \
-                ms(median(k "sea reflection" SUBSEP "attr")), ms(median(k "air")), \
+                ms(median(k "terrain reflection" SUBSEP "attr")), ms(median(k "sea reflection" SUBSEP "attr")), ms(median(k "air")), \
                 ms(median(k "tonemap" SUBSEP "attr")), ms(median(k "frame")), ms(median("demo" SUBSEP view))
         }
         printf "\nPer pass (ms, medians over the rounds): cpu / wait / attributed / gpu timestamps\n\n"
