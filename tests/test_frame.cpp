@@ -256,6 +256,8 @@ TEST_F(FrameTest, BlockMirrorsMatchTheDriversLayoutAndBindings) {
     EXPECT_EQ(oceanBlock.binding, binding::BLOCK_OCEAN);
     EXPECT_EQ(oceanBlock.size, static_cast<GLint>(sizeof(ocean::OceanBlock)));
     EXPECT_EQ(memberOffset(p, "OceanBlock.waveCount"), static_cast<GLint>(offsetof(ocean::OceanBlock, waveCount)));
+    EXPECT_EQ(memberOffset(p, "OceanBlock.continentSampleSlackRad"),
+              static_cast<GLint>(offsetof(ocean::OceanBlock, continentSampleSlackRad)));
     const BlockLayout grid = blockLayout(p, "GridBlock");
     EXPECT_EQ(grid.binding, binding::BLOCK_GRID);
     EXPECT_EQ(grid.size, static_cast<GLint>(sizeof(GridBlock)));

@@ -213,7 +213,7 @@ void main() {
         // if, because a software renderer runs an if's body for every pixel (masked) but leaves
         // a loop that no pixel of its group wants to enter (the open sea then pays nothing).
         bool mayReach = terrainShadowMayReachSea(up, sun, ocean.seaLevel, frame.planetRadius / M_PER_KM,
-                                                 ocean.continentLipschitz, continentSampleSlack(), terrainShape,
+                                                 ocean.continentLipschitz, ocean.continentSampleSlackRad, terrainShape,
                                                  uContinents);
         for (int i = 0; i < (mayReach ? 1 : 0); ++i)
             sunVisibility *= TerrainSunVisibilityAbove(point, ocean.seaLevel, sun);

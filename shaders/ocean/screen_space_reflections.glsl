@@ -37,10 +37,6 @@
 // On (1), every sea pixel is searched, land within reach or not (tests: the same image).
 #define TERRAIN_REFLECTION_SEARCH_ALL 0
 
-// How far the continents map's filtering may move a sample's place, rad: 2/32 of a texel
-// (src/ocean/land_cull.h), for landMayLieWithin.
-float continentSampleSlack() { return 2.0 / 32.0 / float(textureSize(uContinents, 0).x); }
-
 const int SSR_STEPS = 20;
 const int SSR_REFINEMENTS = 5;
 const float SSR_EDGE_FADE_NDC = 0.15;    // hits this close to the image's edge fade out (NDC units)
@@ -157,7 +153,7 @@ bool terrainMayBeReflected(vec3 up, vec3 reflected, float heightM) {
     if (TERRAIN_REFLECTION_SEARCH_ALL != 0) return true;
     float reach = reachBelowPeaks(heightM, dot(reflected, up));
     return landMayLieWithin(up, reach / M_PER_KM, heightM, frame.planetRadius / M_PER_KM, ocean.continentLipschitz,
-                            continentSampleSlack(), uContinents);
+                            ocean.continentSampleSlackRad, uContinents);
 #else
     return false;
 #endif

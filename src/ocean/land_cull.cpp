@@ -71,9 +71,10 @@ double landContinentThreshold(const TerrainParams& terrain, double seaLevelM, do
     return hi;
 }
 
+double continentSampleSlackRad(const noise::CubeMap& map) { return map.size < 1 ? 0.0 : (2.0 / map.size) / 32.0; }
+
 double continentSampleSlack(const noise::CubeMap& map, double lipschitz) {
-    if (map.size < 1) return 0.0;
-    return lipschitz * (2.0 / map.size) / 32.0;
+    return lipschitz * continentSampleSlackRad(map);
 }
 
 }  // namespace planet::ocean

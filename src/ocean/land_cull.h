@@ -29,8 +29,10 @@ double continentLipschitz(const noise::CubeMap& map);
 // margin (m); 2 (above any value of the map, so nothing is culled) when no such value exists.
 double landContinentThreshold(const TerrainParams& terrain, double seaLevelM, double maxWaveHeightM);
 
-// What may move a patch's centre sample on the GPU, in continent value: the filter's weight
-// rounding (1/32 of the largest texel's angle, 2 / size radians) times the slope.
+// How far the GPU's filter may move a sample's place, radians: its weight rounding, 1/32 of the
+// largest texel's angle (2 / size radians).
+double continentSampleSlackRad(const noise::CubeMap& map);
+// What that may change a patch's centre sample by, in continent value: the slack times the slope.
 double continentSampleSlack(const noise::CubeMap& map, double lipschitz);
 
 }  // namespace planet::ocean

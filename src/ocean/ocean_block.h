@@ -25,10 +25,14 @@ struct OceanBlock {
     float patchLandContinent;
     float continentLipschitz;  // per radian: the filtered map's steepest slope, with a safety factor
     int landCulling;           // 0: off (tests compare with it on)
+    // How far the GPU's filter may move a sample's place on the map, radians (land_cull.h's
+    // continentSampleSlackRad), for the shaders' slope bounds (landMayLieWithin).
+    float continentSampleSlackRad;
+    float padding0, padding1, padding2;
 };
 static_assert(offsetof(OceanBlock, fadeStart) == 16 && offsetof(OceanBlock, waveCount) == 28 &&
                   offsetof(OceanBlock, landContinent) == 32 && offsetof(OceanBlock, landCulling) == 44 &&
-                  sizeof(OceanBlock) == 48,
+                  offsetof(OceanBlock, continentSampleSlackRad) == 48 && sizeof(OceanBlock) == 64,
               "OceanBlock must match std140 (shaders/ocean/ocean_block.glsl)");
 
 OceanBlock makeOceanBlock(const Scene& scene);

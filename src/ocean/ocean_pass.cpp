@@ -62,12 +62,14 @@ void OceanPass::prepare(const Scene& scene, const Camera& camera, double radians
     if (continents != continents_) {  // a new map: measure its slope once
         continents_ = continents;
         lipschitz_ = continents ? ocean::continentLipschitz(*continents) : 0.0;
+        sampleSlackRad_ = continents ? ocean::continentSampleSlackRad(*continents) : 0.0;
         sampleSlack_ = continents ? ocean::continentSampleSlack(*continents, lipschitz_) : 0.0;
     }
     landContinent_ = continents ? ocean::landContinentThreshold(scene.terrain, scene.ocean.sea_level_m, maxHeight) : 2.0;
     block.landContinent = static_cast<float>(landContinent_);
     block.patchLandContinent = static_cast<float>(landContinent_ + sampleSlack_);
     block.continentLipschitz = static_cast<float>(lipschitz_);
+    block.continentSampleSlackRad = static_cast<float>(sampleSlackRad_);
     block.landCulling = landCulling_ && landContinent_ <= 1.0 ? 1 : 0;
     glNamedBufferSubData(block_.id(), 0, sizeof block, &block);
     const double height = glm::length(camera.position) - radius;

@@ -86,7 +86,7 @@ private:
     long long lastPrimitives_ = -1;
     gl::Query primitives_{GL_PRIMITIVES_GENERATED};
     std::shared_ptr<const noise::CubeMap> continents_;  // the map lipschitz_ was measured on
-    double lipschitz_ = 0.0, sampleSlack_ = 0.0, landContinent_ = 2.0;
+    double lipschitz_ = 0.0, sampleSlackRad_ = 0.0, sampleSlack_ = 0.0, landContinent_ = 2.0;
 };
 
 }  // namespace planet
