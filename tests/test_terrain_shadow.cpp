@@ -205,7 +205,7 @@ TEST(TerrainShadow, TheOpenSeaIsSkippedOnlyWhereNothingCanShadowIt) {
     const terrain::HeightField& field = earthField();
     const noise::CubeMap& map = field.continents();
     const float lipschitz = float(ocean::continentLipschitz(map));
-    const float slack = 2.0f / 32.0f / float(map.size);
+    const float slack = float(ocean::continentSampleSlackRad(map));
     const terrain::TerrainShadowConstants c = terrain::terrainShadowConstants();
     std::mt19937 rng(13);
     std::uniform_real_distribution<double> unit(-1.0, 1.0), share(0.0, 1.0);
