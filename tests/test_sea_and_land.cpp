@@ -11,11 +11,14 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
+#include <string>
 #include <vector>
 
 #include <glm/glm.hpp>
 
 #include "render/frame_uniforms.h"
+#include "render/image_compare.h"
 #include "render_support.h"
 
 namespace {
@@ -150,4 +153,61 @@ TEST_F(SeaAndLand, FromSpaceCloudsOverLandHaveNoSpeckle) {
     std::printf("space with clouds, 640x360: %d land pixels, %.1f %% off their 3x3 median by > 20 %%\n", land,
                 100.0 * speckle / land);
     EXPECT_LT(double(speckle) / land, 0.01);
+}
+
+// The sea floor's dark depths are not lit (shaders/ocean/water.glsl's SEA_FLOOR_DARK_DEPTH_M,
+// 400 m: under a millionth of the light reaches there): the surface light leaves them black and
+// the terrain's shadow marches none there. The image is the one that lighting them gives (the
+// `sea` view; and from 5 m under the beach's water looking down the shelf, where the floor is
+// seen through the water itself), and the shadow's samples on the open sea's floor are left
+// unmarched (no surface, as the sky's). Able to fail: a depth too shallow darkens the floor seen
+// from under the water (from above the sea, in these views, no pixel changes even at 2 m: the
+// floor shows through only the shallowest water); no skip at all leaves the sea's samples marched.
+TEST_F(SeaAndLand, TheDarkDepthsOfTheSeaFloorAreNotLitAndThatChangesNoPixel) {
+    using namespace planet;
+    const std::filesystem::path litEverywhere =
+        test::shadersWith("planet_test_dark_floor_lit", "ocean/water.glsl", "const float SEA_FLOOR_DARK_DEPTH_M = 400.0;",
+                          "const float SEA_FLOOR_DARK_DEPTH_M = 1.0e9;");
+    const glm::ivec2 size{160, 90};
+    // Samples that say "no surface" (render/sample_spacing.glsl's TERRAIN_SHADOW_NO_SURFACE, -1e30).
+    auto unmarched = [](const Renderer& r) {
+        const TerrainShadowSamples& samples = r.targets().terrainShadowSamples();
+        const ImageRGBAF clearance = readTextureRGBAF(samples.visibility, samples.size.x, samples.size.y);
+        int n = 0;
+        for (std::size_t i = 0; i < clearance.pixels.size(); i += 4) n += clearance.pixels[i] < -1.0e29f;
+        return n;
+    };
+    for (const char* view : {"sea", "beach"}) {
+        SCOPED_TRACE(view);
+        Session s = loadSession(test::repoPaths(), "earth", view);
+        if (std::string(view) == "beach") {  // out over the water, 5 m under it, looking down the shelf
+            View v = s.view;
+            v.pitch_deg = -35.0;
+            applyView(v, s);
+            const glm::dvec3 up = glm::normalize(s.camera.position);
+            glm::dvec3 ahead = -glm::dvec3(s.camera.worldFromView()[2]);
+            ahead = glm::normalize(ahead - glm::dot(ahead, up) * up);
+            for (double out = 0.0; out < 5000.0; out += 50.0) {  // the first place with 15 m of water
+                const glm::dvec3 there = glm::normalize(up * s.scene.planetRadiusM() + ahead * out);
+                if (s.ground.height(glm::vec3(there)) > s.scene.ocean.sea_level_m - 15.0) continue;
+                s.camera.position = there * (s.scene.planetRadiusM() + s.scene.ocean.sea_level_m - 5.0);
+                break;
+            }
+            ASSERT_GT(cameraDepthBelowSeaM(s.scene, s.camera), 0.0);
+        }
+        Renderer skipping(test::repoPaths().shaders(), atmosphere::TableSizes::reduced(), s.continents);
+        skipping.render(s.scene, s.camera, size);
+        const ImageRGBAF image = readTextureRGBAF(skipping.targets().hdr(), size.x, size.y);
+        Renderer lighting(litEverywhere, atmosphere::TableSizes::reduced(), s.continents);
+        lighting.render(s.scene, s.camera, size);
+        const ImageComparison cmp = compareImages(image, readTextureRGBAF(lighting.targets().hdr(), size.x, size.y));
+        const int skipped = unmarched(skipping), sky = unmarched(lighting);
+        std::printf("%s: %d shadow samples unmarched (%d, the sky's, when every floor is lit); max change %.3g %%\n",
+                    view, skipped, sky, 100.0 * cmp.maxRelativeError);
+        if (std::string(view) == "sea") {
+            EXPECT_GT(skipped, sky + size.x * size.y / 16);  // a quarter of the samples more: the deep floor's
+        }
+        EXPECT_EQ(cmp.nonFinitePixels, 0u);
+        EXPECT_LT(cmp.maxRelativeError, 1e-4);
+    }
 }

@@ -13,8 +13,8 @@
 // reach below sea level (terrainMayBeReflected), are not searched at all: the ocean pass lists
 // the others (it leaves the sky it reflected there), and the terrain reflection pass (ocean/
 // terrain_reflection.comp) searches those alone. A search in the ocean's own program cost every
-// pixel of each group a software renderer shades together as soon as one of them searched
-// (masked), and the coasts reach into many groups (from orbit: a third of the ocean's cost).
+// pixel, searched or not, on a software renderer, which runs an if's code for every pixel,
+// masked (from orbit: a third of the ocean's cost).
 //
 // The march is in screen space: a ray P(t) = origin + t dir projects onto the segment from
 // the origin's image (u = 0) to the vanishing point of dir (u = 1), and with w the depth

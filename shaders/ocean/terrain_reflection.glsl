@@ -1,8 +1,8 @@
 // The terrain's reflection in the sea (Michelic §6: "screen-space reflections of the terrain";
 // the search is ocean/screen_space_reflections.glsl's), searched only at the pixels where the
-// ocean pass found that land may lie within the reflected ray's reach (from orbit a few per
-// cent of the sea; a search in the ocean's own program cost every sea pixel on a software
-// renderer). Two compute programs share this file:
+// ocean pass found that land may lie within the reflected ray's reach (from orbit a fifth of
+// the sea; a search in the ocean's own program cost every sea pixel on a software renderer).
+// Two programs share this file:
 //
 //   ocean/terrain_reflection_list.frag: over the whole image, lists (render/pixel_list.glsl) the
 //     pixels where the ocean left the sky it reflected (its sea sky reflection target, a > 0);

@@ -9,6 +9,12 @@ const vec3 WATER_EXTINCTION_PER_M = vec3(0.46, 0.075, 0.035);
 // in blue, under one in red).
 const vec3 DEEP_WATER_ALBEDO = vec3(0.002, 0.012, 0.03);
 const float WATER_F0 = 0.02;                    // normal-incidence reflectance, n = 1.333
+// Ground this far below the sea surface is dark: the light that reaches it has crossed at least
+// this much water (straight down; the sun's and the sky's paths are longer), which leaves under
+// a millionth of it in every channel (exp(-0.035 x 400) = 8e-7, blue), and seen from above the
+// sea the way back up takes as much again. The surface light and the terrain's shadow do no work
+// there (most of the sea floor seen from orbit).
+const float SEA_FLOOR_DARK_DEPTH_M = 400.0;
 
 vec3 waterTransmittanceAlong(float pathM) { return exp(-WATER_EXTINCTION_PER_M * pathM); }
 

@@ -5,11 +5,15 @@
 // these at the pixels around its own and marches only where they do not all say the same,
 // clearly lit or fully shadowed (its terrainVisibility): the march is the surface light's main
 // cost at a low sun or at ground level, and most of a frame is wholly lit or wholly in shadow.
+// The sea floor's dark depths (ocean/water.glsl's SEA_FLOOR_DARK_DEPTH_M), which the surface
+// light does not light, are not marched either: TERRAIN_SHADOW_NO_SURFACE there, so that a
+// shallower pixel beside them marches its own.
 #include "common/frame_uniforms.glsl"
 #include "common/gbuffer.glsl"
 #define SUN_VISIBILITY_TERRAIN 1
 #include "atmosphere/interface.glsl"
 #include "render/sample_spacing.glsl"
+#include "ocean/water.glsl"
 
 layout(binding = UNIT_GBUFFER_NORMAL) uniform sampler2D gNormal;
 layout(binding = UNIT_GBUFFER_DEPTH) uniform sampler2D gDepth;
@@ -22,6 +26,8 @@ void main() {
     outClearance = TERRAIN_SHADOW_NO_SURFACE;
     // A loop of one turn or none rather than an if: a software renderer runs both sides of an
     // if, but skips a loop that none of its pixels enters (the sky's).
-    int marches = surfacePointAt(ivec2(gl_FragCoord.xy) * TERRAIN_SHADOW_SPACING, s) ? 1 : 0;
+    bool surface = surfacePointAt(ivec2(gl_FragCoord.xy) * TERRAIN_SHADOW_SPACING, s);
+    float depthBelowSea = frame.cameraDepthBelowSea + frame.cameraAltitude - s.normalAndHeight.w;
+    int marches = surface && depthBelowSea < SEA_FLOOR_DARK_DEPTH_M ? 1 : 0;
     for (int i = 0; i < marches; ++i) outClearance = TerrainShadowClearance(s.point, frame.sunDirection);
 }
