@@ -209,9 +209,10 @@ void main() {
     float sunVisibility = 1.0;
     if (dot(up, sun) > 0.0) {
         sunVisibility = CloudSunTransmittance(point, sun, CLOUD_SHADOW_MAX_KM);
-        // The terrain's march only where it may find land: a loop of one turn or none, not an
-        // if, because a software renderer runs an if's body for every pixel (masked) but leaves
-        // a loop that no pixel of its group wants to enter (the open sea then pays nothing).
+        // The terrain's march only where it may find land: a loop of one turn or none, so that
+        // the march's samples take no turn on the open sea (a software renderer runs an if's
+        // code for every pixel, masked; what of this loop's body it runs where no pixel of a
+        // group enters it is not settled: docs/PERFORMANCE.md, 2026-12-04 fifth).
         bool mayReach = terrainShadowMayReachSea(up, sun, ocean.seaLevel, frame.planetRadius / M_PER_KM,
                                                  ocean.continentLipschitz, ocean.continentSampleSlackRad, terrainShape,
                                                  uContinents);

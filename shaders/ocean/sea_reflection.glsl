@@ -8,7 +8,8 @@
 //     left (its sea reflection target and the surface distance); a = 1 where it was marched, 0
 //     where the pixel shows no sea that reflects the sky.
 //   ocean/sea_reflection.frag with SEA_REFLECTION_COMPOSE: at every pixel the ocean shaded with
-//     a weight w > 0, w times the samples' dL_C around it (the corners of its cell), each
+//     a weight w > 0 (coverage x Fresnel, less the share the terrain reflection pass gave to the
+//     terrain), w times the samples' dL_C around it (the corners of its cell), each
 //     weighted by how near its reflected ray is to the pixel's, added to the surface radiance
 //     (additive blending). Where they weigh too little (the waves turned the pixel's ray away
 //     from theirs, or a sliver of sea between land or sky samples), the pixel is listed
