@@ -111,7 +111,8 @@ Renderer::Renderer(const std::filesystem::path& shaderRoot, const atmosphere::Ta
                            gl::ProgramDesc{"sea reflection, listed pixels", {"ocean/sea_reflection.comp"}}),
       terrainReflectionList_(sources_, programTables_,
                              gl::ProgramDesc{"terrain reflection list",
-                                             {"common/fullscreen.vert", "ocean/terrain_reflection_list.frag"}}),
+                                             {"common/fullscreen.vert", "ocean/terrain_reflection_list.frag"}},
+                             {"TERRAIN_REFLECTION_LAND_SEEN"}),
       terrainReflection_(sources_, programTables_,
                          gl::ProgramDesc{"terrain reflection", {"ocean/terrain_reflection.comp"}}),
       sky_(sources_, programTables_, gl::ProgramDesc{"sky", {"common/fullscreen.vert", "render/sky.frag"}},
@@ -193,8 +194,8 @@ std::vector<Renderer::Pass> Renderer::makePasses() {
                       },
                       [this] { return ocean_.program().built(); }});
     // The terrain in the sea's reflection: searched at the pixels where the ocean found that land
-    // may lie within the reflected ray's reach (ocean/terrain_reflection.glsl); a few per cent of
-    // the sea from orbit, none on the open sea.
+    // may lie within the reflected ray's reach (ocean/terrain_reflection.glsl), a fifth of the sea
+    // from orbit, and only where some ground above the sea is on screen.
     passes.push_back({{"terrain reflection", {R::SurfaceRadiance, R::SeaReflection}, {R::SurfaceRadiance, R::SeaReflection}},
                       [this](const Scene& s) { return s.terrain.ocean && !lastPrepare_.underWater; },
                       [this](const Scene& s) {
@@ -205,16 +206,24 @@ std::vector<Renderer::Pass> Renderer::makePasses() {
                           glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding::BUFFER_TERRAIN_REFLECTION_LIST,
                                            targets_.terrainReflectionList().id());
                           // Listed by a full-screen draw that writes no colour, skipped on the GPU
-                          // where the ocean drew no pixel (an inland view): the list stays empty and
-                          // the search's indirect dispatch runs no group.
-                          glBeginConditionalRender(oceanDrew_.id(), GL_QUERY_WAIT);
+                          // where the ocean drew no pixel (an inland view) or where no ground above
+                          // the sea is on screen (the open sea: what the search could find), which
+                          // the same draw in its mode TERRAIN_REFLECTION_LAND_SEEN counts first;
+                          // then the list stays empty and the search's indirect dispatch runs no group.
                           glBindFramebuffer(GL_FRAMEBUFFER, targets_.surfaceRadianceFramebuffer());
                           glColorMaski(0, GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
                           glBindVertexArray(emptyVertexArray_.id());
+                          glBeginConditionalRender(oceanDrew_.id(), GL_QUERY_WAIT);
+                          glBeginQuery(GL_ANY_SAMPLES_PASSED, landSeen_.id());
+                          glUseProgram(terrainReflectionList_.get(s.atmosphere.elek_3d_table, false, 1).id());
+                          glDrawArrays(GL_TRIANGLES, 0, 3);
+                          glEndQuery(GL_ANY_SAMPLES_PASSED);
+                          glEndConditionalRender();
+                          glBeginConditionalRender(landSeen_.id(), GL_QUERY_WAIT);
                           glUseProgram(terrainReflectionList_.get(s.atmosphere.elek_3d_table).id());
                           glDrawArrays(GL_TRIANGLES, 0, 3);
-                          glColorMaski(0, GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
                           glEndConditionalRender();
+                          glColorMaski(0, GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
                           glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT);
                           glBindImageTexture(binding::IMAGE_SURFACE_RADIANCE, targets_.surfaceRadiance().id(), 0,
                                              GL_FALSE, 0, GL_READ_WRITE, GL_RGBA16F);
