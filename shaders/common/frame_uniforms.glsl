@@ -43,6 +43,9 @@ vec3 worldRayFromNdc(vec2 ndc) {
     return normalize(mat3(frame.worldFromView) * (view.xyz / view.w));
 }
 
+// The unit view ray (world axes) through the centre of `pixel`.
+vec3 pixelRay(ivec2 pixel) { return worldRayFromNdc(pixelCentreNdc(vec2(pixel) + 0.5)); }
+
 const float M_PER_KM = 1000.0;
 
 // The camera relative to the planet centre in km (the atmosphere model's unit), from the

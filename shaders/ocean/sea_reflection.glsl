@@ -43,7 +43,7 @@ const float SEA_REFLECTION_MIN_WEIGHT = 0.5;
 
 // The sea's point at `pixel`, km from the planet centre (the view ray to the surface distance).
 vec3 seaPointAt(ivec2 pixel) {
-    vec3 view = worldRayFromNdc(pixelCentreNdc(vec2(pixel) + 0.5));
+    vec3 view = pixelRay(pixel);
     return cameraFromPlanetCentreKm() + view * (texelFetch(surfaceDistance, pixel, 0).r / M_PER_KM);
 }
 

@@ -4,7 +4,7 @@
 
 layout(local_size_x = 64, local_size_y = 1, local_size_z = 1) in;  // PIXEL_LIST_GROUP_SIZE
 layout(binding = IMAGE_SURFACE_RADIANCE, rgba16f) uniform image2D surfaceRadiance;
-layout(binding = IMAGE_SEA_REFLECTION, rgba16f) uniform image2D seaReflection;  // ray, weight (ocean.frag)
+layout(binding = IMAGE_SEA_REFLECTION, rgba32f) uniform image2D seaReflection;  // ray, weight (ocean.frag)
 layout(binding = UNIT_SEABED_DEPTH) uniform sampler2D seabedDepth;        // the G-buffer depth before the sea
 layout(binding = UNIT_SEABED_RADIANCE) uniform sampler2D seabedRadiance;  // the surface radiance before the sea
 
@@ -15,7 +15,7 @@ void main() {
     vec4 sky = texelFetch(seaSkyReflection, pixel, 0);  // L_sky, the sea's distance along the view ray (m)
     vec4 mirror = imageLoad(seaReflection, pixel);      // the reflected ray, its weight w
     vec3 reflected = normalize(mirror.xyz);
-    vec3 origin = worldRayFromNdc(pixelCentreNdc(vec2(pixel) + 0.5)) * sky.a;  // m from the camera
+    vec3 origin = pixelRay(pixel) * sky.a;  // m from the camera
     vec3 point = cameraFromPlanetCentreKm() + origin / M_PER_KM;               // km from the planet centre
     float reach = reachBelowPeaks(ocean.seaLevel, dot(reflected, normalize(point)));
     ScreenReflection land = searchScreenReflection(origin, reflected, reach, pixel, seabedDepth, seabedRadiance);

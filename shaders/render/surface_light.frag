@@ -118,12 +118,9 @@ void main() {
     if (!surfacePointAt(pixel, surface)) discard;  // nothing drawn: the sky pass shows the sky here
     outSurfaceDistance = surface.rayDistance;
     outSurfaceRadiance = vec4(0.0, 0.0, 0.0, 1.0);
-    // The sea level less the ground's height: the camera's depth below the sea plus its
-    // altitude is the sea level (both formed in double; a dry world's depth is -1e30).
-    float depthBelowSea = frame.cameraDepthBelowSea + frame.cameraAltitude - surface.normalAndHeight.w;
+    float underSea = depthBelowSea(surface);
     // The sea floor's dark depths are not lit (ocean/water.glsl): there the terrain shadow's and
     // the clouds' marches take no step (a software renderer still runs the rest of the body for
     // every pixel of a group, masked: on the `sea` view this pass went from 114 to 75 ms).
-    if (depthBelowSea < SEA_FLOOR_DARK_DEPTH_M)
-        outSurfaceRadiance = vec4(surfaceRadiance(pixel, surface, depthBelowSea), 1.0);
+    if (underSea < SEA_FLOOR_DARK_DEPTH_M) outSurfaceRadiance = vec4(surfaceRadiance(pixel, surface, underSea), 1.0);
 }

@@ -34,7 +34,7 @@ struct SurfacePoint {
 // False where nothing was drawn (reversed-Z depth 0: the sky pass shows the sky there).
 bool surfacePointAt(ivec2 pixel, out SurfacePoint s) {
     float depth = texelFetch(gDepth, pixel, 0).r;
-    s.dir = worldRayFromNdc(pixelCentreNdc(vec2(pixel) + 0.5));
+    s.dir = pixelRay(pixel);
     vec3 forward = -vec3(frame.worldFromView[2]);
     float meshDistance = viewDistanceFromDepth(max(depth, 1.0e-30)) / max(dot(s.dir, forward), 1e-6);  // m
     s.normalAndHeight = texelFetch(gNormal, pixel, 0);
@@ -42,3 +42,8 @@ bool surfacePointAt(ivec2 pixel, out SurfacePoint s) {
     s.point = cameraFromPlanetCentreKm() + s.dir * (s.rayDistance / M_PER_KM);
     return depth > 0.0;
 }
+
+// How far below the sea surface the point lies, m (< 0: above it): the camera's depth below the
+// sea plus its altitude is the sea level (both formed in double; a dry world's depth is -1e30),
+// less the ground's height.
+float depthBelowSea(SurfacePoint s) { return frame.cameraDepthBelowSea + frame.cameraAltitude - s.normalAndHeight.w; }

@@ -27,7 +27,6 @@ void main() {
     // A loop of one turn or none rather than an if: a software renderer runs both sides of an
     // if, but skips a loop that none of its pixels enters (the sky's).
     bool surface = surfacePointAt(ivec2(gl_FragCoord.xy) * TERRAIN_SHADOW_SPACING, s);
-    float depthBelowSea = frame.cameraDepthBelowSea + frame.cameraAltitude - s.normalAndHeight.w;
-    int marches = surface && depthBelowSea < SEA_FLOOR_DARK_DEPTH_M ? 1 : 0;
+    int marches = surface && depthBelowSea(s) < SEA_FLOOR_DARK_DEPTH_M ? 1 : 0;
     for (int i = 0; i < marches; ++i) outClearance = TerrainShadowClearance(s.point, frame.sunDirection);
 }
