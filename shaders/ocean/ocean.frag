@@ -50,6 +50,8 @@
 #include "terrain/height.glsl"
 #include "terrain/terrain_block.glsl"
 #include "ocean/screen_space_reflections.glsl"
+#include "render/sample_spacing.glsl"
+#include "render/block_samples.glsl"
 
 in vec3 tePosition;
 in vec3 teDirection;
@@ -58,6 +60,8 @@ in vec3 teCloudReflection;  // with OCEAN_FLAT_MIRROR: dL_C (ocean/cloud_reflect
 
 layout(binding = UNIT_SEABED_DEPTH) uniform sampler2D seabedDepth;         // copy of the G-buffer depth (reversed-Z)
 layout(binding = UNIT_SEABED_RADIANCE) uniform sampler2D seabedRadiance;   // copy of the surface radiance
+layout(binding = UNIT_TERRAIN_SHADOW) uniform sampler2D terrainShadowSamples;  // g: the sea surface's (render/terrain_shadow.frag)
+#include "render/terrain_shadow_samples.glsl"
 
 layout(location = 0) out vec4 outSurfaceRadiance;
 layout(location = 1) out float outSurfaceDistance;
@@ -80,6 +84,10 @@ layout(depth_greater) out float gl_FragDepth;  // reversed-Z: only ever moved to
 const float SHORE_FADE_M = 0.5;  // water path over which the sea fades in at the shore
 // Off (0), no foam where the waves break at the shore (tests compare the two).
 #define OCEAN_FOAM 1
+// 1: the terrain's shadow on the water from the terrain shadow's samples of the sea's surface
+// where they agree (render/terrain_shadow_samples.glsl), marched here otherwise; 0: marched at
+// every pixel where land may be within reach (tests compare the two).
+#define OCEAN_TERRAIN_SHADOW_FROM_SAMPLES 1
 
 // The sky the sea reflects along `reflected` from `point` (km from the planet centre; this
 // fragment): the clear sky, with the clouds' change from the grid's points where the sea is a
@@ -209,15 +217,23 @@ void main() {
     float sunVisibility = 1.0;
     if (dot(up, sun) > 0.0) {
         sunVisibility = CloudSunTransmittance(point, sun, CLOUD_SHADOW_MAX_KM);
-        // The terrain's march only where it may find land: a loop of one turn or none, so that
-        // the march's samples take no turn on the open sea (a software renderer runs an if's
-        // code for every pixel, masked; what of this loop's body it runs where no pixel of a
-        // group enters it is not settled: docs/PERFORMANCE.md, 2026-12-04 fifth).
+        // The terrain's march only where it may find land and the samples around the pixel do
+        // not agree (a shadow's edge, the shore): a loop of one turn or none, so that the march's
+        // samples take no turn on the open sea nor where the samples decide (a software
+        // renderer runs an if's code for every pixel, masked; a loop no pixel of a group enters
+        // it leaves: docs/PERFORMANCE.md).
         bool mayReach = terrainShadowMayReachSea(up, sun, ocean.seaLevel, frame.planetRadius / M_PER_KM,
                                                  ocean.continentLipschitz, ocean.continentSampleSlackRad, terrainShape,
                                                  uContinents);
-        for (int i = 0; i < (mayReach ? 1 : 0); ++i)
-            sunVisibility *= TerrainSunVisibilityAbove(point, ocean.seaLevel, sun);
+        float radius = atmosphereUniforms.sunAngularRadius;
+        float clearance = 1.0;  // rad: lit, where no land is within reach
+        int marches = mayReach ? 1 : 0;
+#if OCEAN_TERRAIN_SHADOW_FROM_SAMPLES && SUN_VISIBILITY_TERRAIN
+        if (terrainShadows != 0 && terrainClearanceFromSamples(terrainShadowSamples, pixel, 1, radius, clearance))
+            marches = 0;
+#endif
+        for (int i = 0; i < marches; ++i) clearance = TerrainShadowClearanceAbove(point, ocean.seaLevel, sun);
+        sunVisibility *= terrainShadowDiscShare(clearance, radius);
     }
     vec3 skyIrradiance;
     vec3 sunIrradiance = SunAndSkyIrradianceUnshadowed(point, up, sun, skyIrradiance) * sunVisibility;

@@ -31,6 +31,7 @@ layout(binding = UNIT_GBUFFER_ALBEDO) uniform sampler2D gAlbedo;
 layout(binding = UNIT_GBUFFER_MATERIAL) uniform sampler2D gMaterial;
 layout(binding = UNIT_GBUFFER_DEPTH) uniform sampler2D gDepth;
 layout(binding = UNIT_TERRAIN_SHADOW) uniform sampler2D terrainShadowSamples;
+#include "render/terrain_shadow_samples.glsl"
 #include "render/surface_point.glsl"
 
 layout(location = 0) out vec4 outSurfaceRadiance;
@@ -49,41 +50,17 @@ vec3 shadingNormal(vec3 normal, vec3 sun, float slopeSpread) {
     return cosine * sun + sqrt(max(1.0 - cosine * cosine, 0.0)) * (across / acrossLength);
 }
 
-// Where the samples around a pixel all clear the sun's disc by this much more than its radius
-// (rad), the pixel is taken as lit without a march: the margin catches most shadows narrower
-// than the samples' spacing, cast by bumps whose horizon the samples only just clear.
-const float TERRAIN_SHADOW_LIT_MARGIN = 0.03;
-
 // The share of the sun's disc the terrain leaves visible at the pixel's `point`: from the
-// samples (render/terrain_shadow.frag) around the pixel (one, two or four: the corners of its
-// cell of their grid) where they all clear the disc by TERRAIN_SHADOW_LIT_MARGIN (lit) or all
-// hide it (shadowed), or where the pixel is a sample itself; marched here otherwise, where a
-// shadow's edge or penumbra passes or a sample shows no surface (an edge of the terrain on
-// screen). A shadow narrower than the samples' spacing that falls between samples which clear
-// the margin is missed, as the march misses a ridge narrower than its own step. A `facesSun`
-// false pixel needs no visibility (the sun does not light it) and marches none.
+// samples (render/terrain_shadow.frag) around the pixel where they agree
+// (terrainClearanceFromSamples), marched here otherwise. A `facesSun` false pixel needs no
+// visibility (the sun does not light it) and marches none.
 float terrainVisibility(ivec2 pixel, vec3 point, bool facesSun) {
     if (terrainShadows == 0) return 1.0;
     float radius = atmosphereUniforms.sunAngularRadius;
     float clearance = TERRAIN_SHADOW_NO_SURFACE;
     int marches = facesSun ? 1 : 0;
 #if TERRAIN_SHADOW_FROM_SAMPLES
-    ivec2 corners[4];
-    blockSampleCorners(pixel, TERRAIN_SHADOW_SPACING, textureSize(terrainShadowSamples, 0) - 1, corners);
-    float a = texelFetch(terrainShadowSamples, corners[0], 0).r;
-    float b = texelFetch(terrainShadowSamples, corners[1], 0).r;
-    float c = texelFetch(terrainShadowSamples, corners[2], 0).r;
-    float d = texelFetch(terrainShadowSamples, corners[3], 0).r;
-    float lowest = min(min(a, b), min(c, d));
-    float highest = max(max(a, b), max(c, d));
-    bool surface = lowest > 0.5 * TERRAIN_SHADOW_NO_SURFACE;
-    bool lit = lowest >= radius + TERRAIN_SHADOW_LIT_MARGIN;
-    bool shadowed = surface && highest <= -radius;
-    bool onASample = corners[0] == corners[3] && surface;
-    if (lit || shadowed || onASample) {
-        clearance = a;
-        marches = 0;
-    }
+    if (terrainClearanceFromSamples(terrainShadowSamples, pixel, 0, radius, clearance)) marches = 0;
 #endif
     // A loop of one turn or none, not an if: a software renderer runs both sides of an if,
     // but skips a loop that none of its pixels enters.

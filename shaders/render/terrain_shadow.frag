@@ -1,12 +1,19 @@
-// The terrain's shadow at a sparse set of pixels: the march's clearance angle (rad; the sun's
-// disc is whole at its angular radius and above, hidden at minus that: terrain/terrain_shadow.glsl)
-// at the G-buffer's surface point of one pixel of each TERRAIN_SHADOW_SPACING-square block, the
-// block's corner; TERRAIN_SHADOW_NO_SURFACE where the pixel shows none. The surface light reads
-// these at the pixels around its own and marches only where they do not all say the same,
-// clearly lit or fully shadowed (its terrainVisibility): the march is the surface light's main
-// cost at a low sun or at ground level, and most of a frame is wholly lit or wholly in shadow.
+// The terrain's shadow at a sparse set of pixels, one of each TERRAIN_SHADOW_SPACING-square
+// block, the block's corner: the march's clearance angle (rad; the sun's disc is whole at its
+// angular radius and above, hidden at minus that: terrain/terrain_shadow.glsl)
+//   r  at the G-buffer's surface point (the ground, the sea floor); TERRAIN_SHADOW_NO_SURFACE
+//      where the pixel shows none;
+//   g  where the pixel's ray meets the sea's mean surface in front of that ground (from sea
+//      level, as the ocean marches: TerrainShadowClearanceAbove); 1 where no land lies within
+//      the shadow's reach (terrainShadowMayReachSea) or the sun is down; TERRAIN_SHADOW_NO_SURFACE
+//      where the ray meets no sea in front of the ground.
+// The surface light (r) and the ocean (g) read these at the pixels around their own and march
+// only where they do not all say the same, clearly lit or fully shadowed
+// (render/terrain_shadow_samples.glsl): the march is the surface light's main cost at a low sun
+// or at ground level, and the ocean's beside land (a beach), and most of a frame is wholly lit
+// or wholly in shadow.
 // The sea floor's dark depths (ocean/water.glsl's SEA_FLOOR_DARK_DEPTH_M), which the surface
-// light does not light, are not marched either: TERRAIN_SHADOW_NO_SURFACE there, so that a
+// light does not light, are not marched either: TERRAIN_SHADOW_NO_SURFACE there in r, so that a
 // shallower pixel beside them marches its own.
 #include "common/frame_uniforms.glsl"
 #include "common/gbuffer.glsl"
@@ -14,19 +21,53 @@
 #include "atmosphere/interface.glsl"
 #include "render/sample_spacing.glsl"
 #include "ocean/water.glsl"
+#include "ocean/ocean_block.glsl"
 
 layout(binding = UNIT_GBUFFER_NORMAL) uniform sampler2D gNormal;
 layout(binding = UNIT_GBUFFER_DEPTH) uniform sampler2D gDepth;
 #include "render/surface_point.glsl"
 
-layout(location = 0) out float outClearance;
+layout(location = 0) out vec2 outClearance;
+
+// Where the ray through `pixel` meets the sea's mean surface (a sphere ocean.seaLevel above the
+// planet radius) in front of the pixel's ground (`ground`, if `hasGround`): true, with the point
+// in km from the planet centre. The waves move the sea's points by metres, which do not move a
+// terrain's shadow. False on a dry world, from under the sea (the ocean shades no sunlight
+// there) and where the ground is in front (the shore, land).
+bool seaSurfaceAt(vec3 dir, SurfacePoint ground, bool hasGround, out vec3 point) {
+    point = vec3(0.0);
+    if (terrainHasOcean == 0) return false;
+    float aboveSea = -frame.cameraDepthBelowSea;  // m, the camera's height above the sea's surface
+    float seaRadius = frame.planetRadius + ocean.seaLevel;
+    // |C + t d| = seaRadius with |C| = seaRadius + aboveSea: t^2 + 2 b t + c = 0, the near root
+    // in the form that subtracts nothing of planet size.
+    float b = (seaRadius + aboveSea) * dot(dir, frame.cameraUp);
+    float c = aboveSea * (2.0 * seaRadius + aboveSea);
+    float discriminant = b * b - c;
+    if (aboveSea <= 0.0 || b >= 0.0 || discriminant < 0.0) return false;
+    float t = c / (-b + sqrt(discriminant));  // m
+    if (hasGround && t >= ground.rayDistance) return false;
+    point = cameraFromPlanetCentreKm() + dir * (t / M_PER_KM);
+    return true;
+}
 
 void main() {
+    ivec2 pixel = ivec2(gl_FragCoord.xy) * TERRAIN_SHADOW_SPACING;
+    vec3 sun = frame.sunDirection;
     SurfacePoint s;
-    outClearance = TERRAIN_SHADOW_NO_SURFACE;
-    // A loop of one turn or none rather than an if: a software renderer runs both sides of an
-    // if, but skips a loop that none of its pixels enters (the sky's).
-    bool surface = surfacePointAt(ivec2(gl_FragCoord.xy) * TERRAIN_SHADOW_SPACING, s);
+    outClearance = vec2(TERRAIN_SHADOW_NO_SURFACE);
+    // Loops of one turn or none rather than ifs: a software renderer runs both sides of an if,
+    // but skips a loop that none of its pixels enters (the sky's; the open sea's).
+    bool surface = surfacePointAt(pixel, s);
     int marches = surface && depthBelowSea(s) < SEA_FLOOR_DARK_DEPTH_M ? 1 : 0;
-    for (int i = 0; i < marches; ++i) outClearance = TerrainShadowClearance(s.point, frame.sunDirection);
+    for (int i = 0; i < marches; ++i) outClearance.r = TerrainShadowClearance(s.point, sun);
+    vec3 seaPoint;
+    bool sea = seaSurfaceAt(s.dir, s, surface, seaPoint);
+    vec3 up = normalize(seaPoint);
+    bool mayReach = sea && dot(up, sun) > 0.0 &&
+                    terrainShadowMayReachSea(up, sun, ocean.seaLevel, frame.planetRadius / M_PER_KM,
+                                             ocean.continentLipschitz, ocean.continentSampleSlackRad, terrainShape,
+                                             uContinents);
+    if (sea) outClearance.g = 1.0;  // lit: no land within reach, or the sun is down (no sunlight to shade)
+    for (int i = 0; i < (mayReach ? 1 : 0); ++i) outClearance.g = TerrainShadowClearanceAbove(seaPoint, ocean.seaLevel, sun);
 }

@@ -79,9 +79,11 @@ void OceanPass::prepare(const Scene& scene, const Camera& camera, double radians
                       : flatMirrorMode_ == FlatMirror::On;
 }
 
+void OceanPass::bindBlock() const { glBindBufferBase(GL_UNIFORM_BUFFER, binding::BLOCK_OCEAN, block_.id()); }
+
 void OceanPass::draw(bool elekTable, bool underWater) {
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding::BUFFER_OCEAN_WAVES, waves_.id());
-    glBindBufferBase(GL_UNIFORM_BUFFER, binding::BLOCK_OCEAN, block_.id());
+    bindBlock();
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_GREATER);  // reversed-Z
     glDepthMask(GL_TRUE);

@@ -48,6 +48,10 @@ public:
     // `underWater`: the camera under the sea (the frame's PrepareReport), the surface seen from below.
     void draw(bool elekTable, bool underWater);
 
+    // Binds the sea's parameters (the last prepare()'s OceanBlock) for a program other than this
+    // pass's that reads them: the terrain shadow's samples of the sea's surface.
+    void bindBlock() const;
+
     AtmosphereProgram& program() { return program_; }
 
     // The program's mode OCEAN_FLAT_MIRROR (the clouds' share of the reflection from the grid's

@@ -92,7 +92,7 @@ bool RenderTargets::resize(glm::ivec2 size) {
     skyMedium_ = makeTexture(GL_RGBA32UI, size, "sky T, S");
     hdrFramebuffer_ = makeFramebuffer({&hdr_, &skyMedium_}, nullptr, "hdr + sky T, S");
     terrainShadowSamples_.size = (size + TERRAIN_SHADOW_SPACING - 1) / TERRAIN_SHADOW_SPACING;
-    terrainShadowSamples_.visibility = makeTexture(GL_R32F, terrainShadowSamples_.size, "terrain shadow samples");
+    terrainShadowSamples_.visibility = makeTexture(GL_RG32F, terrainShadowSamples_.size, "terrain shadow samples");
     terrainShadowSamples_.framebuffer =
         makeFramebuffer({&terrainShadowSamples_.visibility}, nullptr, "terrain shadow samples");
     sparseSky_.size = (size + 3) / 4;

@@ -17,8 +17,9 @@
 //             size: that change marched at one pixel of each block (ocean/sea_reflection.frag),
 //             added back into the surface radiance by the same file's compose program
 //             (surfaceRadianceFramebuffer, additive)
-//   terrain shadow  R32F, 1 / TERRAIN_SHADOW_SPACING of the size on each side (rounded up):
-//             the terrain's shadow at the corner pixel of each block (render/terrain_shadow.frag)
+//   terrain shadow  RG32F, 1 / TERRAIN_SHADOW_SPACING of the size on each side (rounded up):
+//             the terrain's shadow at the corner pixel of each block, on the ground and on the
+//             sea's surface in front of it (render/terrain_shadow.frag)
 //   sparse    a quarter of the size on each side (rounded up): the reduced-rate march's
 //             samples, one pixel of each 4x4 block, with its surface distance and the
 //             history's error at each
@@ -62,7 +63,8 @@ struct FrameHistory {
 // TERRAIN_SHADOW_SPACING-square block, the block's corner.
 struct TerrainShadowSamples {
     glm::ivec2 size{0, 0};
-    gl::Texture visibility{GL_TEXTURE_2D};  // R32F: the sun's visible share, -1 where no surface
+    gl::Texture visibility{GL_TEXTURE_2D};  // RG32F: the march's clearance, rad, on the ground (r) and on the
+                                            // sea's surface in front of it (g); TERRAIN_SHADOW_NO_SURFACE where none
     gl::Framebuffer framebuffer;
 };
 

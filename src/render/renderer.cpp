@@ -148,8 +148,9 @@ std::vector<Renderer::Pass> Renderer::makePasses() {
                           terrain_.draw();
                       },
                       [this] { return terrain_.programs(); }});
-    // The terrain's shadow marched at one pixel of each block (render/terrain_shadow.frag);
-    // the surface light marches only where those around a pixel disagree.
+    // The terrain's shadow marched at one pixel of each block (render/terrain_shadow.frag), on
+    // the ground and on the sea's surface in front of it; the surface light and the ocean march
+    // only where those around a pixel disagree.
     passes.push_back({{"terrain shadow", {R::GBuffer}, {R::TerrainShadow}},
                       [](const Scene& s) { return s.terrain.shadows; },
                       [this](const Scene&) {
@@ -159,13 +160,15 @@ std::vector<Renderer::Pass> Renderer::makePasses() {
                           const GBuffer& g = targets_.gbuffer();
                           glBindTextureUnit(binding::UNIT_GBUFFER_NORMAL, g.normal.id());
                           glBindTextureUnit(binding::UNIT_GBUFFER_DEPTH, g.depth.id());
+                          ocean_.bindBlock();  // the sea's level and its land bounds (the g channel)
                           glBindVertexArray(emptyVertexArray_.id());
                           terrainShadow_.draw();
                           glViewport(0, 0, targets_.size().x, targets_.size().y);
                       },
                       [this] { return std::vector<gl::HotProgram*>{&terrainShadow_.program()}; }});
     // Reads the terrain shadow's samples only when the preset's terrain.shadows is on (the
-    // block's terrainShadows), which is when that pass runs.
+    // block's terrainShadows), which is when that pass runs; so does the ocean (their g: the
+    // sea's surface).
     passes.push_back({{"surface light", {R::GBuffer, R::TerrainShadow}, {R::SurfaceRadiance}}, always,
                       [this](const Scene&) {
                           targets_.clearSurface();
@@ -180,7 +183,7 @@ std::vector<Renderer::Pass> Renderer::makePasses() {
                           surfaceLight_.draw();
                       },
                       [this] { return std::vector<gl::HotProgram*>{&surfaceLight_.program()}; }});
-    passes.push_back({{"ocean", {R::GBuffer, R::SurfaceRadiance}, {R::SurfaceRadiance, R::GBuffer, R::SeaReflection}},
+    passes.push_back({{"ocean", {R::GBuffer, R::TerrainShadow, R::SurfaceRadiance}, {R::SurfaceRadiance, R::GBuffer, R::SeaReflection}},
                       [](const Scene& s) { return s.terrain.ocean; },
                       [this](const Scene& s) {
                           targets_.copySeabed();
@@ -188,6 +191,7 @@ std::vector<Renderer::Pass> Renderer::makePasses() {
                           glBindFramebuffer(GL_FRAMEBUFFER, targets_.oceanFramebuffer());
                           glBindTextureUnit(binding::UNIT_SEABED_DEPTH, targets_.seabedDepth().id());
                           glBindTextureUnit(binding::UNIT_SEABED_RADIANCE, targets_.seabedRadiance().id());
+                          glBindTextureUnit(binding::UNIT_TERRAIN_SHADOW, targets_.terrainShadowSamples().visibility.id());
                           glBeginQuery(GL_ANY_SAMPLES_PASSED, oceanDrew_.id());
                           ocean_.draw(s.atmosphere.elek_3d_table, lastPrepare_.underWater);
                           glEndQuery(GL_ANY_SAMPLES_PASSED);
