@@ -63,11 +63,14 @@ void main() {
     for (int i = 0; i < marches; ++i) outClearance.r = TerrainShadowClearance(s.point, sun);
     vec3 seaPoint;
     bool sea = seaSurfaceAt(s.dir, s, surface, seaPoint);
-    vec3 up = normalize(seaPoint);
-    bool mayReach = sea && dot(up, sun) > 0.0 &&
-                    terrainShadowMayReachSea(up, sun, ocean.seaLevel, frame.planetRadius / M_PER_KM,
-                                             ocean.continentLipschitz, ocean.continentSampleSlackRad, terrainShape,
-                                             uContinents);
-    if (sea) outClearance.g = 1.0;  // lit: no land within reach, or the sun is down (no sunlight to shade)
+    bool mayReach = false;  // land within the shadow's reach of the sea's point, the sun up
+    for (int i = 0; i < (sea ? 1 : 0); ++i) {
+        vec3 up = normalize(seaPoint);
+        mayReach = dot(up, sun) > 0.0 &&
+                   terrainShadowMayReachSea(up, sun, ocean.seaLevel, frame.planetRadius / M_PER_KM,
+                                            ocean.continentLipschitz, ocean.continentSampleSlackRad, terrainShape,
+                                            uContinents);
+        outClearance.g = 1.0;  // lit where no land is within reach, or the sun is down (no sunlight to shade)
+    }
     for (int i = 0; i < (mayReach ? 1 : 0); ++i) outClearance.g = TerrainShadowClearanceAbove(seaPoint, ocean.seaLevel, sun);
 }
