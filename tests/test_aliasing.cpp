@@ -178,10 +178,11 @@ TEST_F(AliasingTest, MountainsStillIsAntiAliased) {
 // 3.84 % once the slopes were gentle enough for the lighting to be linear in them (they were
 // 1.4-2.4, not the 0.25 their comment said), the dry grass linear in the patches, and rays
 // whose hit does not converge given the detail where the mesh's point drops onto the ground
-// instead of none. The rest is in the nearest rows (the 32 m scale's relief at 7 m: 6.8 %
-// there against 2.4 % without the detail) and in the meadow below the slope's crest (the
-// colour: 16 % against 13.8 %); 16 samples leave it (a bias of the mip filter's wider
-// kernel, not noise). The bound holds that gain; lower it as that is found.
+// instead of none. The rest is in the nearest rows (the 32 m scale's relief 20-90 m away,
+// its 1-2 m waves at this frame's Nyquist: 6.8 % there against 2.4 % without the detail) and
+// in the meadow below the slope's crest (the colour: 16 % against 13.8 %); 16 samples leave
+// it (a bias of the mip filter's wider kernel, not noise; docs/PERFORMANCE.md, 2026-12-04
+// sixth). The bound holds that gain; lower it as that is found.
 constexpr double kMountainsWithDetailBound = 0.041;
 
 TEST_F(AliasingTest, MountainsStillWithTheGroundDetailKeepsItsLighting) {
