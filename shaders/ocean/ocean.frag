@@ -220,8 +220,8 @@ void main() {
         // The terrain's march only where it may find land and the samples around the pixel do
         // not agree (a shadow's edge, the shore): a loop of one turn or none, so that the march's
         // samples take no turn on the open sea nor where the samples decide (a software
-        // renderer runs an if's code for every pixel, masked; a loop no pixel of a group enters
-        // it leaves: docs/PERFORMANCE.md).
+        // renderer runs an if's code for every pixel, masked, but leaves a loop that no pixel of
+        // a group enters: README "Programs, not branches").
         bool mayReach = terrainShadowMayReachSea(up, sun, ocean.seaLevel, frame.planetRadius / M_PER_KM,
                                                  ocean.continentLipschitz, ocean.continentSampleSlackRad, terrainShape,
                                                  uContinents);

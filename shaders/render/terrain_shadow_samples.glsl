@@ -12,10 +12,10 @@ const float TERRAIN_SHADOW_LIT_MARGIN = 0.03;
 // surface) around it (one, two or four: the corners of its cell of their grid), where they all
 // clear the sun's disc (angular radius `radius`) by TERRAIN_SHADOW_LIT_MARGIN (lit) or all hide
 // it (shadowed), or the pixel is a sample itself: true, with the clearance in `clearance`
-// (left as it was otherwise). False where a shadow's edge or penumbra passes or a sample shows no surface (an edge on
-// screen): the caller marches there. A shadow narrower than the samples' spacing that falls
-// between samples which clear the margin is missed, as the march misses a ridge narrower than
-// its own step.
+// (left as it was otherwise). False where a shadow's edge or penumbra passes or a sample shows
+// no surface (an edge on screen): the caller marches there. A shadow narrower than the samples'
+// spacing that falls between samples which clear the margin is missed, as the march misses a
+// ridge narrower than its own step.
 bool terrainClearanceFromSamples(sampler2D samples, ivec2 pixel, int channel, float radius, inout float clearance) {
     ivec2 corners[4];
     blockSampleCorners(pixel, TERRAIN_SHADOW_SPACING, textureSize(samples, 0) - 1, corners);
