@@ -31,8 +31,8 @@ layout(location = 0) out vec2 outClearance;
 
 // Where the view ray `dir` (unit, world axes) meets the sea's mean surface (a sphere
 // ocean.seaLevel above the planet radius) in front of the pixel's ground (`ground`, if
-// `hasGround`): true, with the point in km from the planet centre. The waves move the sea's points by metres, which do not move a
-// terrain's shadow. False on a dry world, from under the sea (the ocean shades no sunlight
+// `hasGround`): true, with the point in km from the planet centre. The waves move the sea's
+// points by metres, which do not move a terrain's shadow. False on a dry world, from under the sea (the ocean shades no sunlight
 // there) and where the ground is in front (the shore, land).
 bool seaSurfaceAt(vec3 dir, SurfacePoint ground, bool hasGround, out vec3 point) {
     point = vec3(0.0);

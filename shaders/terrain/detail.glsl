@@ -23,7 +23,7 @@
 // camera-relative plus the camera modulo TERRAIN_NEAR_WRAP_M (terrain/height.glsl): exact to a
 // millimetre near the camera; all periods divide TERRAIN_NEAR_WRAP_M, so the wrap of the
 // camera's position is invisible.
-// On where the preset's terrain.detail is (terrainDetail, terrain/terrain_block.glsl).
+// On where the preset's terrain.detail is: the terrain program built with TERRAIN_DETAIL 1 (terrain/terrain.frag).
 const int TERRAIN_DETAIL_SCALES = 3;
 const float TERRAIN_DETAIL_PERIOD_M[TERRAIN_DETAIL_SCALES] = float[](0.5, 4.0, 32.0);
 

@@ -79,9 +79,8 @@ void main() {
     // converge (one grazing a ridge) takes it where the mesh's point drops onto the ground.
     float distance = length(tePointFromCamera);
     float narrowFootprint = min(length(dpdx), length(dpdy));  // the detail's filter follows it (detail.glsl)
-    float strength = TERRAIN_DETAIL != 0 && terrainDetail != 0
-                         ? 1.0 - smoothstep(0.5 * TERRAIN_NEAR_RANGE_M, TERRAIN_NEAR_RANGE_M, distance)
-                         : 0.0;
+    float strength =
+        TERRAIN_DETAIL != 0 ? 1.0 - smoothstep(0.5 * TERRAIN_NEAR_RANGE_M, TERRAIN_NEAR_RANGE_M, distance) : 0.0;
     vec3 hit;
     float detailSlopeSpread = 0.0;  // what the detail's filter removed, for the surface light
     if (strength > 0.0 && narrowFootprint < TERRAIN_DETAIL_PERIOD_M[TERRAIN_DETAIL_SCALES - 1]) {

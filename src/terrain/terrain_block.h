@@ -18,12 +18,12 @@ struct TerrainBlock {
     float targetEdgePixels;           // px
     int hasOcean;                     // 1: water below sea level
     int shadows;                      // 1: the terrain casts shadows (terrain/terrain_shadow.glsl)
-    int detail;                       // 1: ground detail (terrain/detail.glsl)
+    int padding0;                     // (the ground detail is a program of its own: TERRAIN_DETAIL, terrain_pass.h)
     int lightShafts;                  // 1: the terrain's shadows in the air (atmosphere/interface.glsl)
 };
 static_assert(offsetof(TerrainBlock, lowlandAlbedo) == 48 && offsetof(TerrainBlock, targetEdgePixels) == 60 &&
                   offsetof(TerrainBlock, hasOcean) == 64 &&
-                  offsetof(TerrainBlock, shadows) == 68 && offsetof(TerrainBlock, detail) == 72 &&
+                  offsetof(TerrainBlock, shadows) == 68 && offsetof(TerrainBlock, padding0) == 72 &&
                   offsetof(TerrainBlock, lightShafts) == 76 && sizeof(TerrainBlock) == 80,
               "TerrainBlock must match std140 (shaders/terrain/terrain_block.glsl)");
 
@@ -34,7 +34,6 @@ inline TerrainBlock makeTerrainBlock(const Scene& scene) {
     b.targetEdgePixels = static_cast<float>(scene.terrain.target_edge_px);
     b.hasOcean = scene.terrain.ocean ? 1 : 0;
     b.shadows = scene.terrain.shadows ? 1 : 0;
-    b.detail = scene.terrain.detail ? 1 : 0;
     b.lightShafts = scene.terrain.light_shafts ? 1 : 0;
     return b;
 }
