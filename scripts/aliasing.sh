@@ -14,7 +14,7 @@
 #
 # The references are kept and reused (delete out/aliasing/*-reference.exr, or set
 # FRESH=1, after a change of the frame). On two llvmpipe cores a 2560x1440 reference takes
-# one to two minutes, a 640x360 still a few seconds a sample. Results: docs/PERFORMANCE.md
+# about 20 s, a 640x360 still a few seconds a sample. Results: docs/PERFORMANCE.md
 # "Aliasing (issue 13)". Prints one line per view and sample count:
 #   view  samples  mean  p99   (relative luminance error, %)
 set -euo pipefail

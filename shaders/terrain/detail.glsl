@@ -98,9 +98,12 @@ DetailSample detailAtScaleIsotropic(vec3 p, vec3 dpdx, vec3 dpdy, vec3 planeWeig
 // along the ray and narrow across it. An isotropic mip level (the GPU's choice from the
 // longer side) blurs across the ray too, which a supersampled frame does not (the aliasing
 // test measured 6.5 % against 3 % for the mountains). So up to TERRAIN_DETAIL_TAPS samples
-// along the long side, each at the level of the narrow one. (The GL's own anisotropic
-// filtering took llvmpipe minutes per frame at grazing angles.)
-const int TERRAIN_DETAIL_TAPS = 4;
+// along the long side, each at the level of its share of the long side or of the narrow
+// side, whichever is longer. (The GL's own anisotropic filtering took llvmpipe minutes per
+// frame at grazing angles.) Two: four cost the `mountains` view a third of the terrain pass
+// more, for an aliasing error of 1.98 % instead of 2.3 % at 640x360 against 2560x1440
+// (docs/PERFORMANCE.md, 2026-12-05).
+const int TERRAIN_DETAIL_TAPS = 2;
 
 DetailSample detailAtScale(vec3 p, vec3 dpdx, vec3 dpdy, vec3 planeWeights, float period) {
     vec3 major = dot(dpdx, dpdx) >= dot(dpdy, dpdy) ? dpdx : dpdy;

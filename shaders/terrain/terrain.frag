@@ -72,19 +72,28 @@ void main() {
     albedo *= mix(1.0, TERRAIN_WET_DARKENING, wetness(height, heightSpread));
     // The detail lies on the height field, not on the mesh: the mesh's point is off the true
     // surface by what its interpolation and its float heights missed, which changes with the
-    // tessellation (it follows the camera), and the detail would swim and pop with it. The
-    // pixel sees the true surface where its ray meets it, found exactly to float within the
-    // near field's range (terrainRayHitNear); the detail fades out towards that range (placed
-    // on the mesh beyond it, it would move with the tessellation). A ray that does not
-    // converge (one grazing a ridge) takes it where the mesh's point drops onto the ground.
+    // tessellation (it follows the camera), and the detail would swim and pop with it. Where
+    // the finest scale shows (the footprint under its period), the pixel sees the true surface
+    // where its ray meets it, one Newton step from the mesh's point (terrainRayHitNearSteps:
+    // the step's error is second order in the mesh's centimetres; a second step's height
+    // evaluation cost the `mountains` view a tenth of the pass). Farther out the detail takes
+    // the mesh's point: the mesh's error along the ray is its height error over the ray's
+    // slope, and the footprint along the ray is the pixel's angle times the distance over the
+    // same slope, so there the error is a few per cent of the footprint (an anchor update
+    // changes no more pixels: RenderTest.AnchorUpdatesDoNotPopVisibly), and the height
+    // evaluation the step needs cost the `mountains` view another tenth. A ray that does not
+    // descend (one grazing a ridge) takes it where the mesh's point drops onto the ground. The
+    // detail fades out towards the near field's range (placed on the mesh beyond it, it would
+    // move with the tessellation).
     float distance = length(tePointFromCamera);
     float narrowFootprint = min(length(dpdx), length(dpdy));  // the detail's filter follows it (detail.glsl)
     float strength =
         TERRAIN_DETAIL != 0 ? 1.0 - smoothstep(0.5 * TERRAIN_NEAR_RANGE_M, TERRAIN_NEAR_RANGE_M, distance) : 0.0;
-    vec3 hit;
     float detailSlopeSpread = 0.0;  // what the detail's filter removed, for the surface light
     if (strength > 0.0 && narrowFootprint < TERRAIN_DETAIL_PERIOD_M[TERRAIN_DETAIL_SCALES - 1]) {
-        terrainRayHitNear(tePointFromCamera, terrainNear, terrainShape, hit);
+        vec3 hit = tePointFromCamera;
+        if (narrowFootprint < TERRAIN_DETAIL_PERIOD_M[0])
+            terrainRayHitNearSteps(tePointFromCamera, terrainNear, terrainShape, 1, hit);
         applyTerrainDetail(hit + terrainXyz(terrainNear.cameraPlace), dpdx, dpdy, up, weights, strength, normal, albedo,
                            detailSlopeSpread);
     }

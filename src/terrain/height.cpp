@@ -113,6 +113,11 @@ bool terrainRayHitNear(glm::vec3 start, const TerrainNear& near, const TerrainSh
     return glsl::terrainRayHitNear(start, toGlsl(near), toGlsl(shape), hit);
 }
 
+bool terrainRayHitNearSteps(glm::vec3 start, const TerrainNear& near, const TerrainShape& shape, int steps,
+                            glm::vec3& hit) {
+    return glsl::terrainRayHitNearSteps(start, toGlsl(near), toGlsl(shape), steps, hit);
+}
+
 float terrainNearRangeM() { return glsl::TERRAIN_NEAR_RANGE_M; }
 
 float terrainNearWrapM() { return glsl::TERRAIN_NEAR_WRAP_M; }

@@ -107,6 +107,11 @@ float terrainHeightNearGrad(glm::vec3 pointFromCamera, const TerrainNear& near, 
 // the vertical onto the height field. GLSL: terrainRayHitNear.
 bool terrainRayHitNear(glm::vec3 start, const TerrainNear& near, const TerrainShape& shape, glm::vec3& hit);
 
+// The same search with at most `steps` Newton steps; with one, the step taken is trusted where the
+// ray descends (what the ground detail uses). GLSL: terrainRayHitNearSteps.
+bool terrainRayHitNearSteps(glm::vec3 start, const TerrainNear& near, const TerrainShape& shape, int steps,
+                            glm::vec3& hit);
+
 // How far from the camera the near field is used, m (TERRAIN_NEAR_RANGE_M).
 float terrainNearRangeM();
 

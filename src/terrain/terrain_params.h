@@ -31,7 +31,7 @@ struct TerrainParams {
     double target_edge_px = 12.0;       // tessellation aims at triangle edges this long on screen, [1, 200]
     bool ocean = true;                  // water fills everything below sea level (false: dry basins, Mars)
     bool shadows = true;                // mountains cast shadows (a march towards the sun per lit pixel; terrain/terrain_shadow.glsl)
-    bool detail = false;                // ground detail at close range (terrain/detail.glsl); off until its filtering passes the aliasing bound
+    bool detail = true;                 // ground detail at close range (terrain/detail.glsl)
     bool light_shafts = false;          // the terrain's shadows in the air (a few shadow marches a pixel; atmosphere/interface.glsl)
 };
 
