@@ -161,10 +161,13 @@ vec3 detailPlaneWeights(vec3 normal) {
 // filtered by the footprint, and weights from it would blend other patterns at other
 // distances and image sizes (the detail would change as the camera moves). `strength` in
 // [0, 1] scales the relief and the tints (the fade towards the near field's range).
-// slopeSpread: the standard deviation of the detail's slopes about the returned normal under
-// the footprint, per component (rise over run), what the filter removed (see the top).
-void applyTerrainDetail(vec3 p, vec3 dpdx, vec3 dpdy, vec3 up, float weights[5], float strength, inout vec3 normal,
-                        inout vec3 albedo, out float slopeSpread) {
+// `vegetated`: the lowlands are grass (a world with a sea), with dry and lush patches; a dry
+// world's lowlands (terrainLowlandAlbedo: Mars's dust) take the tints alone (the lush side's
+// bluer green made grey-blue blotches on Mars). slopeSpread: the standard deviation of the
+// detail's slopes about the returned normal under the footprint, per component (rise over
+// run), what the filter removed (see the top).
+void applyTerrainDetail(vec3 p, vec3 dpdx, vec3 dpdy, vec3 up, float weights[5], float strength, bool vegetated,
+                        inout vec3 normal, inout vec3 albedo, out float slopeSpread) {
     vec3 slopes = vec3(0.0);
     vec3 tint = vec3(0.0);
     for (int m = 0; m < 5; ++m) {
@@ -190,6 +193,6 @@ void applyTerrainDetail(vec3 p, vec3 dpdx, vec3 dpdy, vec3 up, float weights[5],
     float variation = tint.x * fine.height + tint.y * middle.height + tint.z * patches;
     albedo *= clamp(1.0 + variation, 0.3, 2.0);
     // Grass: dry, yellower patches among lush ones.
-    float dry = weights[TERRAIN_MATERIAL_GRASS] * strength * TERRAIN_DRY_GRASS_PER_PATCH * patches;
+    float dry = vegetated ? weights[TERRAIN_MATERIAL_GRASS] * strength * TERRAIN_DRY_GRASS_PER_PATCH * patches : 0.0;
     albedo *= max(1.0 + dry * (TERRAIN_DRY_GRASS_TINT - 1.0), 0.0);
 }

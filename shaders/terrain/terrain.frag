@@ -94,8 +94,8 @@ void main() {
         vec3 hit = tePointFromCamera;
         if (narrowFootprint < TERRAIN_DETAIL_PERIOD_M[0])
             terrainRayHitNearSteps(tePointFromCamera, terrainNear, terrainShape, 1, hit);
-        applyTerrainDetail(hit + terrainXyz(terrainNear.cameraPlace), dpdx, dpdy, up, weights, strength, normal, albedo,
-                           detailSlopeSpread);
+        applyTerrainDetail(hit + terrainXyz(terrainNear.cameraPlace), dpdx, dpdy, up, weights, strength,
+                           terrainHasOcean != 0, normal, albedo, detailSlopeSpread);
     }
     outNormal = vec4(normal, height);
     outAlbedo = vec4(albedo, 1.0);
