@@ -199,8 +199,8 @@ TEST_F(AliasingTest, MountainsStillIsAntiAliased) {
 // terrain/rough_cosine.glsl) and the tile's longest waves were dropped, 4.95 % after, 3.84 %
 // once the slopes were gentle enough for the lighting to be linear in them, 4.0-4.3 % with
 // two anisotropic taps instead of four and one Newton step, only where the finest scale
-// shows, instead of up to four everywhere (the terrain pass 3.1x -> 1.6-2.1x the pass
-// without the detail; docs/PERFORMANCE.md, 2026-12-05).
+// shows, instead of up to four everywhere (the terrain pass 2.3-3.7x -> 1.7-2.3x the
+// pass without the detail; docs/PERFORMANCE.md, 2026-12-05).
 constexpr double kMountainsWithDetailAtIssueSizeBound = 0.026;
 
 TEST_F(AliasingTest, MountainsStillWithTheGroundDetailAtTheIssuesSizes) {
