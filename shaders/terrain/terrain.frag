@@ -80,11 +80,11 @@ void main() {
     // the mesh's point: only the 4 and 32 m scales show there, each blurred over the footprint
     // by its mip level, and the mesh's error along the ray (its height error over the ray's
     // slope) moves them by part of a footprint: an anchor update changes 73 of 57600 `ground`
-    // pixels by more than 5 % (63 with the step everywhere; RenderTest.AnchorUpdatesDoNotPop-
-    // Visibly), and the step's height evaluation there cost the `mountains` view another
-    // tenth. A ray that does not descend (one grazing a ridge) takes it where the mesh's point
-    // drops onto the ground. The detail fades out towards the near field's range (placed on
-    // the mesh beyond it, it would move with the tessellation).
+    // pixels by more than 5 % (63 with the step everywhere;
+    // RenderTest.AnchorUpdatesDoNotPopVisibly), and the step's height evaluation there cost
+    // the `mountains` view another tenth. A ray that does not descend (one grazing a ridge)
+    // takes it where the mesh's point drops onto the ground. The detail fades out towards the
+    // near field's range (placed on the mesh beyond it, it would move with the tessellation).
     float distance = length(tePointFromCamera);
     float narrowFootprint = min(length(dpdx), length(dpdy));  // the detail's filter follows it (detail.glsl)
     float strength =
