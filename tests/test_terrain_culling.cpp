@@ -113,3 +113,23 @@ TEST_F(TerrainCulling, HighestLevelsStayInTheirPatches) {
     std::printf("mountains 1280x720: %d of %d pixels in the top tenth are sky\n", sky, pixels);
     EXPECT_EQ(sky, pixels) << "the terrain covers the sky: tessellated vertices joined across patches";
 }
+
+// The ground detail's program only where its ground can be in view (TerrainPass::detailInReach):
+// from orbit and space no pixel is within its 3 km, and the program without its code draws
+// the same frame for less (llvmpipe runs code that no pixel enters). At ground level and in
+// the aircraft's view it is drawn.
+TEST_F(TerrainCulling, TheGroundDetailIsDrawnOnlyWithinItsReach) {
+    EXPECT_TRUE(TerrainPass::detailInReach(2.0, 8000.0));
+    EXPECT_TRUE(TerrainPass::detailInReach(10900.0, 8000.0));
+    EXPECT_FALSE(TerrainPass::detailInReach(11100.0, 8000.0));
+    const glm::ivec2 size{160, 90};
+    ImageRGBAF image;
+    for (const std::string view : {"ground", "beach", "mountains"}) {
+        render(view, size, PatchOrder::NearFirst, image);
+        EXPECT_TRUE(renderer->terrain().detailDrawn()) << view;
+    }
+    for (const std::string view : {"orbit", "space"}) {
+        render(view, size, PatchOrder::NearFirst, image);
+        EXPECT_FALSE(renderer->terrain().detailDrawn()) << view;
+    }
+}

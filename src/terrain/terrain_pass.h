@@ -54,6 +54,12 @@ public:
         long long fragments = -1;   // fragment-stage invocations
     };
     void setStatistics(bool on) { statistics_ = on; }
+    // Whether the last prepared frame draws with the ground detail's program: terrain.detail on
+    // and the camera close enough to the ground for any of it to show (detailInReach).
+    bool detailDrawn() const { return detailOn_ && detailed_.has_value(); }
+    // Whether ground within the detail's range (TERRAIN_NEAR_RANGE_M) can be in view of a camera
+    // `cameraAltitudeM` above the planet's radius, the ground reaching at most `maxHeightM`.
+    static bool detailInReach(double cameraAltitudeM, double maxHeightM);
     // The patches' draw order (grid/grid_mesh.h; NearFirst by default). Tests compare.
     void setPatchOrder(PatchOrder order) { mesh_.setOrder(order); }
     const Statistics& lastStatistics() const { return lastStatistics_; }
