@@ -652,4 +652,55 @@ TEST(ProjectedGrid, VerticesCrowdTowardsTheCentreAndKeepTheBoundary) {
     EXPECT_NEAR(last, 1.0, 0.02);
 }
 
+// angleOutsideVertexBox bounds from below how near the grid's centre (as an angle from grid z)
+// anything outside a box of vertices comes, the patches' bilinear interiors included (the
+// terrain's ground detail takes its program only on the patches inside: src/terrain/
+// terrain_pass.cpp), and the bound is met where the nearest side crosses an axis. Checked
+// against every vertex outside and 9 x 9 points of every patch outside, over grid sizes, both
+// exponents, shifts from a 2 m camera's (~20) to far ones (negative), and boxes round the centre.
+TEST(ProjectedGrid, AngleOutsideAVertexBoxIsALowerBoundMetOnTheAxis) {
+    const auto angleAt = [](glm::dvec2 g, int n, double zs) {
+        const glm::dvec3 p = predisplaced(g, n, zs);
+        return std::atan2(std::hypot(p.x, p.y), p.z);
+    };
+    int checked = 0;
+    for (const int N : {100, 33, 64}) {
+        const int centre = (N - 1) / 2;
+        for (const int n : {4, 2})
+            for (const double zs : {20.0, 1.0, 0.05, -0.2})
+                for (const glm::ivec4 box : {glm::ivec4(centre - 3, centre - 3, centre + 4, centre + 4),
+                                             glm::ivec4(centre - 10, centre - 2, centre + 15, centre + 8),
+                                             glm::ivec4(0, centre - 5, N - 1, centre + 12),
+                                             glm::ivec4(1, 1, N - 2, N - 2)}) {
+                    const glm::ivec2 low(box.x, box.y), high(box.z, box.w);
+                    const double bound = angleOutsideVertexBox(low, high, N, n, zs);
+                    double nearest = kPi;
+                    for (int j = 0; j + 1 < N; ++j)
+                        for (int i = 0; i + 1 < N; ++i) {
+                            const bool inside = i >= low.x && i + 1 <= high.x && j >= low.y && j + 1 <= high.y;
+                            if (inside) continue;
+                            const glm::dvec2 c00 = gridVertexCoordinate(i, j, N), c10 = gridVertexCoordinate(i + 1, j, N);
+                            const glm::dvec2 c01 = gridVertexCoordinate(i, j + 1, N), c11 = gridVertexCoordinate(i + 1, j + 1, N);
+                            for (int b = 0; b <= 8; ++b)
+                                for (int a = 0; a <= 8; ++a) {
+                                    const double u = a / 8.0, v = b / 8.0;
+                                    const glm::dvec2 g = glm::mix(glm::mix(c00, c10, u), glm::mix(c01, c11, u), v);
+                                    nearest = std::min(nearest, angleAt(g, n, zs));
+                                }
+                        }
+                    ASSERT_GE(nearest, bound - 1e-12) << "N " << N << " n " << n << " z_s " << zs << " box " << box.x;
+                    // Met on the axis (sampled at eighths of a patch: within 2 % of the bound)
+                    // where the projection is one-to-one (the angle under 90 degrees).
+                    if (bound < 0.5 * kPi) {
+                        EXPECT_LE(nearest, bound * 1.02 + 1e-9) << "N " << N << " z_s " << zs;
+                    }
+                    ++checked;
+                }
+    }
+    EXPECT_EQ(checked, 3 * 2 * 4 * 4);
+    // The whole grid leaves nothing outside; a box round the centre leaves a positive angle.
+    EXPECT_EQ(angleOutsideVertexBox({0, 0}, {99, 99}, 100, 4, 20.0), kPi);
+    EXPECT_GT(angleOutsideVertexBox({48, 48}, {56, 56}, 100, 4, 20.0), 0.0);
+}
+
 }  // namespace planet

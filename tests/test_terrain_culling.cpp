@@ -15,6 +15,8 @@
 #include "gl_test_support.h"
 #include "render/readback.h"
 #include "render/renderer.h"
+#include "terrain/height.h"
+#include "terrain/terrain_pass.h"
 
 using namespace planet;
 
@@ -131,5 +133,79 @@ TEST_F(TerrainCulling, TheGroundDetailIsDrawnOnlyWithinItsReach) {
     for (const std::string view : {"orbit", "space"}) {
         render(view, size, PatchOrder::NearFirst, image);
         EXPECT_FALSE(renderer->terrain().detailDrawn()) << view;
+    }
+}
+
+// Within the detail's reach, only the patches that can come within its range take the detail's
+// program (TerrainPass::detailPatchCount): every point of every patch after them, at any height
+// from 12 km under to 9 km over the sea, is farther from the camera than the range. Cameras from
+// 2 m to 10 km up, at the grid's anchor and as far from it as the anchor lets them roam
+// (anchorThresholdM), the grid's points and 5 x 5 points in each patch.
+TEST(TerrainDetailRings, EveryPatchAfterTheDetailsRingsIsBeyondItsRange) {
+    const double radius = 6.371e6, maxHeight = 8000.0, range = terrain::terrainNearRangeM();
+    const GridParams params;  // 100 x 100, exponent 4, as earth.toml
+    const int N = params.size;
+    const std::vector<PatchRing> rings = nearFirstRings(N);
+    ASSERT_GT(rings.size(), 2u);
+    for (const double altitude : {2.0, 300.0, 3000.0, 10000.0})
+        for (const double roam : {0.0, 1.0}) {
+            Camera camera;
+            camera.position = glm::dvec3(0.3, -0.5, 0.8) * ((radius + altitude) / glm::length(glm::dvec3(0.3, -0.5, 0.8)));
+            GridAnchor anchor;
+            updateAnchor(anchor, camera, anchorThresholdM(params, altitude), false);
+            // The camera moved off the anchor sideways by the fraction `roam` of the threshold.
+            const glm::dvec3 side = glm::normalize(glm::cross(camera.position, glm::dvec3(0.0, 0.0, 1.0)));
+            camera.position += side * (roam * 0.999 * anchorThresholdM(params, altitude));
+            const GridProjection projection = gridProjection(anchor, radius, maxHeight);
+            const GridBlock block = makeGridBlock(projection, params.exponent, camera.position, radius);
+            const int count = TerrainPass::detailPatchCount(rings, (N - 1) * (N - 1), N, block, range);
+            // The rings drawn with the detail: those that end at `count`.
+            glm::ivec2 low(0), high(N - 1);
+            for (const PatchRing& ring : rings)
+                if (ring.firstPatch + ring.patchCount == count) low = ring.boxMin, high = ring.boxMax;
+            double nearest = 1e30;
+            for (int j = 0; j + 1 < N; ++j)
+                for (int i = 0; i + 1 < N; ++i) {
+                    if (i >= low.x && i + 1 <= high.x && j >= low.y && j + 1 <= high.y) continue;
+                    const glm::dvec2 c00 = gridVertexCoordinate(i, j, N), c10 = gridVertexCoordinate(i + 1, j, N);
+                    const glm::dvec2 c01 = gridVertexCoordinate(i, j + 1, N), c11 = gridVertexCoordinate(i + 1, j + 1, N);
+                    for (int b = 0; b <= 4; ++b)
+                        for (int a = 0; a <= 4; ++a) {
+                            const glm::dvec2 g = glm::mix(glm::mix(c00, c10, a / 4.0), glm::mix(c01, c11, a / 4.0), b / 4.0);
+                            const glm::dvec3 direction =
+                                glm::normalize(projection.worldFromGrid * predisplaced(g, params.exponent, projection.zShift));
+                            for (const double height : {-12000.0, 0.0, 9000.0})
+                                nearest = std::min(nearest, glm::length(direction * (radius + height) - camera.position));
+                        }
+                }
+            std::printf("%6.0f m up, roamed %.0f of the threshold: the detail on %d of %d patches; the nearest "
+                        "point of the rest %.0f m away\n",
+                        altitude, roam, count, (N - 1) * (N - 1), nearest);
+            EXPECT_GT(nearest, range) << altitude << " m";
+            // Not every patch: at 2 m the centre's block alone (64 patches of 9801).
+            if (altitude < 1000.0) {
+                EXPECT_LT(count, (N - 1) * (N - 1) / 10) << altitude << " m";
+            }
+        }
+}
+
+// The split draws the same picture as the detail's program on every patch, for a fraction of them.
+TEST_F(TerrainCulling, TheDetailsRingsDrawTheSamePixelsAsTheDetailEverywhere) {
+    const glm::ivec2 size{160, 90};
+    for (const std::string view : {"ground", "beach", "mountains"}) {
+        ImageRGBAF rings, everywhere;
+        render(view, size, PatchOrder::NearFirst, rings);
+        const int count = renderer->terrain().detailPatches();
+        renderer->terrain().setDetailOnEveryPatch(true);
+        render(view, size, PatchOrder::NearFirst, everywhere);
+        renderer->terrain().setDetailOnEveryPatch(false);
+        ASSERT_EQ(rings.pixels.size(), everywhere.pixels.size());
+        std::size_t differing = 0;
+        for (std::size_t i = 0; i < rings.pixels.size(); ++i) differing += rings.pixels[i] != everywhere.pixels[i] ? 1 : 0;
+        std::printf("%-9s the detail's program on %d of 9801 patches; %zu values differ from it on all\n", view.c_str(),
+                    count, differing);
+        EXPECT_GT(count, 0) << view;
+        EXPECT_LT(count, 9801 / 10) << view;
+        EXPECT_EQ(differing, 0u) << view;
     }
 }

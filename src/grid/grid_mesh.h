@@ -39,6 +39,17 @@ GridBlock makeGridBlock(const GridProjection& projection, int exponent, const gl
 // Opaque passes draw the same pixels in either order (the nearest fragment wins).
 enum class PatchOrder { Rows, NearFirst };
 
+// NearFirst's rings, in draw order: ring k's patches follow those of rings 0..k-1, and rings
+// 0..k together lie in a box of vertex indices (inclusive, the grid's centre inside), beyond
+// which angleOutsideVertexBox (grid/projected_grid.h) bounds how near the rest can come.
+struct PatchRing {
+    int firstPatch = 0;
+    int patchCount = 0;
+    glm::ivec2 boxMin{0};
+    glm::ivec2 boxMax{0};
+};
+std::vector<PatchRing> nearFirstRings(int size);
+
 class GridMesh {
 public:
     explicit GridMesh(std::string label, PatchOrder order = PatchOrder::Rows);
@@ -49,8 +60,12 @@ public:
     // Uploads the grid's projection (the prepare step).
     void setProjection(const GridBlock& block);
     // Binds the grid's block at BLOCK_GRID and draws the patches (GL_PATCHES, 4 vertices
-    // each) with the bound program.
-    void draw() const;
+    // each) with the bound program: all of them, or `count` from `first` in draw order.
+    void draw() const { draw(0, patchCount()); }
+    void draw(int first, int count) const;
+    int patchCount() const { return size_ > 1 ? (size_ - 1) * (size_ - 1) : 0; }
+    // NearFirst's rings (empty in row order).
+    const std::vector<PatchRing>& rings() const { return rings_; }
 
     // Mesa's software renderers (llvmpipe, softpipe) tessellate in the Gallium draw module,
     // which numbers the tessellated vertices of one chunk of input (up to 4096 vertices: 1024
@@ -69,10 +84,8 @@ private:
     gl::Buffer block_;  // GridBlock
     PatchOrder order_;
     int size_ = 0;
-    GLsizei indexCount_ = 0;
-    bool splitDraws_;                      // a software renderer: draw in runs (above)
-    std::vector<GLsizei> splitCounts_;     // per run: its indices
-    std::vector<const void*> splitOffsets_;  // per run: its first index's byte offset
+    bool splitDraws_;  // a software renderer: draw in runs (above)
+    std::vector<PatchRing> rings_;
 };
 
 }  // namespace planet

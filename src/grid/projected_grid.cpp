@@ -50,12 +50,40 @@ glm::dvec2 gridCoordinate(int i, int j, int N) {
     return {static_cast<double>(2 * i - (N - 1)) * scale, static_cast<double>(2 * j - (N - 1)) * scale};
 }
 
+namespace {
+
+// f(m) / m = a + 2 (1 - a) m - (1 - a) m^2 of gridVertexCoordinate (no division at the centre).
+double centreWarpScale(double m) {
+    const double a = kGridCentreDensity;
+    return a + (1.0 - a) * m * (2.0 - m);
+}
+
+}  // namespace
+
 glm::dvec2 gridVertexCoordinate(int i, int j, int N) {
     const glm::dvec2 g = gridCoordinate(i, j, N);
-    const double m = std::max(std::abs(g.x), std::abs(g.y));
-    const double a = kGridCentreDensity;
-    // g * f(m) / m, f(m) / m = a + 2 (1 - a) m - (1 - a) m^2 (no division at the centre).
-    return g * (a + (1.0 - a) * m * (2.0 - m));
+    return g * centreWarpScale(std::max(std::abs(g.x), std::abs(g.y)));  // g * f(m) / m
+}
+
+// A patch outside the box lies wholly beyond one of its sides, say g_x >= x0 > 0 before the
+// centre's warp (the sides are vertex lines). The warp g f(m) / m has f(m) / m increasing in
+// m = |g|_inf (its derivative 2 (1 - a)(1 - m) >= 0) and m >= g_x >= x0, so every corner has a
+// warped x >= f(x0), and so has every bilinear mix of them: the point's warped |g|_inf is at
+// least M = f(x0) over the nearest side. There Eq. 2's height is at most 1 - M^n (one factor
+// at most 1 - M^n, the other at most 1) and |g|_2 >= M, so the angle atan2(|g|_2, height + z_s)
+// is at least atan2(M, 1 - M^n + z_s) while that denominator is positive, and at least 90 deg
+// otherwise.
+double angleOutsideVertexBox(glm::ivec2 boxMin, glm::ivec2 boxMax, int N, int n, double z_s) {
+    double nearestSide = 2.0;  // |g| of the nearest side before the warp; beyond 1: no side
+    if (boxMin.x > 0) nearestSide = std::min(nearestSide, -gridCoordinate(boxMin.x, 0, N).x);
+    if (boxMin.y > 0) nearestSide = std::min(nearestSide, -gridCoordinate(0, boxMin.y, N).y);
+    if (boxMax.x < N - 1) nearestSide = std::min(nearestSide, gridCoordinate(boxMax.x, 0, N).x);
+    if (boxMax.y < N - 1) nearestSide = std::min(nearestSide, gridCoordinate(0, boxMax.y, N).y);
+    if (nearestSide > 1.0) return std::numbers::pi;
+    const double warped = std::max(0.0, nearestSide * centreWarpScale(nearestSide));
+    const double height = 1.0 - std::pow(warped, n) + z_s;
+    if (height <= 0.0) return 0.5 * std::numbers::pi;
+    return std::atan2(warped, height);
 }
 
 double hemisphereHeight(glm::dvec2 g, int n) {

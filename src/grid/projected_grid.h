@@ -100,6 +100,13 @@ glm::dvec2 gridCoordinate(int i, int j, int N);
 inline constexpr double kGridCentreDensity = 0.05;
 glm::dvec2 gridVertexCoordinate(int i, int j, int N);
 
+// The smallest angle from grid z (rad) at which the projected grid puts any point outside the
+// box of vertex indices [boxMin, boxMax] (inclusive) of an N x N grid: its vertices and the
+// bilinear interiors of its patches (terrain.tese interpolates gridVertexCoordinate), for Eq. 2's
+// exponent n and Eq. 3's z_s. The box must hold the grid's centre; pi when it is the whole grid.
+// A lower bound, met where the box's nearest side crosses a grid axis (derivation in the .cpp).
+double angleOutsideVertexBox(glm::ivec2 boxMin, glm::ivec2 boxMax, int N, int n, double z_s);
+
 // Eq. 2: the hemisphere approximation (1 - |g_x|^n)(1 - |g_y|^n); 1 at the
 // centre, 0 on the whole boundary. |g| so that odd n stays symmetric.
 double hemisphereHeight(glm::dvec2 g, int n);

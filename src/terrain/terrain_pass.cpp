@@ -1,5 +1,8 @@
 #include "terrain/terrain_pass.h"
 
+#include <algorithm>
+#include <cmath>
+#include <numbers>
 #include <string_view>
 
 #include "render/bindings.h"
@@ -21,6 +24,27 @@ bool TerrainPass::detailInReach(double cameraAltitudeM, double maxHeightM) {
     return cameraAltitudeM - maxHeightM < terrain::terrainNearRangeM();
 }
 
+int TerrainPass::detailPatchCount(const std::vector<PatchRing>& rings, int patchCount, int gridSize,
+                                  const GridBlock& grid, double rangeM) {
+    // A fragment lies on a triangle whose corners are tessellated points of its patch; the
+    // triangle's chord can come nearer than its corners by (edge^2 / 8 range): metres for
+    // the edges of hundreds of metres there can be, which the margin covers (the detail's
+    // strength is under 1 % beyond 0.95 of its range anyway: terrain.frag's smoothstep).
+    constexpr double kMargin = 1.05;
+    const glm::dvec3 camera(grid.cameraPositionAndRadius);
+    const glm::dvec3 axis(grid.worldFromGridColumns[2]);  // grid z, towards the projection camera
+    const double cameraAngle = std::atan2(glm::length(glm::cross(camera, axis)), glm::dot(camera, axis));
+    for (const PatchRing& ring : rings) {
+        const double beyond = angleOutsideVertexBox(ring.boxMin, ring.boxMax, gridSize, grid.exponent, grid.zShift);
+        // Every point beyond the ring's box is at least `beyond - cameraAngle` from the
+        // camera's direction (seen from the centre), so at least |camera| sin of that away.
+        const double apart = beyond - cameraAngle;
+        const double nearest = apart <= 0.0 ? 0.0 : glm::length(camera) * std::sin(std::min(apart, 0.5 * std::numbers::pi));
+        if (nearest >= kMargin * rangeM) return ring.firstPatch + ring.patchCount;
+    }
+    return patchCount;
+}
+
 TerrainPass::TerrainPass(const gl::ShaderSources& sources)
     : sources_(sources), plain_(sources, terrainProgram("terrain")) {
     glNamedBufferStorage(block_.id(), sizeof(terrain::TerrainBlock), nullptr, GL_DYNAMIC_STORAGE_BIT);
@@ -37,7 +61,8 @@ void TerrainPass::prepare(const Scene& scene, const Camera& camera, const noise:
     const double radius = scene.planetRadiusM();
     updateAnchor(anchor_, camera, anchorThresholdM(grid_, camera.altitude(radius)), false);
     const GridProjection projection = gridProjection(anchor_, radius, scene.terrain.max_height_m);
-    mesh_.setProjection(makeGridBlock(projection, grid_.exponent, camera.position, radius));
+    const GridBlock gridBlock = makeGridBlock(projection, grid_.exponent, camera.position, radius);
+    mesh_.setProjection(gridBlock);
 
     const terrain::TerrainBlock block = terrain::makeTerrainBlock(scene);
     glNamedBufferSubData(block_.id(), 0, sizeof block, &block);
@@ -58,6 +83,11 @@ void TerrainPass::prepare(const Scene& scene, const Camera& camera, const noise:
     // program without the detail's code draws the same pixels for less (llvmpipe pays for
     // code no pixel enters: `orbit` 640x360, 33 -> 73 ms of terrain pass with it).
     detailOn_ = scene.terrain.detail && detailInReach(camera.altitude(radius), scene.terrain.max_height_m);
+    // Within reach, only the patches that can come within the range take the detail's program
+    // (`ground`: the 64 of the centre's block of 9801), the rest the plain one, for the same reason.
+    detailPatches_ = detailOnEveryPatch_ ? mesh_.patchCount()
+                                         : detailPatchCount(mesh_.rings(), mesh_.patchCount(), grid_.size, gridBlock,
+                                                            terrain::terrainNearRangeM());
     if (detail_) glBindTextureUnit(binding::UNIT_TERRAIN_DETAIL, detail_->id());
 }
 
@@ -89,12 +119,7 @@ void TerrainPass::draw() {
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_GREATER);  // reversed-Z
     glDepthMask(GL_TRUE);
-    const gl::HotProgram& program = detailDrawn() ? *detailed_ : plain_;
-    glUseProgram(program.id());
-    // The detail filter's table (terrain/detail.glsl); absent from the program when unused.
-    const GLint lostVariance = glGetUniformLocation(program.id(), "uTerrainDetailLostVariance");
-    if (lostVariance >= 0 && !detailLostVariance_.empty())
-        glUniform1fv(lostVariance, static_cast<GLsizei>(detailLostVariance_.size()), detailLostVariance_.data());
+    const int nearPatches = detailPatches();
     const bool stages = statistics_ && pipelineStatistics();
     if (statistics_) glBeginQuery(GL_PRIMITIVES_GENERATED, primitives_.id());
     if (stages) {
@@ -104,7 +129,16 @@ void TerrainPass::draw() {
         glBeginQuery(GL_TESS_EVALUATION_SHADER_INVOCATIONS, evaluations_.id());
         glBeginQuery(GL_FRAGMENT_SHADER_INVOCATIONS, fragments_.id());
     }
-    mesh_.draw();
+    if (nearPatches > 0) {
+        glUseProgram(detailed_->id());
+        // The detail filter's table (terrain/detail.glsl); absent from the program when unused.
+        const GLint lostVariance = glGetUniformLocation(detailed_->id(), "uTerrainDetailLostVariance");
+        if (lostVariance >= 0 && !detailLostVariance_.empty())
+            glUniform1fv(lostVariance, static_cast<GLsizei>(detailLostVariance_.size()), detailLostVariance_.data());
+        mesh_.draw(0, nearPatches);
+    }
+    glUseProgram(plain_.id());
+    mesh_.draw(nearPatches, mesh_.patchCount() - nearPatches);
     if (stages) {
         glEndQuery(GL_VERTEX_SHADER_INVOCATIONS);
         glEndQuery(GL_CLIPPING_OUTPUT_PRIMITIVES);

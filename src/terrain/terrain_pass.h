@@ -60,6 +60,15 @@ public:
     // Whether ground within the detail's range (TERRAIN_NEAR_RANGE_M) can be in view of a camera
     // `cameraAltitudeM` above the planet's radius, the ground reaching at most `maxHeightM`.
     static bool detailInReach(double cameraAltitudeM, double maxHeightM);
+    // How many patches, from the first in the NearFirst draw order, take the detail's program:
+    // the rings up to the first beyond which no ground (at any height) comes within
+    // `rangeM` of the camera; all of them in row order (no rings) or when none is that far.
+    static int detailPatchCount(const std::vector<PatchRing>& rings, int patchCount, int gridSize,
+                                const GridBlock& grid, double rangeM);
+    // The last prepared frame's count (0 when the detail is not drawn).
+    int detailPatches() const { return detailDrawn() ? detailPatches_ : 0; }
+    // Tests: the detail's program for every patch, as before the rings (the same image).
+    void setDetailOnEveryPatch(bool on) { detailOnEveryPatch_ = on; }
     // The patches' draw order (grid/grid_mesh.h; NearFirst by default). Tests compare.
     void setPatchOrder(PatchOrder order) { mesh_.setOrder(order); }
     const Statistics& lastStatistics() const { return lastStatistics_; }
@@ -72,6 +81,8 @@ private:
     gl::HotProgram plain_;
     std::optional<gl::HotProgram> detailed_;  // built when terrain.detail is first on
     bool detailOn_ = false;
+    int detailPatches_ = 0;  // detailPatchCount of the last prepared frame
+    bool detailOnEveryPatch_ = false;
     GridMesh mesh_{"terrain", PatchOrder::NearFirst};
     gl::Buffer block_;      // TerrainBlock
     gl::Buffer nearBlock_;  // TerrainNear (terrain/height.h), every frame
