@@ -280,3 +280,77 @@ TEST(TerrainDetailLighting, ExpectedClampedCosineIsTheMeanOverNormallySpreadFace
     EXPECT_EQ(terrain::expectedClampedCosine(-0.5f, 0.0f), 0.0f);
     EXPECT_NEAR(terrain::expectedClampedCosine(0.0f, 0.2f), 0.2f / std::sqrt(2.0f * 3.14159265f), 1e-6f);
 }
+
+// The detail's two tri-planar projections (shaders/terrain/detail_planes.glsl, compiled as C++):
+// world-axis pairs, the least-weighted plane dropped, weights that sum to 1, and no jump on the
+// ground where the dropped plane changes; near the 8 directions where all three weights are equal
+// (the cube's corners) the pair turns with the direction, gradually a kilometre off. Where the
+// third weight is small (every shipped view), the three planes' old rule: |up|^4, those under 2 %
+// dropped, renormalised. Weights per axis: each projection's weight on the axis it projects along.
+TEST(TerrainDetailTexture, TheTwoProjectionsChangeWithoutAJumpOnTheGround) {
+    const auto along = [](glm::vec3 a, glm::vec3 b) { return glm::abs(glm::cross(a, b)); };
+    const auto perAxis = [&](const terrain::DetailPlanes& p) {
+        return p.w0 * along(p.a0, p.b0) + p.w1 * along(p.a1, p.b1);
+    };
+    const auto unit = [](double latDeg, double lonDeg) {
+        const double lat = glm::radians(latDeg), lon = glm::radians(lonDeg);
+        return glm::vec3(glm::dvec3(std::cos(lat) * std::cos(lon), std::cos(lat) * std::sin(lon), std::sin(lat)));
+    };
+    const double corner = glm::degrees(std::asin(1.0 / std::sqrt(3.0)));  // latitude of (1, 1, 1) / sqrt 3
+    constexpr double kKmPerDegree = 6371.0 * 3.14159265358979 / 180.0;
+    // Paths across each kind of switch (x = y under a z-heavy vertical; y = z; x = z: the two
+    // least components equal), and
+    // paths passing a corner at 1, 0.1 and 0.01 degrees: the largest change of the weights per
+    // kilometre of ground on an Earth-sized planet, and its bound.
+    struct Path {
+        double lat0, lon0, lat1, lon1, boundPerKm;
+    };
+    int switches = 0;
+    for (const Path path : {Path{60.0, 44.0, 60.0, 46.0, 0.01}, Path{5.0, 10.0, 15.0, 10.0, 0.01},
+                            Path{-5.0, 80.0, -15.0, 80.0, 0.01}, Path{corner + 1.0, 40.0, corner + 1.0, 50.0, 0.03},
+                            Path{corner + 0.1, 40.0, corner + 0.1, 50.0, 0.3},
+                            Path{corner + 0.01, 40.0, corner + 0.01, 50.0, 3.0}}) {
+        constexpr int kSteps = 20000;
+        const double stepKm = kKmPerDegree * std::hypot(path.lat1 - path.lat0, (path.lon1 - path.lon0) *
+                                                                                    std::cos(glm::radians(path.lat0))) /
+                              kSteps;
+        glm::vec3 previous(0.0f);
+        int droppedBefore = -1;
+        double steepest = 0.0;
+        for (int i = 0; i <= kSteps; ++i) {
+            const double t = static_cast<double>(i) / kSteps;
+            const glm::vec3 up = unit(glm::mix(path.lat0, path.lat1, t), glm::mix(path.lon0, path.lon1, t));
+            const terrain::DetailPlanes p = terrain::detailPlanes(up);
+            for (const glm::vec3 axis : {p.a0, p.b0, p.a1, p.b1}) ASSERT_NEAR(glm::length(axis), 1.0f, 1e-6f);
+            ASSERT_NEAR(glm::dot(p.a0, p.b0), 0.0f, 1e-6f);
+            ASSERT_NEAR(glm::dot(p.a1, p.b1), 0.0f, 1e-6f);
+            ASSERT_NEAR(p.w0 + p.w1, 1.0f, 1e-6f);
+            ASSERT_GE(std::min(p.w0, p.w1), 0.0f);
+            // The dropped axis (no projection along it) is the vertical's least component.
+            const glm::vec3 used = along(p.a0, p.b0) + along(p.a1, p.b1);
+            ASSERT_EQ(used.x + used.y + used.z, 2.0f);
+            const int dropped = used.x == 0.0f ? 0 : (used.y == 0.0f ? 1 : 2);
+            const glm::vec3 c = glm::abs(up);
+            EXPECT_LE(c[dropped], std::min({c.x, c.y, c.z}) + 1e-6f) << path.lat0 << " " << t;
+            const glm::vec3 weights = perAxis(p);
+            if (i > 0) {
+                steepest = std::max(steepest, static_cast<double>(glm::length(weights - previous)) / stepKm);
+                switches += dropped != droppedBefore;
+            }
+            previous = weights;
+            droppedBefore = dropped;
+        }
+        std::printf("path from (%.2f, %.1f) to (%.2f, %.1f): weights change by at most %.4f a km\n", path.lat0,
+                    path.lon0, path.lat1, path.lon1, steepest);
+        // A plane entering with the third's weight (no subtraction) jumps by 0.03-0.3 in one step.
+        EXPECT_LT(steepest, path.boundPerKm) << path.lat0 << " " << path.lon0;
+    }
+    EXPECT_GE(switches, 6);  // each path crosses a switch
+    for (const glm::vec3 up : {unit(30.0, -84.0), unit(43.0, -6.5025), unit(41.0, -105.5)}) {  // ground, beach, mountains
+        glm::vec3 w = up * up * up * up;
+        w /= w.x + w.y + w.z;
+        w = glm::mix(glm::vec3(0.0f), w, glm::greaterThan(w, glm::vec3(0.02f)));
+        w /= w.x + w.y + w.z;
+        EXPECT_LT(glm::length(perAxis(terrain::detailPlanes(up)) - w), 0.01f) << up.x << " " << up.y << " " << up.z;
+    }
+}

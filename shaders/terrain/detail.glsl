@@ -51,6 +51,8 @@ const vec3 TERRAIN_DETAIL_TINT[5] = vec3[](vec3(0.12, 0.10, 0.10), vec3(0.15, 0.
 const vec3 TERRAIN_DRY_GRASS_TINT = vec3(1.35, 1.15, 0.6);
 const float TERRAIN_DRY_GRASS_PER_PATCH = 0.3;
 
+#include "terrain/detail_planes.glsl"
+
 layout(binding = UNIT_TERRAIN_DETAIL) uniform sampler2D uTerrainDetail;
 // Per mip level of uTerrainDetail: the variance of the slope (both components, per unit of
 // texture coordinate, squared) that the level's averaging removed from level 0's
@@ -69,28 +71,22 @@ struct DetailSample {
     float slopeVariance;
 };
 
-DetailSample detailAtScaleIsotropic(vec3 p, vec3 dpdx, vec3 dpdy, vec3 planeWeights, float scale) {
-    DetailSample s = DetailSample(vec3(0.0), 0.0, 0.0, 0.0);
-    // Each plane's texture coordinates are two world axes; its slope (d/du, d/dv per unit of
-    // texture coordinate) maps back onto those axes.
-    if (planeWeights.x > 0.0) {
-        vec4 t = textureGrad(uTerrainDetail, p.yz * scale, dpdx.yz * scale, dpdy.yz * scale);
-        s.slope += planeWeights.x * vec3(0.0, t.x, t.y);
-        s.height += planeWeights.x * t.z;
-        s.patches += planeWeights.x * t.w;
-    }
-    if (planeWeights.y > 0.0) {
-        vec4 t = textureGrad(uTerrainDetail, p.zx * scale, dpdx.zx * scale, dpdy.zx * scale);
-        s.slope += planeWeights.y * vec3(t.y, 0.0, t.x);
-        s.height += planeWeights.y * t.z;
-        s.patches += planeWeights.y * t.w;
-    }
-    if (planeWeights.z > 0.0) {
-        vec4 t = textureGrad(uTerrainDetail, p.xy * scale, dpdx.xy * scale, dpdy.xy * scale);
-        s.slope += planeWeights.z * vec3(t.x, t.y, 0.0);
-        s.height += planeWeights.z * t.z;
-        s.patches += planeWeights.z * t.w;
-    }
+// The planes' weights squared: the planes' slopes are independent, so their variances add so.
+float planeWeightSquares(DetailPlanes planes) { return planes.w0 * planes.w0 + planes.w1 * planes.w1; }
+
+DetailSample detailAtScaleIsotropic(vec3 p, vec3 dpdx, vec3 dpdy, DetailPlanes planes, float scale) {
+    // Each plane's slope (d/du, d/dv per unit of texture coordinate) maps back onto its axes.
+    vec4 t0 = textureGrad(uTerrainDetail, vec2(dot(p, planes.a0), dot(p, planes.b0)) * scale,
+                          vec2(dot(dpdx, planes.a0), dot(dpdx, planes.b0)) * scale,
+                          vec2(dot(dpdy, planes.a0), dot(dpdy, planes.b0)) * scale);
+    vec4 t1 = textureGrad(uTerrainDetail, vec2(dot(p, planes.a1), dot(p, planes.b1)) * scale,
+                          vec2(dot(dpdx, planes.a1), dot(dpdx, planes.b1)) * scale,
+                          vec2(dot(dpdy, planes.a1), dot(dpdy, planes.b1)) * scale);
+    DetailSample s;
+    s.slope = planes.w0 * (t0.x * planes.a0 + t0.y * planes.b0) + planes.w1 * (t1.x * planes.a1 + t1.y * planes.b1);
+    s.height = planes.w0 * t0.z + planes.w1 * t1.z;
+    s.patches = planes.w0 * t0.w + planes.w1 * t1.w;
+    s.slopeVariance = 0.0;
     return s;
 }
 
@@ -105,12 +101,12 @@ DetailSample detailAtScaleIsotropic(vec3 p, vec3 dpdx, vec3 dpdy, vec3 planeWeig
 // (docs/PERFORMANCE.md, 2026-12-05).
 const int TERRAIN_DETAIL_TAPS = 2;
 
-DetailSample detailAtScale(vec3 p, vec3 dpdx, vec3 dpdy, vec3 planeWeights, float period) {
+DetailSample detailAtScale(vec3 p, vec3 dpdx, vec3 dpdy, DetailPlanes planes, float period) {
     vec3 major = dot(dpdx, dpdx) >= dot(dpdy, dpdy) ? dpdx : dpdy;
     vec3 minor = dot(dpdx, dpdx) >= dot(dpdy, dpdy) ? dpdy : dpdx;
     if (length(minor) >= period)  // the coarsest mip: mean 0, all of the slopes' variance removed
         return DetailSample(vec3(0.0), 0.0, 0.0,
-                            uTerrainDetailLostVariance[TERRAIN_DETAIL_LEVELS - 1] * dot(planeWeights, planeWeights) /
+                            uTerrainDetailLostVariance[TERRAIN_DETAIL_LEVELS - 1] * planeWeightSquares(planes) /
                                 (period * period));
     float ratio = length(major) / max(length(minor), 1.0e-6);
     int taps = int(clamp(ceil(ratio), 1.0, float(TERRAIN_DETAIL_TAPS)));
@@ -120,7 +116,7 @@ DetailSample detailAtScale(vec3 p, vec3 dpdx, vec3 dpdy, vec3 planeWeights, floa
     for (int i = 0; i < TERRAIN_DETAIL_TAPS; ++i) {
         if (i >= taps) break;
         vec3 tap = p + stepAlong * (float(i) + 0.5 - 0.5 * float(taps));
-        DetailSample t = detailAtScaleIsotropic(tap, stepAlong, minor, planeWeights, 1.0 / period);
+        DetailSample t = detailAtScaleIsotropic(tap, stepAlong, minor, planes, 1.0 / period);
         s.slope += t.slope;
         s.height += t.height;
         s.patches += t.patches;
@@ -135,23 +131,13 @@ DetailSample detailAtScale(vec3 p, vec3 dpdx, vec3 dpdy, vec3 planeWeights, floa
     float level = clamp(log2(max(texels, 1.0)), 0.0, float(TERRAIN_DETAIL_LEVELS - 1));
     int below = min(int(level), TERRAIN_DETAIL_LEVELS - 2);
     float within = mix(uTerrainDetailLostVariance[below], uTerrainDetailLostVariance[below + 1], level - float(below)) *
-                   dot(planeWeights, planeWeights);
+                   planeWeightSquares(planes);
     float between = max(slopeSquares * weight - dot(s.slope, s.slope) * weight * weight, 0.0);
     s.slopeVariance = (within + between) / (period * period);  // per metre, squared
     s.slope *= weight / period;  // per metre
     s.height *= weight;
     s.patches *= weight;
     return s;
-}
-
-// Tri-planar weights for a normal: |n|^4, normalised, and those under 2 % dropped (the
-// fetch costs more than it shows).
-vec3 detailPlaneWeights(vec3 normal) {
-    vec3 a = normal * normal;
-    vec3 w = a * a;
-    w /= w.x + w.y + w.z;
-    w = mix(vec3(0.0), w, greaterThan(w, vec3(0.02)));
-    return w / (w.x + w.y + w.z);
 }
 
 // The detail of the ground at p (terrain.tese's detail position, with its screen
@@ -180,7 +166,7 @@ void applyTerrainDetail(vec3 p, vec3 dpdx, vec3 dpdy, vec3 up, float weights[5],
     float textureSlopeRms = sqrt(uTerrainDetailLostVariance[TERRAIN_DETAIL_LEVELS - 1]);
     vec3 relief = slopes * vec3(TERRAIN_DETAIL_PERIOD_M[0], TERRAIN_DETAIL_PERIOD_M[1], TERRAIN_DETAIL_PERIOD_M[2]) /
                   textureSlopeRms;
-    vec3 planes = detailPlaneWeights(up);
+    DetailPlanes planes = detailPlanes(up);
     DetailSample fine = detailAtScale(p, dpdx, dpdy, planes, TERRAIN_DETAIL_PERIOD_M[0]);
     DetailSample middle = detailAtScale(p, dpdx, dpdy, planes, TERRAIN_DETAIL_PERIOD_M[1]);
     DetailSample coarse = detailAtScale(p, dpdx, dpdy, planes, TERRAIN_DETAIL_PERIOD_M[2]);

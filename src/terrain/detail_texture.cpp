@@ -13,9 +13,16 @@ using glm::max;
 using std::abs;
 using std::exp;
 #include "shaders/terrain/rough_cosine.glsl"
+using vec3 = glm::vec3;
+#include "shaders/terrain/detail_planes.glsl"
 }  // namespace glsl
 
 float expectedClampedCosine(float mu, float sigma) { return glsl::expectedClampedCosine(mu, sigma); }
+
+DetailPlanes detailPlanes(glm::vec3 up) {
+    const glsl::DetailPlanes p = glsl::detailPlanes(up);
+    return {p.a0, p.b0, p.a1, p.b1, p.w0, p.w1};
+}
 
 namespace {
 

@@ -45,6 +45,15 @@ float detailHeightAt(const DetailTexture& texture, glm::vec2 uv);
 // E[max(0, mu + sigma X)], X ~ N(0, 1): shaders/terrain/rough_cosine.glsl compiled as C++.
 float expectedClampedCosine(float mu, float sigma);
 
+// The two tri-planar projections the detail takes at a point with vertical `up` (a unit
+// vector): each a pair of world axes (a, b) that are its texture's (u, v), and its weight
+// (w0 + w1 = 1). shaders/terrain/detail_planes.glsl compiled as C++.
+struct DetailPlanes {
+    glm::vec3 a0, b0, a1, b1;
+    float w0, w1;
+};
+DetailPlanes detailPlanes(glm::vec3 up);
+
 // The GL texture: RGBA16F, full mip chain, GL_REPEAT, trilinear (isotropic: see the .cpp).
 gl::Texture makeDetailGlTexture(const DetailTexture& texture);
 
