@@ -26,19 +26,17 @@ DetailPlanes detailPlanes(vec3 up) {
     w /= w.x + w.y + w.z;
     // The dropped plane: the least weight (x projects along x onto y and z, and so on).
     int dropped = w.x <= w.y && w.x <= w.z ? 0 : (w.y <= w.z ? 1 : 2);
+    // Plane x projects onto (y, z), plane y onto (z, x), plane z onto (x, y). (Fields set one by
+    // one: C++ compilers without C++20's parenthesised aggregates compile this file too.)
     const vec3 X = vec3(1.0f, 0.0f, 0.0f), Y = vec3(0.0f, 1.0f, 0.0f), Z = vec3(0.0f, 0.0f, 1.0f);
     DetailPlanes planes;
-    float third;
-    if (dropped == 0) {  // planes y (z, x) and z (x, y)
-        planes = DetailPlanes(Z, X, X, Y, w.y, w.z);
-        third = w.x;
-    } else if (dropped == 1) {  // planes x (y, z) and z (x, y)
-        planes = DetailPlanes(Y, Z, X, Y, w.x, w.z);
-        third = w.y;
-    } else {  // planes x (y, z) and y (z, x)
-        planes = DetailPlanes(Y, Z, Z, X, w.x, w.y);
-        third = w.z;
-    }
+    planes.a0 = dropped == 0 ? Z : Y;  // the first kept plane: y if x is dropped, else x
+    planes.b0 = dropped == 0 ? X : Z;
+    planes.w0 = dropped == 0 ? w.y : w.x;
+    planes.a1 = dropped == 2 ? Z : X;  // the second: y if z is dropped, else z
+    planes.b1 = dropped == 2 ? X : Y;
+    planes.w1 = dropped == 2 ? w.y : w.z;
+    float third = dropped == 0 ? w.x : (dropped == 1 ? w.y : w.z);
     planes.w0 = max(planes.w0 - third, 0.0f);
     planes.w1 = max(planes.w1 - third, 0.0f);
     float sum = planes.w0 + planes.w1;
