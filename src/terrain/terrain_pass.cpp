@@ -29,7 +29,7 @@ int TerrainPass::detailPatchCount(const std::vector<PatchRing>& rings, int patch
     // A fragment lies on a triangle whose corners are tessellated points of its patch; the
     // triangle's chord can come nearer than its corners by (edge^2 / 8 range): metres for
     // the edges of hundreds of metres there can be, which the margin covers (the detail's
-    // strength is under 1 % beyond 0.95 of its range anyway: terrain.frag's smoothstep).
+    // strength is under 3 % beyond 0.95 of its range anyway: terrain.frag's smoothstep).
     constexpr double kMargin = 1.05;
     const glm::dvec3 camera(grid.cameraPositionAndRadius);
     const glm::dvec3 axis(grid.worldFromGridColumns[2]);  // grid z, towards the projection camera
