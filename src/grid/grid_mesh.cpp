@@ -47,14 +47,13 @@ std::vector<std::vector<PatchBlock>> ringBlocks(int size) {
     return rings;
 }
 
-}  // namespace
-
-std::vector<PatchRing> nearFirstRings(int size) {
+// Each ring's patches in draw order and the box of rings 0..k (PatchRing).
+std::vector<PatchRing> ringsOf(const std::vector<std::vector<PatchBlock>>& ringBlocks, int size) {
     const int n = size - 1;
     std::vector<PatchRing> rings;
     int first = 0;
     glm::ivec2 low(n), high(0);
-    for (const std::vector<PatchBlock>& blocks : ringBlocks(size)) {
+    for (const std::vector<PatchBlock>& blocks : ringBlocks) {
         PatchRing ring;
         ring.firstPatch = first;
         for (const PatchBlock& b : blocks) {
@@ -69,6 +68,10 @@ std::vector<PatchRing> nearFirstRings(int size) {
     }
     return rings;
 }
+
+}  // namespace
+
+std::vector<PatchRing> nearFirstRings(int size) { return ringsOf(ringBlocks(size), size); }
 
 void GridMesh::setOrder(PatchOrder order) {
     if (order == order_) return;
@@ -94,8 +97,9 @@ void GridMesh::resize(int size) {
         for (int j = 0; j < n; ++j)
             for (int i = 0; i < n; ++i) add(i, j);
     } else {
-        rings_ = nearFirstRings(size);
-        for (const std::vector<PatchBlock>& ring : ringBlocks(size))
+        const std::vector<std::vector<PatchBlock>> blocks = ringBlocks(size);
+        rings_ = ringsOf(blocks, size);
+        for (const std::vector<PatchBlock>& ring : blocks)
             for (const PatchBlock& b : ring)
                 for (int j = b.from.y; j < b.to.y; ++j)
                     for (int i = b.from.x; i < b.to.x; ++i) add(i, j);

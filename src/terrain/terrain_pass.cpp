@@ -82,12 +82,14 @@ void TerrainPass::prepare(const Scene& scene, const Camera& camera, const noise:
     // camera higher than that above the highest possible ground has none in view, and the
     // program without the detail's code draws the same pixels for less (llvmpipe pays for
     // code no pixel enters: `orbit` 640x360, 33 -> 73 ms of terrain pass with it).
-    detailOn_ = scene.terrain.detail && detailInReach(camera.altitude(radius), scene.terrain.max_height_m);
     // Within reach, only the patches that can come within the range take the detail's program
     // (`ground`: the 64 of the centre's block of 9801), the rest the plain one, for the same reason.
-    detailPatches_ = detailOnEveryPatch_ ? mesh_.patchCount()
-                                         : detailPatchCount(mesh_.rings(), mesh_.patchCount(), grid_.size, gridBlock,
-                                                            terrain::terrainNearRangeM());
+    const bool inReach =
+        scene.terrain.detail && detailed_ && detailInReach(camera.altitude(radius), scene.terrain.max_height_m);
+    detailPatches_ = !inReach             ? 0
+                     : detailOnEveryPatch_ ? mesh_.patchCount()
+                                           : detailPatchCount(mesh_.rings(), mesh_.patchCount(), grid_.size, gridBlock,
+                                                              terrain::terrainNearRangeM());
     if (detail_) glBindTextureUnit(binding::UNIT_TERRAIN_DETAIL, detail_->id());
 }
 

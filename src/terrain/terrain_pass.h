@@ -56,7 +56,7 @@ public:
     void setStatistics(bool on) { statistics_ = on; }
     // Whether the last prepared frame draws with the ground detail's program: terrain.detail on
     // and the camera close enough to the ground for any of it to show (detailInReach).
-    bool detailDrawn() const { return detailOn_ && detailed_.has_value(); }
+    bool detailDrawn() const { return detailPatches_ > 0; }
     // Whether ground within the detail's range (TERRAIN_NEAR_RANGE_M) can be in view of a camera
     // `cameraAltitudeM` above the planet's radius, the ground reaching at most `maxHeightM`.
     static bool detailInReach(double cameraAltitudeM, double maxHeightM);
@@ -66,7 +66,7 @@ public:
     static int detailPatchCount(const std::vector<PatchRing>& rings, int patchCount, int gridSize,
                                 const GridBlock& grid, double rangeM);
     // The last prepared frame's count (0 when the detail is not drawn).
-    int detailPatches() const { return detailDrawn() ? detailPatches_ : 0; }
+    int detailPatches() const { return detailPatches_; }
     // Tests: the detail's program for every patch, as before the rings (the same image).
     void setDetailOnEveryPatch(bool on) { detailOnEveryPatch_ = on; }
     // The patches' draw order (grid/grid_mesh.h; NearFirst by default). Tests compare.
@@ -80,8 +80,7 @@ private:
     gl::ShaderSources sources_;
     gl::HotProgram plain_;
     std::optional<gl::HotProgram> detailed_;  // built when terrain.detail is first on
-    bool detailOn_ = false;
-    int detailPatches_ = 0;  // detailPatchCount of the last prepared frame
+    int detailPatches_ = 0;  // the last prepared frame's: 0 out of reach or with terrain.detail off
     bool detailOnEveryPatch_ = false;
     GridMesh mesh_{"terrain", PatchOrder::NearFirst};
     gl::Buffer block_;      // TerrainBlock
