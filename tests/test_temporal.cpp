@@ -220,9 +220,11 @@ TEST_F(Temporal, WithOnlyTheClockRunningOnlyTheSamplesErrorsMarkPixels) {
     // small fraction of a pixel a frame. The reconstruction marks for a full-rate march only the
     // pixels around a sample its history missed, not every edge and line as in a moving view
     // (there the cumulus field's edges and lines are half of the pixels), and the frames stay
-    // near the full-rate ones. Measured on llvmpipe at 96x54 over 40 frames:
-    // 6.9 % of the pixels a frame, last frame mean 0.59 %; with the edges and lines marked as for
-    // a moving camera, 54 % (and 0.21 %).
+    // near the full-rate ones; there a sample marks at three times the error of a moving frame
+    // (its error is mostly its jitter's noise). Measured on llvmpipe at 96x54 over 40 frames:
+    // 3.3 % of the pixels a frame, last frame mean 0.54 %; at the moving frame's error (and the
+    // history scaled by the samples' noisy gain), 6.9 % (0.59 %); with the edges and lines marked
+    // as for a moving camera, 54 % (0.21 %).
     const glm::ivec2 size{96, 54};
     Session s = session("cumulus");
     s.scene.time_s = 17.0;  // a scene no other test left in the history
@@ -239,7 +241,7 @@ TEST_F(Temporal, WithOnlyTheClockRunningOnlyTheSamplesErrorsMarkPixels) {
     const ImageComparison c = compareImages(hdrOf(*temporal, size), fullRate(s.scene, s.camera, size));
     std::printf("clock running, camera still: %.1f %% of the pixels marched again a frame; last frame mean %.3f %%, "
                 "p99 %.2f %%\n", 100 * refined, 100 * c.meanRelativeError, 100 * c.errorPercentile(99));
-    EXPECT_LT(refined, 0.15);
+    EXPECT_LT(refined, 0.05);
     EXPECT_LT(c.meanRelativeError, 0.01);
     EXPECT_EQ(c.nonFinitePixels, 0u);
 }

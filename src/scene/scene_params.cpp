@@ -68,8 +68,9 @@ std::vector<ParamSpec> buildTable() {
         [](Scene& s) { return ParamRef{&s.render.temporal}; });
     add("render", "temporal_refine_error", "", 0.0, 1.0,
         "With the temporal march, in a moving frame: march again at full rate the pixels around a sample whose "
-        "history was off by more than this share (also those with nothing to reproject, on an edge, or with a "
-        "history read across one); lower: closer to the full rate, and dearer. 1: only those.",
+        "history was off by more than this share (three times it where only the clock ran; also those with nothing "
+        "to reproject, on an edge, or with a history read across one); lower: closer to the full rate, and dearer. "
+        "1: only those.",
         [](Scene& s) { return ParamRef{&s.render.temporal_refine_error}; });
     return t;
 }
