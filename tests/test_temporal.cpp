@@ -215,6 +215,41 @@ TEST_F(Temporal, AStillFrameRunsTheStillProgramAndItIsTheGeneralOnesImage) {
     }
 }
 
+TEST_F(Temporal, TheSkyPassesScissoredToTheAirGiveTheWholeFramesImage) {
+    // From orbit and space the sky passes run only on the rectangle that holds the air's sphere
+    // (render/screen_bound.h), space drawn around it (render/sky_space.frag): the frames are
+    // those of the passes run over the whole frame, value for value, at full rate, still, with
+    // the clock running and after a move and a turn (which the history must follow across the
+    // bound's edge); and the rectangle is well inside the frame (else it saves nothing).
+    const glm::ivec2 size{96, 54};
+    for (const char* view : {"space", "orbit"}) {
+        Session s = session(view);
+        Renderer bounded(test::repoPaths().shaders(), atmosphere::TableSizes::reduced());
+        Renderer whole(test::repoPaths().shaders(), atmosphere::TableSizes::reduced());
+        whole.setScreenBounds(false);
+        std::size_t differing = 0;
+        double share = 0.0;
+        for (int frame = 0; frame < 12; ++frame) {
+            if (frame >= 4) s.scene.time_s += 1.0 / 30.0;
+            if (frame >= 8) {
+                s.camera.position *= 1.002;
+                s.camera.orientation = glm::angleAxis(glm::radians(0.5), s.camera.up()) * s.camera.orientation;
+            }
+            bounded.render(s.scene, s.camera, size);
+            whole.render(s.scene, s.camera, size);
+            ASSERT_EQ(bounded.lastPrepare().reducedRate, frame > 0);
+            ASSERT_TRUE(whole.lastPrepare().skyBound.coversScreen(size));
+            share = std::max(share, double(bounded.lastPrepare().skyBound.area()) / (size.x * size.y));
+            const ImageRGBAF a = hdrOf(bounded, size), b = hdrOf(whole, size);
+            for (std::size_t i = 0; i < a.pixels.size(); ++i) differing += a.pixels[i] != b.pixels[i];
+        }
+        std::printf("%-6s the sky passes' bound: at most %.0f %% of the frame; values that differ from the whole "
+                    "frame's over 12 frames: %zu\n", view, 100 * share, differing);
+        EXPECT_EQ(differing, 0u) << view;
+        EXPECT_LT(share, view == std::string("space") ? 0.4 : 0.65) << view;
+    }
+}
+
 TEST_F(Temporal, WithOnlyTheClockRunningOnlyTheSamplesErrorsMarkPixels) {
     // The explorer's clock runs while the camera stands: only the clouds move, with the wind, a
     // small fraction of a pixel a frame. The reconstruction marks for a full-rate march only the

@@ -95,7 +95,7 @@ bool RenderTargets::resize(glm::ivec2 size) {
     terrainShadowSamples_.visibility = makeTexture(GL_RG32F, terrainShadowSamples_.size, "terrain shadow samples");
     terrainShadowSamples_.framebuffer =
         makeFramebuffer({&terrainShadowSamples_.visibility}, nullptr, "terrain shadow samples");
-    sparseSky_.size = (size + 3) / 4;
+    sparseSky_.size = (size + kSparseBlock - 1) / kSparseBlock;
     sparseSky_.inscatter = makeTexture(GL_RGBA16F, sparseSky_.size, "sparse sky inscatter");
     sparseSky_.transmittance = makeTexture(GL_RGBA16F, sparseSky_.size, "sparse sky transmittance");
     sparseSky_.distanceError = makeTexture(GL_RG32F, sparseSky_.size, "sparse sky distance, history error");

@@ -75,7 +75,9 @@ struct SeaReflectionSamples {
     gl::Framebuffer framebuffer;
 };
 
-// The reduced-rate march's samples (a quarter of the frame's size on each side).
+// The reduced-rate march's samples (a quarter of the frame's size on each side: one pixel of
+// each block of kSparseBlock x kSparseBlock, render/sparse_pattern.glsl's SPARSE_BLOCK).
+inline constexpr int kSparseBlock = 4;
 struct SparseSky {
     glm::ivec2 size{0, 0};
     gl::Texture inscatter{GL_TEXTURE_2D};      // RGBA16F: S, reprojection distance km

@@ -65,6 +65,26 @@ std::vector<gl::HotProgram*> builtVariants(std::initializer_list<AtmosphereProgr
     return all;
 }
 
+// A pass's programs and one more, for its hot-reload list.
+std::vector<gl::HotProgram*> withProgram(std::vector<gl::HotProgram*> programs, gl::HotProgram& more) {
+    programs.push_back(&more);
+    return programs;
+}
+
+// The bound program's full-screen triangle on the pixels of `rect` alone (scissored; nothing
+// when it is empty): on a software renderer the pixels outside cost nothing.
+void drawScissored(const ScreenRect& rect, glm::ivec2 size) {
+    if (rect.coversScreen(size)) {
+        glDrawArrays(GL_TRIANGLES, 0, 3);
+        return;
+    }
+    if (rect.empty()) return;
+    glEnable(GL_SCISSOR_TEST);
+    glScissor(rect.min.x, rect.min.y, rect.max.x - rect.min.x, rect.max.y - rect.min.y);
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    glDisable(GL_SCISSOR_TEST);
+}
+
 }  // namespace
 
 const char* frameResourceName(FrameResource r) {
@@ -124,6 +144,7 @@ Renderer::Renderer(const std::filesystem::path& shaderRoot, const atmosphere::Ta
                    {"STILL_FRAME"}),
       skyRefine_(sources_, programTables_,
                  gl::ProgramDesc{"sky refine", {"render/sky_refine.comp"}}),
+      skySpace_(withAtmosphere(sources_, programTables_), "sky space", "render/sky_space.frag"),
       antialias_(sources_, "antialias", "render/antialias.frag"),
       tonemap_(sources_, "tonemap", "render/tonemap.frag"),
       passes_(makePasses()) {
@@ -290,10 +311,11 @@ std::vector<Renderer::Pass> Renderer::makePasses() {
                           glBindTextureUnit(binding::UNIT_SURFACE_DISTANCE, targets_.surfaceDistance().id());
                           glBindVertexArray(emptyVertexArray_.id());
                           const int underWater = lastPrepare_.underWater ? 1 : 0;  // sky_'s mode UNDER_WATER
+                          drawSpaceAround(lastPrepare_.skyBound);
                           glUseProgram(sky_.get(s.atmosphere.elek_3d_table, lightShafts(s), underWater).id());
-                          glDrawArrays(GL_TRIANGLES, 0, 3);
+                          drawScissored(lastPrepare_.skyBound, targets_.size());
                       },
-                      [this] { return sky_.built(); }});
+                      [this] { return withProgram(sky_.built(), skySpace_.program()); }});
     passes.push_back({{"sky march", {R::SurfaceRadiance}, {R::SparseSky}}, reducedRate,
                       [this](const Scene& s) {
                           const SparseSky& sparse = targets_.sparseSky();
@@ -306,7 +328,8 @@ std::vector<Renderer::Pass> Renderer::makePasses() {
                           glBindTextureUnit(binding::UNIT_HISTORY_SURFACE_DISTANCE, history.surfaceDistance.id());
                           glBindVertexArray(emptyVertexArray_.id());
                           glUseProgram(skySparse_.get(s.atmosphere.elek_3d_table, lightShafts(s)).id());
-                          glDrawArrays(GL_TRIANGLES, 0, 3);
+                          // The blocks that the reconstruction reads around the pixels it marches.
+                          drawScissored(blocksAround(lastPrepare_.skyBound, kSparseBlock, sparse.size), sparse.size);
                           glViewport(0, 0, targets_.size().x, targets_.size().y);
                       },
                       [this] { return skySparse_.built(); }});
@@ -327,10 +350,11 @@ std::vector<Renderer::Pass> Renderer::makePasses() {
                           glBindTextureUnit(binding::UNIT_HISTORY_SURFACE_DISTANCE, history.surfaceDistance.id());
                           glBindVertexArray(emptyVertexArray_.id());
                           const int still = lastPrepare_.stillFrame && stillFrameProgram_ ? 1 : 0;  // STILL_FRAME
+                          drawSpaceAround(lastPrepare_.skyBound);
                           glUseProgram(skyTemporal_.get(s.atmosphere.elek_3d_table, lightShafts(s), still).id());
-                          glDrawArrays(GL_TRIANGLES, 0, 3);
+                          drawScissored(lastPrepare_.skyBound, targets_.size());
                       },
-                      [this] { return skyTemporal_.built(); }});
+                      [this] { return withProgram(skyTemporal_.built(), skySpace_.program()); }});
     passes.push_back({{"sky refine", {R::SurfaceRadiance, R::SkyRefine}, {R::HdrRadiance}}, reducedRate,
                       [this](const Scene& s) {
                           glBindTextureUnit(binding::UNIT_SURFACE_RADIANCE, targets_.surfaceRadiance().id());
@@ -407,6 +431,10 @@ bool Renderer::historyUsable(const Scene& scene, const Camera& camera, bool resi
 
 Renderer::~Renderer() { continents_->releaseTexture(); }
 
+void Renderer::drawSpaceAround(const ScreenRect& skyBound) const {
+    if (!skyBound.coversScreen(targets_.size())) skySpace_.draw();
+}
+
 void Renderer::prepare(const Scene& scene, const Camera& camera, glm::ivec2 size) {
     PrepareReport report;
     const bool resized = targets_.resize(size);
@@ -442,6 +470,11 @@ void Renderer::prepare(const Scene& scene, const Camera& camera, glm::ivec2 size
     // point moves by a fraction of a pixel: the general reconstruction reads its history there).
     report.stillFrame =
         report.historyValid && uniforms.stillSincePrevious > 0.5f && uniforms.viewStillSincePrevious > 0.5f;
+    // The air's sphere (the preset's top: the model's may end lower, never higher).
+    report.skyBound = screenBounds_ ? sphereScreenBound(jitteredClipFromView(camera, size, frameJitterPx_),
+                                                        glm::transpose(camera.worldFromView()), -camera.position,
+                                                        scene.atmosphere.top_radius_km * 1000.0, size)
+                                    : ScreenRect{{0, 0}, size};
     glNamedBufferSubData(frameUniforms_.id(), 0, sizeof uniforms, &uniforms);
     glBindBufferBase(GL_UNIFORM_BUFFER, binding::BLOCK_FRAME, frameUniforms_.id());
     atmosphere_.bind();

@@ -79,6 +79,7 @@
 #include "render/image_io.h"
 #include "render/profiler.h"
 #include "render/render_targets.h"
+#include "render/screen_bound.h"
 #include "scene/camera.h"
 #include "scene/scene.h"
 #include "terrain/continents.h"
@@ -113,6 +114,8 @@ struct PrepareReport {
                                          // still-frame program (render/sky_temporal.frag, STILL_FRAME)
     bool underWater = false;             // the camera under the sea: the sky pass's and the ocean's UNDER_WATER programs
                                          // (render/sky.frag, ocean/ocean.frag)
+    ScreenRect skyBound;                  // the pixels the sky passes ran their programs on: those that can see the air
+                                         // (render/screen_bound.h; the whole frame where it fills it), space elsewhere
 };
 
 class Renderer {
@@ -166,6 +169,10 @@ public:
     // or the general one, which gives the same image at five times the cost on llvmpipe (tests
     // compare the two).
     void setStillFrameProgram(bool on) { stillFrameProgram_ = on; }
+    // The sky passes scissored to the rectangle that holds the air's sphere, space drawn around
+    // it by render/sky_space.frag (on, the default), or run over the whole frame (tests compare
+    // the two: the same image).
+    void setScreenBounds(bool on) { screenBounds_ = on; }
     // The sub-pixel offset (pixels, about [-0.5, 0.5]) of the projection of the frames
     // rendered from now on; (0, 0), the default, renders unjittered.
     void setJitter(glm::dvec2 pixels) { jitterPx_ = pixels; }
@@ -202,6 +209,9 @@ private:
     std::vector<Pass> makePasses();
     void prepare(const Scene& scene, const Camera& camera, glm::ivec2 size);
     bool historyUsable(const Scene& scene, const Camera& camera, bool resized) const;
+    // Space over the whole frame where the air's bound does not fill it (render/sky_space.frag):
+    // the sky passes then run scissored to the bound.
+    void drawSpaceAround(const ScreenRect& skyBound) const;
     // Rebuilds the programs that read the atmosphere tables when the tables' sizes changed
     // (a starter refined to its target). Returns whether it did.
     bool matchAtmosphereTables();
@@ -225,6 +235,7 @@ private:
     AtmosphereProgram skySparse_;
     AtmosphereProgram skyTemporal_;  // mode STILL_FRAME: frames where nothing moved
     AtmosphereProgram skyRefine_;
+    FullscreenPass skySpace_;  // space around the air's bound (render/sky_space.frag)
     FullscreenPass antialias_;
     FullscreenPass tonemap_;
     gl::Buffer frameUniforms_;
@@ -238,6 +249,7 @@ private:
     bool fullRateOnReset_ = true;
     bool stillFrameProgram_ = true;
     bool seaReflectionSamples_ = true;
+    bool screenBounds_ = true;
     // Whether the ocean drew any pixel this frame: the sea reflection pass draws only then
     // (conditional rendering: no read-back, the GPU skips the draws).
     gl::Query oceanDrew_{GL_ANY_SAMPLES_PASSED};

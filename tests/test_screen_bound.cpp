@@ -1,0 +1,145 @@
+// Tests for the sphere's screen bound (render/screen_bound.h), which the sky passes are
+// scissored to: every pixel whose centre's ray meets the sphere must lie in it (checked by
+// brute force against a ray-sphere test in double), and it must be close to the tightest
+// rectangle (else it saves nothing). CPU only.
+#include <algorithm>
+#include <cmath>
+#include <random>
+
+#include <glm/gtc/quaternion.hpp>
+#include <gtest/gtest.h>
+
+#include "render/frame_uniforms.h"
+#include "render/screen_bound.h"
+#include "scene/camera.h"
+
+namespace planet {
+namespace {
+
+struct Hits {
+    ScreenRect box{{1 << 30, 1 << 30}, {-(1 << 30), -(1 << 30)}};  // the hit pixels' bounding box, [min, max)
+    long long count = 0;
+};
+
+// The pixels whose centre's ray (as the passes form it: through viewFromClip) meets the sphere
+// of `radius` around the world origin.
+Hits hitPixels(const Camera& camera, glm::ivec2 size, glm::dvec2 jitter, double radius) {
+    const glm::dmat4 viewFromClip = glm::inverse(jitteredClipFromView(camera, size, jitter));
+    const glm::dmat3 worldFromView = camera.worldFromView();
+    const glm::dvec3 o = camera.position;
+    Hits hits;
+    for (int y = 0; y < size.y; ++y) {
+        for (int x = 0; x < size.x; ++x) {
+            const glm::dvec2 ndc = (glm::dvec2(x, y) + 0.5) / glm::dvec2(size) * 2.0 - 1.0;
+            const glm::dvec4 v = viewFromClip * glm::dvec4(ndc, 0.5, 1.0);
+            const glm::dvec3 d = glm::normalize(worldFromView * (glm::dvec3(v) / v.w));
+            const double b = glm::dot(o, d), c = glm::dot(o, o) - radius * radius;
+            const bool hit = c <= 0.0 || (b < 0.0 && b * b - c >= 0.0);
+            if (!hit) continue;
+            ++hits.count;
+            hits.box.min = glm::min(hits.box.min, glm::ivec2(x, y));
+            hits.box.max = glm::max(hits.box.max, glm::ivec2(x + 1, y + 1));
+        }
+    }
+    return hits;
+}
+
+ScreenRect boundOf(const Camera& camera, glm::ivec2 size, glm::dvec2 jitter, double radius) {
+    return sphereScreenBound(jitteredClipFromView(camera, size, jitter), glm::transpose(camera.worldFromView()),
+                             -camera.position, radius, size);
+}
+
+Camera lookingAt(const glm::dvec3& position, const glm::dvec3& target, double fovDeg) {
+    Camera c;
+    c.position = position;
+    const glm::dvec3 forward = glm::normalize(target - position);
+    const glm::dvec3 helper = std::abs(forward.z) < 0.9 ? glm::dvec3(0, 0, 1) : glm::dvec3(1, 0, 0);
+    const glm::dvec3 right = glm::normalize(glm::cross(forward, helper));
+    c.orientation = orientationFromAxes(right, glm::cross(right, forward), forward);
+    c.fovY_rad = glm::radians(fovDeg);
+    return c;
+}
+
+TEST(ScreenBound, HoldsEveryPixelThatSeesTheSphereAndLittleMore) {
+    // Cameras from just outside the sphere to far away, looking anywhere (at it, past its limb,
+    // away), odd sizes, sub-pixel jitter: no pixel that meets the sphere is outside the bound,
+    // and the bound is the hits' box within its margin (a pixel and the rounding to pixel
+    // centres) and the polygon's overshoot (atan(tan a / cos(pi/128)), magnified by the
+    // projection where the cone grazes the camera's plane): 5 pixels (the worst case, 4 pixels,
+    // a sliver of the sphere along the screen's edge, whose width grows as the root of its depth).
+    std::mt19937 random(7);
+    std::uniform_real_distribution<double> unit(-1.0, 1.0);
+    const double radius = 6.42e6;
+    int bounded = 0, partial = 0;
+    for (int i = 0; i < 300; ++i) {
+        const glm::dvec3 at = glm::normalize(glm::dvec3(unit(random), unit(random), unit(random)));
+        const double distance = radius * std::pow(10.0, 0.0005 + 2.5 * (0.5 + 0.5 * unit(random)));
+        const glm::dvec3 look = glm::dvec3(unit(random), unit(random), unit(random)) * radius * 1.5;
+        const Camera camera = lookingAt(at * distance, look, 20.0 + 50.0 * (0.5 + 0.5 * unit(random)));
+        const glm::ivec2 size(61 + i % 40, 37 + (i * 7) % 30);
+        const glm::dvec2 jitter(0.5 * unit(random), 0.5 * unit(random));
+        const Hits hits = hitPixels(camera, size, jitter, radius);
+        const ScreenRect bound = boundOf(camera, size, jitter, radius);
+        if (hits.count > 0) {
+            ASSERT_FALSE(bound.empty()) << i;
+            EXPECT_LE(bound.min.x, hits.box.min.x) << i;
+            EXPECT_LE(bound.min.y, hits.box.min.y) << i;
+            EXPECT_GE(bound.max.x, hits.box.max.x) << i;
+            EXPECT_GE(bound.max.y, hits.box.max.y) << i;
+        }
+        if (bound.coversScreen(size)) continue;
+        ++bounded;
+        if (hits.count == 0) {  // off screen, or a sliver of overshoot along an edge
+            EXPECT_LE(bound.area(), 4LL * std::max(size.x, size.y)) << i;
+            continue;
+        }
+        ++partial;
+        const glm::ivec2 slack = glm::ivec2(5);
+        EXPECT_GE(bound.min.x, hits.box.min.x - slack.x) << i;
+        EXPECT_GE(bound.min.y, hits.box.min.y - slack.y) << i;
+        EXPECT_LE(bound.max.x, hits.box.max.x + slack.x) << i;
+        EXPECT_LE(bound.max.y, hits.box.max.y + slack.y) << i;
+    }
+    // The cases exercise the bound, not just its whole-screen fallback.
+    EXPECT_GT(bounded, 100);
+    EXPECT_GT(partial, 50);
+}
+
+TEST(ScreenBound, ASphereAheadSpansItsAnalyticAngle) {
+    // Straight ahead at distance d, radius r: the disc's half-width on screen is
+    // tan(asin(r / d)) / tan(fovY / 2) of the half-height, in NDC.
+    const double radius = 1.0, distance = 4.0;
+    const Camera camera = lookingAt({0.0, 0.0, distance}, {0.0, 0.0, 0.0}, 60.0);
+    const glm::ivec2 size(400, 400);
+    const double halfPx = std::tan(std::asin(radius / distance)) / std::tan(glm::radians(30.0)) * 200.0;
+    const ScreenRect bound = boundOf(camera, size, glm::dvec2(0.0), radius);
+    for (int axis = 0; axis < 2; ++axis) {
+        EXPECT_NEAR(bound.min[axis], 200.0 - halfPx, 3.0);
+        EXPECT_NEAR(bound.max[axis], 200.0 + halfPx, 3.0);
+    }
+}
+
+TEST(ScreenBound, InsideItIsTheWholeScreenAndBehindTheCameraNothing) {
+    const glm::ivec2 size(64, 36);
+    const Camera inside = lookingAt({0.0, 0.0, 0.5}, {1.0, 0.0, 0.5}, 60.0);
+    EXPECT_TRUE(boundOf(inside, size, glm::dvec2(0.0), 1.0).coversScreen(size));
+    const Camera nearSurface = lookingAt({0.0, 0.0, 1.0005}, {0.0, 0.0, 0.0}, 60.0);
+    EXPECT_TRUE(boundOf(nearSurface, size, glm::dvec2(0.0), 1.0).coversScreen(size));
+    const Camera away = lookingAt({0.0, 0.0, 10.0}, {0.0, 0.0, 20.0}, 60.0);
+    EXPECT_TRUE(boundOf(away, size, glm::dvec2(0.0), 1.0).empty());
+    EXPECT_EQ(hitPixels(away, size, glm::dvec2(0.0), 1.0).count, 0);
+}
+
+TEST(ScreenBound, BlocksAroundHoldTheBlocksNextToTheRect) {
+    const ScreenRect rect{{9, 4}, {23, 13}};  // pixels 9..22, 4..12
+    const ScreenRect b = blocksAround(rect, 4, {10, 10});
+    EXPECT_EQ(b.min, glm::ivec2(1, 0));  // block 2 holds pixel 9; one more each way
+    EXPECT_EQ(b.max, glm::ivec2(7, 5));  // block 5 holds pixel 22, block 3 pixel 12
+    EXPECT_TRUE(blocksAround(ScreenRect{}, 4, {10, 10}).empty());
+    const ScreenRect all = blocksAround({{0, 0}, {40, 40}}, 4, {10, 10});
+    EXPECT_EQ(all.min, glm::ivec2(0));
+    EXPECT_EQ(all.max, glm::ivec2(10));
+}
+
+}  // namespace
+}  // namespace planet
