@@ -215,9 +215,10 @@ TEST_F(Temporal, AStillFrameRunsTheStillProgramAndItIsTheGeneralOnesImage) {
     }
 }
 
-TEST_F(Temporal, TheSkyPassesScissoredToTheAirGiveTheWholeFramesImage) {
+TEST_F(Temporal, PassesScissoredToTheAirAndTheGroundGiveTheWholeFramesImage) {
     // From orbit and space the sky passes run only on the rectangle that holds the air's sphere
-    // (render/screen_bound.h), space drawn around it (render/sky_space.frag): the frames are
+    // (render/screen_bound.h), space drawn around it (render/sky_space.frag), and the terrain
+    // shadow and the surface light on the one that holds the ground's highest: the frames are
     // those of the passes run over the whole frame, value for value, at full rate, still, with
     // the clock running and after a move and a turn (which the history must follow across the
     // bound's edge); and the rectangle is well inside the frame (else it saves nothing).
@@ -228,7 +229,7 @@ TEST_F(Temporal, TheSkyPassesScissoredToTheAirGiveTheWholeFramesImage) {
         Renderer whole(test::repoPaths().shaders(), atmosphere::TableSizes::reduced());
         whole.setScreenBounds(false);
         std::size_t differing = 0;
-        double share = 0.0;
+        double share = 0.0, groundShare = 0.0;
         for (int frame = 0; frame < 12; ++frame) {
             if (frame >= 4) s.scene.time_s += 1.0 / 30.0;
             if (frame >= 8) {
@@ -240,13 +241,17 @@ TEST_F(Temporal, TheSkyPassesScissoredToTheAirGiveTheWholeFramesImage) {
             ASSERT_EQ(bounded.lastPrepare().reducedRate, frame > 0);
             ASSERT_TRUE(whole.lastPrepare().skyBound.coversScreen(size));
             share = std::max(share, double(bounded.lastPrepare().skyBound.area()) / (size.x * size.y));
+            groundShare = std::max(groundShare, double(bounded.lastPrepare().groundBound.area()) / (size.x * size.y));
+            ASSERT_TRUE(whole.lastPrepare().groundBound.coversScreen(size));
             const ImageRGBAF a = hdrOf(bounded, size), b = hdrOf(whole, size);
             for (std::size_t i = 0; i < a.pixels.size(); ++i) differing += a.pixels[i] != b.pixels[i];
         }
-        std::printf("%-6s the sky passes' bound: at most %.0f %% of the frame; values that differ from the whole "
-                    "frame's over 12 frames: %zu\n", view, 100 * share, differing);
+        std::printf("%-6s the bounds: the sky passes' at most %.0f %% of the frame, the ground's %.0f %%; values that "
+                    "differ from the whole frame's over 12 frames: %zu\n", view, 100 * share, 100 * groundShare, differing);
         EXPECT_EQ(differing, 0u) << view;
         EXPECT_LT(share, view == std::string("space") ? 0.4 : 0.65) << view;
+        EXPECT_LE(groundShare, share) << view;
+        EXPECT_LT(groundShare, view == std::string("space") ? 0.4 : 0.65) << view;
     }
 }
 

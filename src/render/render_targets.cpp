@@ -91,6 +91,7 @@ bool RenderTargets::resize(glm::ivec2 size) {
     hdr_ = makeTexture(GL_RGBA16F, size, "hdr");
     skyMedium_ = makeTexture(GL_RGBA32UI, size, "sky T, S");
     hdrFramebuffer_ = makeFramebuffer({&hdr_, &skyMedium_}, nullptr, "hdr + sky T, S");
+    terrainShadowSamples_.spacing = TERRAIN_SHADOW_SPACING;
     terrainShadowSamples_.size = (size + TERRAIN_SHADOW_SPACING - 1) / TERRAIN_SHADOW_SPACING;
     terrainShadowSamples_.visibility = makeTexture(GL_RG32F, terrainShadowSamples_.size, "terrain shadow samples");
     terrainShadowSamples_.framebuffer =

@@ -63,6 +63,7 @@ struct FrameHistory {
 // TERRAIN_SHADOW_SPACING-square block, the block's corner.
 struct TerrainShadowSamples {
     glm::ivec2 size{0, 0};
+    int spacing = 1;  // TERRAIN_SHADOW_SPACING: pixels per side of a block
     gl::Texture visibility{GL_TEXTURE_2D};  // RG32F: the march's clearance, rad, on the ground (r) and on the
                                             // sea's surface in front of it (g); TERRAIN_SHADOW_NO_SURFACE where none
     gl::Framebuffer framebuffer;

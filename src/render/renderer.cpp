@@ -183,7 +183,10 @@ std::vector<Renderer::Pass> Renderer::makePasses() {
                           glBindTextureUnit(binding::UNIT_GBUFFER_DEPTH, g.depth.id());
                           ocean_.bindBlock();  // the sea's level and its land bounds (the g channel)
                           glBindVertexArray(emptyVertexArray_.id());
-                          terrainShadow_.draw();
+                          glUseProgram(terrainShadow_.program().id());
+                          // The samples that the pixels which can see the ground read around them.
+                          drawScissored(blocksAround(lastPrepare_.groundBound, samples.spacing, samples.size),
+                                        samples.size);
                           glViewport(0, 0, targets_.size().x, targets_.size().y);
                       },
                       [this] { return std::vector<gl::HotProgram*>{&terrainShadow_.program()}; }});
@@ -201,7 +204,8 @@ std::vector<Renderer::Pass> Renderer::makePasses() {
                           glBindTextureUnit(binding::UNIT_GBUFFER_DEPTH, g.depth.id());
                           glBindTextureUnit(binding::UNIT_TERRAIN_SHADOW, targets_.terrainShadowSamples().visibility.id());
                           glBindVertexArray(emptyVertexArray_.id());
-                          surfaceLight_.draw();
+                          glUseProgram(surfaceLight_.program().id());
+                          drawScissored(lastPrepare_.groundBound, targets_.size());  // it discards elsewhere
                       },
                       [this] { return std::vector<gl::HotProgram*>{&surfaceLight_.program()}; }});
     passes.push_back({{"ocean", {R::GBuffer, R::TerrainShadow, R::SurfaceRadiance}, {R::SurfaceRadiance, R::GBuffer, R::SeaReflection}},
@@ -470,11 +474,17 @@ void Renderer::prepare(const Scene& scene, const Camera& camera, glm::ivec2 size
     // point moves by a fraction of a pixel: the general reconstruction reads its history there).
     report.stillFrame =
         report.historyValid && uniforms.stillSincePrevious > 0.5f && uniforms.viewStillSincePrevious > 0.5f;
-    // The air's sphere (the preset's top: the model's may end lower, never higher).
-    report.skyBound = screenBounds_ ? sphereScreenBound(jitteredClipFromView(camera, size, frameJitterPx_),
-                                                        glm::transpose(camera.worldFromView()), -camera.position,
-                                                        scene.atmosphere.top_radius_km * 1000.0, size)
-                                    : ScreenRect{{0, 0}, size};
+    // The air's sphere (the preset's top: the model's may end lower, never higher), and the
+    // ground's highest (the terrain's highest above the sea, the waves' crests well under the
+    // kilometre added).
+    const auto bound = [&](double radius) {
+        return screenBounds_ ? sphereScreenBound(jitteredClipFromView(camera, size, frameJitterPx_),
+                                                 glm::transpose(camera.worldFromView()), -camera.position, radius, size)
+                             : ScreenRect{{0, 0}, size};
+    };
+    report.skyBound = bound(scene.atmosphere.top_radius_km * 1000.0);
+    report.groundBound = bound(scene.planetRadiusM() + scene.ocean.sea_level_m +
+                               std::max(scene.terrain.max_height_m, 0.0) + 1000.0);
     glNamedBufferSubData(frameUniforms_.id(), 0, sizeof uniforms, &uniforms);
     glBindBufferBase(GL_UNIFORM_BUFFER, binding::BLOCK_FRAME, frameUniforms_.id());
     atmosphere_.bind();

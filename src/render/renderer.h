@@ -114,8 +114,10 @@ struct PrepareReport {
                                          // still-frame program (render/sky_temporal.frag, STILL_FRAME)
     bool underWater = false;             // the camera under the sea: the sky pass's and the ocean's UNDER_WATER programs
                                          // (render/sky.frag, ocean/ocean.frag)
-    ScreenRect skyBound;                  // the pixels the sky passes ran their programs on: those that can see the air
+    ScreenRect skyBound;                 // the pixels the sky passes ran their programs on: those that can see the air
                                          // (render/screen_bound.h; the whole frame where it fills it), space elsewhere
+    ScreenRect groundBound;              // the pixels the terrain shadow and the surface light ran on: those that can
+                                         // see the ground's highest sphere (terrain.max_height_m above the sea)
 };
 
 class Renderer {
@@ -170,8 +172,9 @@ public:
     // compare the two).
     void setStillFrameProgram(bool on) { stillFrameProgram_ = on; }
     // The sky passes scissored to the rectangle that holds the air's sphere, space drawn around
-    // it by render/sky_space.frag (on, the default), or run over the whole frame (tests compare
-    // the two: the same image).
+    // it by render/sky_space.frag, and the terrain shadow and the surface light to the one that
+    // holds the ground's highest sphere (on, the default), or run over the whole frame (tests
+    // compare the two: the same image).
     void setScreenBounds(bool on) { screenBounds_ = on; }
     // The sub-pixel offset (pixels, about [-0.5, 0.5]) of the projection of the frames
     // rendered from now on; (0, 0), the default, renders unjittered.
