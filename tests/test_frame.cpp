@@ -183,6 +183,50 @@ TEST(FrameUniformsTest, TheViewStandsStillWhileTheClockRunsAndToWithinRounding) 
     EXPECT_TRUE(viewStoodStill(camera, camera, sun, glm::angleAxis(1.0e-8, glm::dvec3(0.0, 0.0, 1.0)) * sun));
 }
 
+TEST(FrameUniformsTest, FromHighAboveTheCloudsTheClockMovesNothingAPixelCanShow) {
+    // The wind moves the clouds wind_speed_mps a second; seen from 400 km up with 60 degrees over
+    // 720 pixels, 10 m/s at 30 Hz is 0.333 m / 396 km / (pi / 3 / 720) = 5.8e-4 pixels a frame
+    // at the layer's top (4 km), under kStillCloudDriftPx: the frame counts as still (the
+    // reconstruction's still program). From 10 km up (6 km above the tops) 0.038, and from
+    // under the layer any drift may cross a pixel: the clock moves the frame.
+    Scene scene;
+    const glm::ivec2 size{1280, 720};
+    const double radius = scene.planetRadiusM();
+    Camera camera;
+    camera.fovY_rad = glm::radians(60.0);
+    camera.orientation = orientationFromAxes({0, 1, 0}, {0, 0, 1}, {-1, 0, 0});  // looking down
+    camera.position = glm::dvec3(radius + 400.0e3, 0.0, 0.0);
+    scene.clouds.wind_speed_mps = 10.0;
+    const double frame_s = 1.0 / 30.0;
+    const double expected = 10.0 * frame_s / (400.0e3 - scene.clouds.top_altitude_km * 1000.0) / (glm::radians(60.0) / 720.0);
+    EXPECT_NEAR(cloudDriftPixels(scene, camera, size, frame_s), expected, 1e-9);
+    EXPECT_NEAR(expected, 5.8e-4, 0.1e-4);
+    const glm::dvec3 sun = scene.sunDirection();
+    const PreviousFrame before{camera, size, scene.time_s, sun};
+    Scene later = scene;
+    later.time_s += frame_s;
+    EXPECT_EQ(makeFrameUniforms(later, camera, size, 1, before).stillSincePrevious, 1.0f) << "orbit";
+
+    Camera aircraft = camera;
+    aircraft.position = glm::dvec3(radius + 10.0e3, 0.0, 0.0);
+    EXPECT_NEAR(cloudDriftPixels(scene, aircraft, size, frame_s), 0.038, 0.001);
+    const PreviousFrame beforeAircraft{aircraft, size, scene.time_s, sun};
+    EXPECT_EQ(makeFrameUniforms(later, aircraft, size, 1, beforeAircraft).stillSincePrevious, 0.0f) << "aircraft";
+
+    Camera under = camera;
+    under.position = glm::dvec3(radius + 30.0, 0.0, 0.0);
+    EXPECT_TRUE(std::isinf(cloudDriftPixels(scene, under, size, frame_s)));
+    const PreviousFrame beforeUnder{under, size, scene.time_s, sun};
+    EXPECT_EQ(makeFrameUniforms(later, under, size, 1, beforeUnder).stillSincePrevious, 0.0f) << "under the clouds";
+    // No wind, or no clouds: the clock moves nothing in the sky, wherever the camera is.
+    Scene calm = later;
+    calm.clouds.wind_speed_mps = 0.0;
+    EXPECT_EQ(makeFrameUniforms(calm, under, size, 1, beforeUnder).stillSincePrevious, 1.0f) << "no wind";
+    Scene clear = later;
+    clear.clouds.enabled = false;
+    EXPECT_EQ(makeFrameUniforms(clear, under, size, 1, beforeUnder).stillSincePrevious, 1.0f) << "no clouds";
+}
+
 TEST(FrameUniformsTest, JitterIsAHaltonSequenceInsideThePixel) {
     EXPECT_DOUBLE_EQ(halton(1, 2), 0.5);
     EXPECT_DOUBLE_EQ(halton(2, 2), 0.25);

@@ -104,8 +104,9 @@ void writeSky(vec3 dir, vec3 surface, float distance, SkySample result, float sa
 }
 
 #ifdef STILL_FRAME
-// A frame where nothing moved (the camera, its jitter, the sun and the clock:
-// frame.stillSincePrevious and viewStillSincePrevious, with a history; src/render/renderer.cpp
+// A frame where nothing moved (the camera, its jitter, the sun and the clock, or the clock
+// only by the clouds' drift far under a pixel, from high above them: frame.stillSincePrevious
+// and viewStillSincePrevious, with a history, src/render/frame_uniforms.h; src/render/renderer.cpp
 // picks this variant). Then every pixel's point is its own texel of the history and nothing is
 // clamped or listed, so the general reconstruction below comes down to the history, and at the
 // traced pixel its running mean with the new sample: this variant is that alone, to the bit. A

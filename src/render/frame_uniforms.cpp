@@ -1,6 +1,7 @@
 #include "render/frame_uniforms.h"
 
 #include <cmath>
+#include <limits>
 
 #include "clouds/cloud_block.h"
 
@@ -56,6 +57,17 @@ double cameraDepthBelowSeaM(const Scene& scene, const Camera& camera) {
     return scene.planetRadiusM() + scene.ocean.sea_level_m - glm::length(camera.position);
 }
 
+double cloudDriftPixels(const Scene& scene, const Camera& camera, glm::ivec2 size, double seconds) {
+    const double drift_m = std::abs(scene.clouds.wind_speed_mps * seconds);
+    if (drift_m == 0.0 || !scene.clouds.enabled) return 0.0;
+    // The nearest cloud: the layer's top below a camera above it; within or under the layer, at
+    // the camera (any drift is a whole pixel there).
+    const double aboveTop_m = camera.altitude(scene.planetRadiusM()) - scene.clouds.top_altitude_km * 1000.0;
+    if (!(aboveTop_m > 0.0)) return std::numeric_limits<double>::infinity();
+    const double pixelAngle = camera.fovY_rad / std::max(size.y, 1);
+    return drift_m / aboveTop_m / pixelAngle;
+}
+
 FrameUniforms makeFrameUniforms(const Scene& scene, const Camera& camera, glm::ivec2 size, int frameIndex,
                                 const std::optional<PreviousFrame>& previous, glm::dvec2 jitterPx) {
     const glm::dmat4 clipFromView = jitteredClipFromView(camera, size, jitterPx);
@@ -91,7 +103,11 @@ FrameUniforms makeFrameUniforms(const Scene& scene, const Camera& camera, glm::i
     // Only the clock ran: the view, and its sub-pixel jitter too (the explorer's anti-aliasing
     // moves it every frame, and then every point moves by a fraction of a pixel).
     u.viewStillSincePrevious = viewStill && previous->jitterPx == jitterPx ? 1.0f : 0.0f;
-    u.stillSincePrevious = viewStill && previous->time_s == scene.time_s ? 1.0f : 0.0f;
+    u.stillSincePrevious =
+        viewStill && (previous->time_s == scene.time_s ||
+                      cloudDriftPixels(scene, camera, size, scene.time_s - previous->time_s) < kStillCloudDriftPx)
+            ? 1.0f
+            : 0.0f;
     u.viewportSize = glm::vec2(size);
     u.inverseViewportSize = 1.0f / glm::vec2(size);
     u.jitter = glm::vec2(jitterPx);

@@ -48,7 +48,8 @@ struct FrameUniforms {
     float exposure;
     int frameIndex;
     float cameraDepthBelowSea;        // m below the mean sea surface (> 0: under water)
-    float stillSincePrevious;         // 1: the camera, the sun and the clock are the previous frame's (nothing moved)
+    float stillSincePrevious;         // 1: the camera and the sun are the previous frame's, and the clock too or its
+                                      // clouds' drift is under kStillCloudDriftPx (nothing moved, at the pixels' scale)
     float previousJitterX;            // pixels: the previous frame's jitter (x; y after the drift)
     glm::vec3 cloudDriftSincePrevious; // m, world axes: how far the wind moved the clouds since the previous frame
     float previousJitterY;
@@ -73,6 +74,18 @@ struct PreviousFrame {
     glm::dvec3 sunDirection{0.0};     // the scene's sun
     glm::dvec2 jitterPx{0.0};         // the sub-pixel offset its projection had, pixels
 };
+
+// How far the wind moves the clouds in `seconds`, in pixels of a `size` frame, seen from the
+// camera where they are nearest (the layer's top below a camera above it; infinity from within
+// or under the layer, where a cloud may touch the camera; 0 without clouds or wind).
+double cloudDriftPixels(const Scene& scene, const Camera& camera, glm::ivec2 size, double seconds);
+// Below this drift a frame whose clock ran counts as still (FrameUniforms::stillSincePrevious):
+// the clouds are the only thing in the sky the clock moves, and the reconstruction's still
+// program then keeps a running mean of up to 16 samples a pixel, one a visit every 16 frames,
+// whose lag (about 15 visits, 240 frames) is then under a quarter of a pixel. From orbit (400 km,
+// 60 degrees over 720 pixels) a 10 m/s wind moves the cloud tops 6e-4 pixels a frame at 30 Hz,
+// from space 1e-5; from an aircraft 6 km above them, 0.03.
+inline constexpr double kStillCloudDriftPx = 1.0e-3;
 
 // The camera and the sun stood still between two frames, to within rounding (a millimetre, a
 // microradian): FrameUniforms::viewStillSincePrevious.
