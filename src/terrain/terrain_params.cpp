@@ -60,8 +60,8 @@ void addTerrainParams(std::vector<ParamSpec>& table) {
         &TerrainParams::light_shafts);
     add("detail", "", 0.0, 1.0,
         "Ground detail up close: tri-planar detail normals and colour per material at 0.5, 4 and 32 m, placed where "
-        "the view ray meets the height field, filtered by the pixel's footprint (within 3 km of the camera; 1.3 "
-        "to 2 times the terrain pass on a software renderer).",
+        "the view ray meets the height field, filtered by the pixel's footprint (within 3 km of the camera; 1.4 "
+        "to 1.6 times the terrain pass on a software renderer).",
         &TerrainParams::detail);
 }
 
