@@ -224,10 +224,18 @@ TEST_F(Temporal, PassesScissoredToTheAirAndTheGroundGiveTheWholeFramesImage) {
     // shadow and the surface light on the one that holds the ground's highest: the frames are
     // those of the passes run over the whole frame, value for value, at full rate, still, with
     // the clock running and after a move and a turn (which the history must follow across the
-    // bound's edge); and the rectangle is well inside the frame (else it saves nothing).
+    // bound's edge), and from space turned to the sun (no air in view: space and the sun's disc
+    // alone); and the rectangle is well inside the frame (else it saves nothing).
     const glm::ivec2 size{96, 54};
-    for (const char* view : {"space", "orbit"}) {
-        Session s = session(view);
+    for (const char* view : {"space", "orbit", "sun"}) {
+        const bool sun = view == std::string("sun");
+        Session s = session(sun ? "space" : view);
+        if (sun) {  // from space, turned to the sun: no air in view (an empty bound), the sun's disc on screen
+            const glm::dvec3 forward = s.scene.sunDirection();
+            const glm::dvec3 right = glm::normalize(glm::cross(forward, glm::dvec3(0.0, 0.0, 1.0)));
+            s.camera.orientation = orientationFromAxes(right, glm::cross(right, forward), forward);
+            s.camera.fovY_rad = glm::radians(5.0);  // the disc (0.27 degrees across) over a few pixels
+        }
         Renderer bounded(test::repoPaths().shaders(), atmosphere::TableSizes::reduced());
         Renderer whole(test::repoPaths().shaders(), atmosphere::TableSizes::reduced());
         whole.setScreenBounds(false);
@@ -252,9 +260,13 @@ TEST_F(Temporal, PassesScissoredToTheAirAndTheGroundGiveTheWholeFramesImage) {
         std::printf("%-6s the bounds: the sky passes' at most %.0f %% of the frame, the ground's %.0f %%; values that "
                     "differ from the whole frame's over 12 frames: %zu\n", view, 100 * share, 100 * groundShare, differing);
         EXPECT_EQ(differing, 0u) << view;
-        EXPECT_LT(share, view == std::string("space") ? 0.4 : 0.65) << view;
+        const double most = sun ? 0.0 : view == std::string("space") ? 0.4 : 0.65;
+        EXPECT_LE(share, most) << view;
         EXPECT_LE(groundShare, share) << view;
-        EXPECT_LT(groundShare, view == std::string("space") ? 0.4 : 0.65) << view;
+        if (sun) {
+            const ImageRGBAF a = hdrOf(bounded, size);
+            EXPECT_GT(*std::max_element(a.pixels.begin(), a.pixels.end()), 1000.0f) << "the sun's disc is in view";
+        }
     }
 }
 

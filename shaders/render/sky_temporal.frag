@@ -138,7 +138,10 @@ void main() {
     vec3 surface = texelFetch(surfaceRadiance, pixel, 0).rgb;
     float distance = texelFetch(surfaceDistance, pixel, 0).r;
     if (distance <= 0.0 && rayMissesTheAir(dir)) {  // space: nothing to march or rebuild
-        outRadiance = vec4(min(SunDiscRadiance(dir, frame.sunDirection), vec3(MAX_HDR_RADIANCE)), 1.0);
+        // The sun's disc along the pixel centre's ray, as render/sky.frag and render/sky_space.frag
+        // form it (the interpolated NDC differs in the last bit, and so may a pixel at the disc's edge).
+        vec3 centreRay = worldRayFromNdc(pixelCentreNdc(gl_FragCoord.xy));
+        outRadiance = vec4(min(SunDiscRadiance(centreRay, frame.sunDirection), vec3(MAX_HDR_RADIANCE)), 1.0);
         outSkyMedium = packSkyMedium(SkySample(vec3(0.0), vec3(1.0)), MAX_HISTORY_SAMPLES);
         return;
     }
