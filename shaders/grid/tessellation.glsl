@@ -29,15 +29,21 @@ bool outsideFrustum(vec3 corners[8]) {
     return false;
 }
 
-// Quad outer and inner levels from the four corners (patch corners 0 (i, j), 1 (i+1, j),
-// 2 (i+1, j+1), 3 (i, j+1)); outer [0] is edge 0-3, [1] 0-1, [2] 1-2, [3] 3-2.
+// Quad outer levels as given (patch corners 0 (i, j), 1 (i+1, j), 2 (i+1, j+1), 3 (i, j+1));
+// outer [0] is edge 0-3, [1] 0-1, [2] 1-2, [3] 3-2; the inner levels the larger of each pair.
+void setQuadLevelsFromEdges(float edge03, float edge01, float edge12, float edge32) {
+    gl_TessLevelOuter[0] = edge03;
+    gl_TessLevelOuter[1] = edge01;
+    gl_TessLevelOuter[2] = edge12;
+    gl_TessLevelOuter[3] = edge32;
+    gl_TessLevelInner[0] = max(edge01, edge32);
+    gl_TessLevelInner[1] = max(edge03, edge12);
+}
+
+// Quad levels from the four corners' sizes on screen.
 void setQuadLevels(vec3 p[4], float targetPixels) {
-    gl_TessLevelOuter[0] = edgeLevel(p[0], p[3], targetPixels);
-    gl_TessLevelOuter[1] = edgeLevel(p[0], p[1], targetPixels);
-    gl_TessLevelOuter[2] = edgeLevel(p[1], p[2], targetPixels);
-    gl_TessLevelOuter[3] = edgeLevel(p[3], p[2], targetPixels);
-    gl_TessLevelInner[0] = max(gl_TessLevelOuter[1], gl_TessLevelOuter[3]);
-    gl_TessLevelInner[1] = max(gl_TessLevelOuter[0], gl_TessLevelOuter[2]);
+    setQuadLevelsFromEdges(edgeLevel(p[0], p[3], targetPixels), edgeLevel(p[0], p[1], targetPixels),
+                           edgeLevel(p[1], p[2], targetPixels), edgeLevel(p[3], p[2], targetPixels));
 }
 
 void cullPatch() {
