@@ -22,3 +22,15 @@ SkySample unpackSkyMedium(uvec4 texel, out float samples) {
     samples = sb.y;
     return SkySample(vec3(unpackHalf2x16(texel.x), sb.x), vec3(unpackHalf2x16(texel.z), unpackHalf2x16(texel.w).x));
 }
+
+// A pixel's running mean holds up to 16 samples (render/sky_temporal.frag); space is exact at once.
+const float MAX_HISTORY_SAMPLES = 15.0;
+
+// Space, where a ray misses the air (render/sky_temporal.frag's first branch, and render/
+// sky_space.frag around the air's rectangle): no surface, T = 1 and S = 0 exactly, so L = the
+// sun's disc (Elek §4.2.2) along the pixel centre's ray, as render/sky.frag forms it (an
+// interpolated NDC differs in the last bit, and so may a pixel at the disc's edge).
+vec3 spaceRadiance(vec2 fragCoord) {
+    return SunDiscRadiance(worldRayFromNdc(pixelCentreNdc(fragCoord)), frame.sunDirection);
+}
+uvec4 spaceSkyMedium() { return packSkyMedium(SkySample(vec3(0.0), vec3(1.0)), MAX_HISTORY_SAMPLES); }

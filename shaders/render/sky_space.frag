@@ -1,8 +1,7 @@
 // Space (before the passes "sky" and "sky temporal" where the air does not fill the frame):
 // what those passes give a pixel whose ray misses the air's sphere, drawn over the whole frame
 // first, so that they can be scissored to the rectangle that holds the air
-// (src/render/screen_bound.h): no surface there (the ground is inside the air), T = 1 and S = 0
-// exactly, so L = the sun's disc (Elek §4.2.2), and the history's T, S are those, exact at
+// (src/render/screen_bound.h): render/sky_medium.glsl's spaceRadiance and spaceSkyMedium, exact at
 // once (16 samples' worth: nothing to average). A few instructions a pixel where the passes
 // paid for their whole body, masked, on a software renderer.
 #include "common/frame_uniforms.glsl"
@@ -13,7 +12,6 @@ layout(location = 0) out vec4 outRadiance;
 layout(location = 1) out uvec4 outSkyMedium;  // T, S, samples in the history
 
 void main() {
-    vec3 dir = worldRayFromNdc(pixelCentreNdc(gl_FragCoord.xy));
-    outRadiance = vec4(SunDiscRadiance(dir, frame.sunDirection), 1.0);
-    outSkyMedium = packSkyMedium(SkySample(vec3(0.0), vec3(1.0)), 15.0);
+    outRadiance = vec4(spaceRadiance(gl_FragCoord.xy), 1.0);
+    outSkyMedium = spaceSkyMedium();
 }

@@ -60,7 +60,6 @@ layout(location = 1) out uvec4 outSkyMedium;  // T, S, samples in the history
 // between the samples lagged behind (frames 6-21 s: mean error 0.84 % on average without it,
 // 0.39 % with it; worst frame 2.35 % and 0.93 %).
 const float GAIN_LIMIT = 0.3;
-const float MAX_HISTORY_SAMPLES = 15.0;  // a still pixel's running mean: up to 16 samples
 const float BOX_MARGIN = 0.25;           // the box widened by this share of its size on each side
 // Where the point moved by more than half a pixel, half of the spatial estimate goes into the
 // history each frame: a moving pixel's history has been resampled and clamped many times over
@@ -138,11 +137,8 @@ void main() {
     vec3 surface = texelFetch(surfaceRadiance, pixel, 0).rgb;
     float distance = texelFetch(surfaceDistance, pixel, 0).r;
     if (distance <= 0.0 && rayMissesTheAir(dir)) {  // space: nothing to march or rebuild
-        // The sun's disc along the pixel centre's ray, as render/sky.frag and render/sky_space.frag
-        // form it (the interpolated NDC differs in the last bit, and so may a pixel at the disc's edge).
-        vec3 centreRay = worldRayFromNdc(pixelCentreNdc(gl_FragCoord.xy));
-        outRadiance = vec4(min(SunDiscRadiance(centreRay, frame.sunDirection), vec3(MAX_HDR_RADIANCE)), 1.0);
-        outSkyMedium = packSkyMedium(SkySample(vec3(0.0), vec3(1.0)), MAX_HISTORY_SAMPLES);
+        outRadiance = vec4(spaceRadiance(gl_FragCoord.xy), 1.0);
+        outSkyMedium = spaceSkyMedium();
         return;
     }
 

@@ -58,7 +58,8 @@ double cameraDepthBelowSeaM(const Scene& scene, const Camera& camera) {
 }
 
 double cloudDriftPixels(const Scene& scene, const Camera& camera, glm::ivec2 size, double seconds) {
-    const double drift_m = std::abs(scene.clouds.wind_speed_mps * seconds);
+    const double drift_m =
+        glm::length(clouds::windDriftKm(scene, scene.time_s) - clouds::windDriftKm(scene, scene.time_s - seconds)) * 1000.0;
     if (drift_m == 0.0 || !scene.clouds.enabled) return 0.0;
     // The nearest cloud: the layer's top below a camera above it; within or under the layer, at
     // the camera (any drift is a whole pixel there).

@@ -477,9 +477,10 @@ void Renderer::prepare(const Scene& scene, const Camera& camera, glm::ivec2 size
     // The air's sphere (the preset's top: the model's may end lower, never higher), and the
     // ground's highest (the terrain's highest above the sea, the waves' crests well under the
     // kilometre added).
+    const glm::dmat4 clipFromView = jitteredClipFromView(camera, size, frameJitterPx_);
+    const glm::dmat3 viewFromWorld = glm::transpose(camera.worldFromView());
     const auto bound = [&](double radius) {
-        return screenBounds_ ? sphereScreenBound(jitteredClipFromView(camera, size, frameJitterPx_),
-                                                 glm::transpose(camera.worldFromView()), -camera.position, radius, size)
+        return screenBounds_ ? sphereScreenBound(clipFromView, viewFromWorld, -camera.position, radius, size)
                              : ScreenRect{{0, 0}, size};
     };
     report.skyBound = bound(scene.atmosphere.top_radius_km * 1000.0);
