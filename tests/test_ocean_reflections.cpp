@@ -261,6 +261,12 @@ TEST_F(OceanReflections, TheLakeMirrorsTheMountainsWhereTheMirrorRayMeetsThem) {
     EXPECT_LT(worstSky, 0.05);
 }
 
+// The shader tree where rays whose reach spans under a pixel are searched too.
+fs::path shadersWithoutPixelReach() {
+    return test::shadersWith("planet_test_ssr_pixel_reach_off", "ocean/screen_space_reflections.glsl",
+                             "#define TERRAIN_REFLECTION_PIXEL_REACH 1", "#define TERRAIN_REFLECTION_PIXEL_REACH 0");
+}
+
 // The terrain reflection pass searches only the sea pixels where land may lie within the
 // reflected ray's reach (shaders/ocean/screen_space_reflections.glsl's terrainMayBeReflected,
 // the continents map's slope bound; issue 15): the image is the one that searching every sea
@@ -275,6 +281,7 @@ TEST_F(OceanReflections, OnlyPixelsWithLandWithinReachAreSearchedAndThatChangesN
     const fs::path searchAll = test::shadersWith("planet_test_ssr_all", "ocean/screen_space_reflections.glsl",
                                                  "#define TERRAIN_REFLECTION_SEARCH_ALL 0",
                                                  "#define TERRAIN_REFLECTION_SEARCH_ALL 1");
+    const fs::path withoutPixelReach = shadersWithoutPixelReach();
     struct Case {
         const char* view;
         double maxShare;  // listed by the bound / listed when all are searched, at most
@@ -282,7 +289,7 @@ TEST_F(OceanReflections, OnlyPixelsWithLandWithinReachAreSearchedAndThatChangesN
     for (const Case& c : {Case{"orbit", 0.25}, Case{"space", 0.5}, Case{"beach", 1.0}, Case{"sea", 0.0}}) {
         SCOPED_TRACE(c.view);
         const Session s = loadSession(test::repoPaths(), "earth", c.view);
-        Renderer bounded(test::repoPaths().shaders(), atmosphere::TableSizes::reduced(), s.continents);
+        Renderer bounded(withoutPixelReach, atmosphere::TableSizes::reduced(), s.continents);
         bounded.render(s.scene, s.camera, kSize);
         const std::size_t listed = bounded.targets().readTerrainReflectionList().size();
         const ImageRGBAF image = readTextureRGBAF(bounded.targets().hdr(), kSize.x, kSize.y);
@@ -296,5 +303,60 @@ TEST_F(OceanReflections, OnlyPixelsWithLandWithinReachAreSearchedAndThatChangesN
         EXPECT_LE(double(listed), c.maxShare * double(all));
         EXPECT_EQ(cmp.nonFinitePixels, 0u);
         EXPECT_LT(cmp.maxRelativeError, 1e-3);
+    }
+}
+
+// Nor are the rays whose reach below the highest peak spans under a pixel on screen (the same
+// file's terrainMayBeReflected: a segment of length L seen from at least D - L away subtends at
+// most L / (D - L)): the search could only meet the pixel it starts from. From space (pixels of
+// 180 km at 160x90, against a reach of a few km) that is nearly every pixel the slope bound lists;
+// at sea level (the beach) none, and there the image is the same to the bit. What it changes is
+// the coast's pixels, which took the land they hold or touch for a reflection over the whole
+// pixel (the true reflection covers its few km of the pixel's 180), and nothing else.
+TEST_F(OceanReflections, RaysWhoseReachSpansUnderAPixelAreNotSearched) {
+    const fs::path withoutPixelReach = shadersWithoutPixelReach();
+    for (const char* view : {"space", "orbit", "beach"}) {
+        SCOPED_TRACE(view);
+        const Session s = loadSession(test::repoPaths(), "earth", view);
+        Renderer withRule(test::repoPaths().shaders(), atmosphere::TableSizes::reduced(), s.continents);
+        withRule.render(s.scene, s.camera, kSize);
+        const std::size_t listed = withRule.targets().readTerrainReflectionList().size();
+        const ImageRGBAF image = readTextureRGBAF(withRule.targets().hdr(), kSize.x, kSize.y);
+        Renderer without(withoutPixelReach, atmosphere::TableSizes::reduced(), s.continents);
+        without.render(s.scene, s.camera, kSize);
+        const std::size_t listedWithout = without.targets().readTerrainReflectionList().size();
+        const ImageComparison cmp = compareImages(image, readTextureRGBAF(without.targets().hdr(), kSize.x, kSize.y));
+        const auto over = std::count_if(cmp.relativeError.begin(), cmp.relativeError.end(),
+                                        [](float e) { return e > 1e-3f; });
+        std::printf("%s: %zu searched, %zu without the rule; mean change %.4f %%, max %.3g %% (%td pixels over 0.1 %%)\n",
+                    view, listed, listedWithout, 100.0 * cmp.meanRelativeError, 100.0 * cmp.maxRelativeError, over);
+        EXPECT_EQ(cmp.nonFinitePixels, 0u);
+        // Changed: only pixels within two of ground above the sea (the G-buffer's height, which
+        // the sea leaves as the terrain's; without the rule the search, its steps a pixel or more,
+        // took land two pixels (360 km) off for what a ray of a few km's reach met, in 3 pixels).
+        const ImageRGBAF ground = readTextureRGBAF(withRule.targets().gbuffer().normal, kSize.x, kSize.y);
+        const auto isLand = [&](int x, int y) {
+            x = std::clamp(x, 0, kSize.x - 1);
+            y = std::clamp(y, 0, kSize.y - 1);
+            return ground.pixels[4 * std::size_t(y * kSize.x + x) + 3] > s.scene.ocean.sea_level_m;
+        };
+        std::size_t changedAwayFromLand = 0;
+        for (int y = 0; y < kSize.y; ++y)
+            for (int x = 0; x < kSize.x; ++x) {
+                if (!(cmp.relativeError[std::size_t(y * kSize.x + x)] > 1e-4f)) continue;
+                bool nearLand = false;
+                for (int dy = -2; dy <= 2; ++dy)
+                    for (int dx = -2; dx <= 2; ++dx) nearLand = nearLand || isLand(x + dx, y + dy);
+                if (!nearLand) ++changedAwayFromLand;
+            }
+        EXPECT_EQ(changedAwayFromLand, 0u);
+        if (std::string(view) == "space") {  // nearly every listed ray reaches under a pixel
+            EXPECT_GT(listedWithout, std::size_t(100));
+            EXPECT_LE(double(listed), 0.05 * double(listedWithout));
+            EXPECT_LT(cmp.meanRelativeError, 5e-4);
+        } else {  // from 400 km (1.2 km pixels) and at sea level every listed ray spans pixels
+            EXPECT_EQ(listed, listedWithout);
+            EXPECT_EQ(cmp.maxRelativeError, 0.0);
+        }
     }
 }

@@ -209,7 +209,7 @@ void main() {
     // sea reflection pass (the clouds' change, but as a flat mirror, which has it) and the
     // terrain reflection pass, which searches the terrain where it may be reflected instead.
     outSeaReflection = vec4(reflected, coverage * fresnel);
-    if (terrainMayBeReflected(up, reflected, ocean.seaLevel))
+    if (terrainMayBeReflected(up, reflected, ocean.seaLevel, surfaceDistance, pixelAngle))
         outSeaSkyReflection = vec4(sky, surfaceDistance);
     // The sun's visibility from the water's surface (the clouds' shadows and the terrain's, the
     // march starting at sea level, not on the sea floor), formed once for the light into the

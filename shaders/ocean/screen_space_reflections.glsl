@@ -36,6 +36,8 @@
 #define OCEAN_SCREEN_SPACE_REFLECTIONS 1
 // On (1), every sea pixel is searched, land within reach or not (tests: the same image).
 #define TERRAIN_REFLECTION_SEARCH_ALL 0
+// Off (0), rays whose reach spans under a pixel on screen are searched too (tests compare the two).
+#define TERRAIN_REFLECTION_PIXEL_REACH 1
 
 const int SSR_STEPS = 20;
 const int SSR_REFINEMENTS = 5;
@@ -146,12 +148,21 @@ ScreenReflection searchScreenReflection(vec3 origin, vec3 dir, float reach, ivec
 }
 
 // Whether the terrain may be reflected along `reflected` from the sea at `up`, heightM above
-// the planet radius: whether land may lie within the ray's reach below the highest mountain
-// (terrain/terrain_shadow.glsl's landMayLieWithin, the continents map's slope bound).
-bool terrainMayBeReflected(vec3 up, vec3 reflected, float heightM) {
+// the planet radius and distanceM from the camera: whether the ray's reach below the highest
+// mountain spans a pixel on screen, and land may lie within it (terrain/terrain_shadow.glsl's
+// landMayLieWithin, the continents map's slope bound). A segment of length L seen from at least
+// D - L away subtends at most L / (D - L) rad: under a pixel, the search could only meet the
+// pixel it starts from or its neighbour (from space, 22 km pixels against a few km of reach).
+// There the reflection covers at most that share of a coast pixel (the sea within reach of
+// land as high as the highest peak; real coasts are lower, so far less), where a hit put it
+// over the whole pixel: left out, the pixel is nearer the truth wherever that share is under
+// half (tests/test_ocean_reflections.cpp: from space only coast pixels change, 0.008 % of the
+// frame's luminance on average).
+bool terrainMayBeReflected(vec3 up, vec3 reflected, float heightM, float distanceM, float pixelAngle) {
 #if OCEAN_SCREEN_SPACE_REFLECTIONS
     if (TERRAIN_REFLECTION_SEARCH_ALL != 0) return true;
     float reach = reachBelowPeaks(heightM, dot(reflected, up));
+    if (TERRAIN_REFLECTION_PIXEL_REACH != 0 && reach < pixelAngle * (distanceM - reach)) return false;
     return landMayLieWithin(up, reach / M_PER_KM, heightM, frame.planetRadius / M_PER_KM, ocean.continentLipschitz,
                             ocean.continentSampleSlackRad, uContinents);
 #else

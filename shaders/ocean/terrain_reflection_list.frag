@@ -1,11 +1,12 @@
 // The terrain reflection's list (ocean/terrain_reflection.glsl): the pixels where the ocean left
-// the sky it reflected, because land may lie within the reflected ray's reach. A full-screen
-// draw (no colour written) rather than a dispatch, so that conditional rendering skips it where
-// the ocean drew nothing, or where no land is on screen: with TERRAIN_REFLECTION_LAND_SEEN 1 the
-// same draw, counted by an any-samples query, keeps only the pixels that show ground above the
-// sea, the only thing the search can find (a reflected ray rises from the sea, in front of the
-// floor below it). On the open sea, where nearly every ray's reach has land within the slope
-// bound somewhere, that is what spares the search.
+// the sky it reflected, because land may lie within the reflected ray's reach. A draw over the
+// ground sphere's rectangle (src/render/renderer.cpp; no colour written) rather than a
+// dispatch, so that conditional rendering skips it where the ocean drew nothing, or where no
+// land is on screen: with TERRAIN_REFLECTION_LAND_SEEN 1 the same draw, counted by an
+// any-samples query, keeps only the pixels that show ground above the sea, the only thing the
+// search can find (a reflected ray rises from the sea, in front of the floor below it). On the
+// open sea, where nearly every ray's reach has land within the slope bound somewhere, that is
+// what spares the search.
 #include "ocean/terrain_reflection.glsl"
 
 #ifndef TERRAIN_REFLECTION_LAND_SEEN

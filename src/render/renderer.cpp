@@ -234,7 +234,8 @@ std::vector<Renderer::Pass> Renderer::makePasses() {
                           targets_.clearTerrainReflectionList();
                           glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding::BUFFER_TERRAIN_REFLECTION_LIST,
                                            targets_.terrainReflectionList().id());
-                          // Listed by a full-screen draw that writes no colour, skipped on the GPU
+                          // Listed by a draw over the ground sphere's rectangle (which holds the
+                          // sea's) that writes no colour, skipped on the GPU
                           // where the ocean drew no pixel (an inland view) or where no ground above
                           // the sea is on screen (the open sea: what the search could find), which
                           // the same draw in its mode TERRAIN_REFLECTION_LAND_SEEN counts first;
@@ -245,12 +246,12 @@ std::vector<Renderer::Pass> Renderer::makePasses() {
                           glBeginConditionalRender(oceanDrew_.id(), GL_QUERY_WAIT);
                           glBeginQuery(GL_ANY_SAMPLES_PASSED, landSeen_.id());
                           glUseProgram(terrainReflectionList_.get(s.atmosphere.elek_3d_table, false, 1).id());
-                          glDrawArrays(GL_TRIANGLES, 0, 3);
+                          drawScissored(lastPrepare_.groundBound, targets_.size());  // the sea lies within it
                           glEndQuery(GL_ANY_SAMPLES_PASSED);
                           glEndConditionalRender();
                           glBeginConditionalRender(landSeen_.id(), GL_QUERY_WAIT);
                           glUseProgram(terrainReflectionList_.get(s.atmosphere.elek_3d_table).id());
-                          glDrawArrays(GL_TRIANGLES, 0, 3);
+                          drawScissored(lastPrepare_.groundBound, targets_.size());
                           glEndConditionalRender();
                           glColorMaski(0, GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
                           glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT);
