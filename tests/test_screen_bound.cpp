@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <random>
+#include <vector>
 
 #include <glm/gtc/quaternion.hpp>
 #include <gtest/gtest.h>
@@ -139,6 +140,32 @@ TEST(ScreenBound, BlocksAroundHoldTheBlocksNextToTheRect) {
     const ScreenRect all = blocksAround({{0, 0}, {40, 40}}, 4, {10, 10});
     EXPECT_EQ(all.min, glm::ivec2(0));
     EXPECT_EQ(all.max, glm::ivec2(10));
+}
+
+// The bands and the rectangle cover every pixel of the screen exactly once, wherever the
+// rectangle lies (inside, across an edge or a corner, beyond the screen, empty).
+TEST(ScreenBound, BandsAroundAndTheRectTileTheScreen) {
+    const glm::ivec2 size{23, 17};
+    const ScreenRect cases[] = {{{5, 4}, {12, 9}},   {{-3, 2}, {8, 30}}, {{0, 0}, {23, 17}}, {{15, -4}, {40, 6}},
+                                {{30, 30}, {40, 40}}, {}, {{3, 3}, {4, 4}}};
+    for (const ScreenRect& rect : cases) {
+        SCOPED_TRACE(testing::Message() << rect.min.x << "," << rect.min.y << " " << rect.max.x << "," << rect.max.y);
+        std::vector<int> covered(std::size_t(size.x * size.y), 0);
+        const auto mark = [&](const ScreenRect& r) {
+            for (int y = std::max(r.min.y, 0); y < std::min(r.max.y, size.y); ++y)
+                for (int x = std::max(r.min.x, 0); x < std::min(r.max.x, size.x); ++x) ++covered[std::size_t(y * size.x + x)];
+        };
+        mark(rect);
+        for (const ScreenRect& band : bandsAround(rect, size)) {
+            if (band.empty()) continue;
+            EXPECT_GE(band.min.x, 0);  // scissor boxes on the screen
+            EXPECT_GE(band.min.y, 0);
+            EXPECT_LE(band.max.x, size.x);
+            EXPECT_LE(band.max.y, size.y);
+            mark(band);
+        }
+        EXPECT_EQ(std::count(covered.begin(), covered.end(), 1), size.x * size.y);
+    }
 }
 
 }  // namespace

@@ -437,7 +437,9 @@ bool Renderer::historyUsable(const Scene& scene, const Camera& camera, bool resi
 Renderer::~Renderer() { continents_->releaseTexture(); }
 
 void Renderer::drawSpaceAround(const ScreenRect& skyBound) const {
-    if (!skyBound.coversScreen(targets_.size())) skySpace_.draw();
+    if (skyBound.coversScreen(targets_.size())) return;
+    glUseProgram(skySpace_.program().id());
+    for (const ScreenRect& band : bandsAround(skyBound, targets_.size())) drawScissored(band, targets_.size());
 }
 
 void Renderer::prepare(const Scene& scene, const Camera& camera, glm::ivec2 size) {

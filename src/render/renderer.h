@@ -212,8 +212,8 @@ private:
     std::vector<Pass> makePasses();
     void prepare(const Scene& scene, const Camera& camera, glm::ivec2 size);
     bool historyUsable(const Scene& scene, const Camera& camera, bool resized) const;
-    // Space over the whole frame where the air's bound does not fill it (render/sky_space.frag):
-    // the sky passes then run scissored to the bound.
+    // Space around the air's bound where it does not fill the frame (render/sky_space.frag), in
+    // up to four scissored bands: the sky passes then run scissored to the bound.
     void drawSpaceAround(const ScreenRect& skyBound) const;
     // Rebuilds the programs that read the atmosphere tables when the tables' sizes changed
     // (a starter refined to its target). Returns whether it did.

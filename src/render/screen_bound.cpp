@@ -88,4 +88,12 @@ ScreenRect blocksAround(const ScreenRect& rect, int block, glm::ivec2 blocks) {
     return b;
 }
 
+std::array<ScreenRect, 4> bandsAround(const ScreenRect& rect, glm::ivec2 size) {
+    if (rect.empty()) return {ScreenRect{{0, 0}, size}, ScreenRect{}, ScreenRect{}, ScreenRect{}};
+    const glm::ivec2 lo = glm::clamp(rect.min, glm::ivec2(0), size);
+    const glm::ivec2 hi = glm::clamp(rect.max, glm::ivec2(0), size);
+    return {ScreenRect{{0, 0}, {size.x, lo.y}}, ScreenRect{{0, hi.y}, size}, ScreenRect{{0, lo.y}, {lo.x, hi.y}},
+            ScreenRect{{hi.x, lo.y}, {size.x, hi.y}}};
+}
+
 }  // namespace planet

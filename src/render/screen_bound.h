@@ -18,6 +18,8 @@
 // where the cone is behind the camera or beside the view, nothing.
 #pragma once
 
+#include <array>
+
 #include <glm/glm.hpp>
 
 namespace planet {
@@ -43,5 +45,10 @@ ScreenRect sphereScreenBound(const glm::dmat4& clipFromView, const glm::dmat3& v
 // The blocks of `block` x `block` pixels (a reduced-rate target's texels) that hold a pixel of
 // `rect` or of the blocks next to those (the reconstruction reads the 3x3 blocks around a pixel's).
 ScreenRect blocksAround(const ScreenRect& rect, int block, glm::ivec2 blocks);
+
+// The screen less `rect`: up to four bands (below, above, left, right of it), which with the
+// rectangle (clamped to the screen) tile the screen without overlap; empty ones where the
+// rectangle reaches the screen's edge. An empty rect leaves one band, the whole screen.
+std::array<ScreenRect, 4> bandsAround(const ScreenRect& rect, glm::ivec2 size);
 
 }  // namespace planet
