@@ -15,8 +15,18 @@
 // to the clear sky along its own ray: L_sky(p, r) + dL_C. Where no cloud is crossed dL_C = 0
 // and the sky's reflection is exactly the per-pixel one. Otherwise (OCEAN_FLAT_MIRROR 0) each
 // fragment marches its own reflected ray.
+//
+// Seen from higher still, where no pixel resolves any wave (src/ocean/flat_mirror.h,
+// seaIsASmoothMirror), every fragment's normal is the sphere's own, so its mirror ray is the
+// mean surface's, as at the grid's points: then (OCEAN_SMOOTH_MIRROR 1, a flat mirror too) the
+// grid's points form the whole reflection, L_sky + dL_C = MarchView(p, r), and the fragments
+// take it interpolated, with no sky lookup of their own (from space the lookup was a third of
+// the sea's fragment work; the reflected sky varies over the disc, not within a patch).
+#ifndef OCEAN_SMOOTH_MIRROR
+#define OCEAN_SMOOTH_MIRROR 0
+#endif
 #ifndef OCEAN_FLAT_MIRROR
-#define OCEAN_FLAT_MIRROR 0
+#define OCEAN_FLAT_MIRROR OCEAN_SMOOTH_MIRROR
 #endif
 
 // The reflected ray's march: one slice, a 32nd of the steps, two sun samples and the far field

@@ -56,7 +56,7 @@
 in vec3 tePosition;
 in vec3 teDirection;
 in vec3 teOffset;
-in vec3 teCloudReflection;  // with OCEAN_FLAT_MIRROR: dL_C (ocean/cloud_reflection.glsl)
+in vec3 teGridReflection;  // OCEAN_FLAT_MIRROR: dL_C; OCEAN_SMOOTH_MIRROR: L_sky + dL_C (ocean/cloud_reflection.glsl)
 
 layout(binding = UNIT_SEABED_DEPTH) uniform sampler2D seabedDepth;         // copy of the G-buffer depth (reversed-Z)
 layout(binding = UNIT_SEABED_RADIANCE) uniform sampler2D seabedRadiance;   // copy of the surface radiance
@@ -91,15 +91,21 @@ const float SHORE_FADE_M = 0.5;  // water path over which the sea fades in at th
 
 // The sky the sea reflects along `reflected` from `point` (km from the planet centre; this
 // fragment): the clear sky, with the clouds' change from the grid's points where the sea is a
-// flat mirror to every pixel (else the sea reflection pass adds it). The terrain reflected in
-// its place is the terrain reflection pass's.
+// flat mirror to every pixel (else the sea reflection pass adds it); all of it from the grid's
+// points where the sea is a smooth mirror (no pixel resolves a wave: every fragment's normal is
+// the sphere's, its mirror ray the grid's, interpolated). The terrain reflected in its place is
+// the terrain reflection pass's.
 vec3 reflectedSky(vec3 point, vec3 reflected, vec3 sun) {
+#if OCEAN_SMOOTH_MIRROR
+    return teGridReflection;
+#else
     vec3 clearTransmittance;
     vec3 radiance = SkyRadiance(point, reflected, sun, clearTransmittance);
 #if OCEAN_FLAT_MIRROR
-    radiance += teCloudReflection;
+    radiance += teGridReflection;
 #endif
     return radiance;
+#endif
 }
 
 void main() {

@@ -13,9 +13,9 @@
 
 layout(vertices = 4) out;
 in vec2 vGrid[];
-in vec3 vCloudReflection[];
+in vec3 vGridReflection[];
 out vec2 tcGrid[];
-out vec3 tcCloudReflection[];
+out vec3 tcGridReflection[];
 
 // Whether the patch lies over land throughout (src/ocean/land_cull.h): the continent value at
 // its centre, less the map's steepest slope times the patch's angular radius, above the value
@@ -57,7 +57,7 @@ float oceanEdgeLevel(vec3 a, vec3 b) {
 
 void main() {
     tcGrid[gl_InvocationID] = vGrid[gl_InvocationID];
-    tcCloudReflection[gl_InvocationID] = vCloudReflection[gl_InvocationID];
+    tcGridReflection[gl_InvocationID] = vGridReflection[gl_InvocationID];
     if (gl_InvocationID != 0) return;
     vec3 mean[4];
     vec3 corners[8];

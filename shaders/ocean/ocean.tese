@@ -13,11 +13,11 @@
 
 layout(quads, fractional_odd_spacing, ccw) in;
 in vec2 tcGrid[];
-in vec3 tcCloudReflection[];
+in vec3 tcGridReflection[];
 out vec3 tePosition;   // camera-relative, m
 out vec3 teDirection;  // unit direction of the undisplaced point
 out vec3 teOffset;     // teDirection - camera direction (gerstner.glsl's dv)
-out vec3 teCloudReflection;  // dL_C between the grid points (ocean/cloud_reflection.glsl)
+out vec3 teGridReflection;  // dL_C, or L_sky + dL_C, between the grid points (ocean/cloud_reflection.glsl)
 
 #include "terrain/terrain_block.glsl"
 
@@ -33,7 +33,7 @@ void main() {
     tePosition = sphere + oceanDisplacement(v, dv, vertexSpacing, waterDepth);
     teDirection = v;
     teOffset = dv;
-    teCloudReflection = mix(mix(tcCloudReflection[0], tcCloudReflection[1], uv.x),
-                            mix(tcCloudReflection[3], tcCloudReflection[2], uv.x), uv.y);
+    teGridReflection = mix(mix(tcGridReflection[0], tcGridReflection[1], uv.x),
+                            mix(tcGridReflection[3], tcGridReflection[2], uv.x), uv.y);
     gl_Position = frame.clipFromView * (frame.viewFromWorld * vec4(tePosition, 1.0));
 }

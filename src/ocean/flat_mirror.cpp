@@ -25,4 +25,9 @@ bool seaIsAFlatMirror(const std::vector<GerstnerWave>& waves, double heightAbove
     return shift <= kFlatMirrorShiftFraction * footprint;
 }
 
+bool seaIsASmoothMirror(const std::vector<GerstnerWave>& waves, double heightAboveSeaM, double radiansPerPixel) {
+    if (!(heightAboveSeaM > 0.0) || !(radiansPerPixel > 0.0) || !std::isfinite(heightAboveSeaM)) return false;
+    return resolvedWaveSlope(waves, heightAboveSeaM * radiansPerPixel) == 0.0;
+}
+
 }  // namespace planet::ocean

@@ -33,4 +33,11 @@ inline constexpr double kFlatMirrorShiftFraction = 0.25;
 bool seaIsAFlatMirror(const std::vector<GerstnerWave>& waves, double heightAboveSeaM, double radiansPerPixel,
                       double cloudTopAboveSeaM);
 
+// Whether no sea pixel resolves any wave (s(f) = 0 at the smallest footprint, as above: every
+// wave under two footprints long, or flat): then every fragment's normal is the sphere's and
+// its mirror ray the mean surface's, and the whole reflected sky, clouds and all, is formed at
+// the grid's points (shaders/ocean/cloud_reflection.glsl, OCEAN_SMOOTH_MIRROR). A smooth mirror
+// is a flat one.
+bool seaIsASmoothMirror(const std::vector<GerstnerWave>& waves, double heightAboveSeaM, double radiansPerPixel);
+
 }  // namespace planet::ocean

@@ -17,13 +17,13 @@ constexpr int kGridExponent = 4;  // Michelic Eq. 2's n for the ocean grid
 double seaRadiusM(const Scene& scene) { return scene.planetRadiusM() + scene.ocean.sea_level_m; }
 
 // The program's modes (AtmosphereProgram), by their index in get().
-constexpr int kFlatMirrorMode = 1, kUnderWaterMode = 2;
+constexpr int kFlatMirrorMode = 1, kUnderWaterMode = 2, kSmoothMirrorMode = 3;
 }  // namespace
 
 OceanPass::OceanPass(const gl::ShaderSources& sources, const atmosphere::TableSizes& tables)
     : program_(sources, tables,
                gl::ProgramDesc{"ocean", {"ocean/ocean.vert", "ocean/ocean.tesc", "ocean/ocean.tese", "ocean/ocean.frag"}},
-               {"OCEAN_FLAT_MIRROR", "UNDER_WATER"}) {
+               {"OCEAN_FLAT_MIRROR", "UNDER_WATER", "OCEAN_SMOOTH_MIRROR"}) {
     waves_.label("ocean waves");
     glNamedBufferStorage(block_.id(), sizeof(ocean::OceanBlock), nullptr, GL_DYNAMIC_STORAGE_BIT);
     block_.label("OceanBlock");
@@ -73,10 +73,12 @@ void OceanPass::prepare(const Scene& scene, const Camera& camera, double radians
     block.landCulling = landCulling_ && landContinent_ <= 1.0 ? 1 : 0;
     glNamedBufferSubData(block_.id(), 0, sizeof block, &block);
     const double height = glm::length(camera.position) - radius;
-    flatMirror_ = flatMirrorMode_ == FlatMirror::Auto
-                      ? ocean::seaIsAFlatMirror(scene.waves, height, radiansPerPixel,
-                                                scene.clouds.top_altitude_km * 1000.0 - scene.ocean.sea_level_m)
-                      : flatMirrorMode_ == FlatMirror::On;
+    smoothMirror_ = flatMirrorMode_ == FlatMirror::Auto ? ocean::seaIsASmoothMirror(scene.waves, height, radiansPerPixel)
+                                                        : flatMirrorMode_ == FlatMirror::Smooth;
+    flatMirror_ = smoothMirror_ || (flatMirrorMode_ == FlatMirror::Auto
+                                        ? ocean::seaIsAFlatMirror(scene.waves, height, radiansPerPixel,
+                                                                  scene.clouds.top_altitude_km * 1000.0 - scene.ocean.sea_level_m)
+                                        : flatMirrorMode_ == FlatMirror::On);
 }
 
 void OceanPass::bindBlock() const { glBindBufferBase(GL_UNIFORM_BUFFER, binding::BLOCK_OCEAN, block_.id()); }
@@ -88,7 +90,8 @@ void OceanPass::draw(bool elekTable, bool underWater) {
     glDepthFunc(GL_GREATER);  // reversed-Z
     glDepthMask(GL_TRUE);
     glDisable(GL_CULL_FACE);  // the surface is seen from below too
-    glUseProgram(program_.get(elekTable, false, underWater ? kUnderWaterMode : flatMirror_ ? kFlatMirrorMode : 0).id());
+    const int mode = underWater ? kUnderWaterMode : smoothMirror_ ? kSmoothMirrorMode : flatMirror_ ? kFlatMirrorMode : 0;
+    glUseProgram(program_.get(elekTable, false, mode).id());
     if (countPrimitives_) glBeginQuery(GL_PRIMITIVES_GENERATED, primitives_.id());
     mesh_.draw();
     if (countPrimitives_) {

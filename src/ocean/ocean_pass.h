@@ -55,11 +55,14 @@ public:
     AtmosphereProgram& program() { return program_; }
 
     // The program's mode OCEAN_FLAT_MIRROR (the clouds' share of the reflection from the grid's
-    // points) where the sea is a flat mirror to every pixel (Auto: flat_mirror.h, per frame), or
-    // always (On) or never (Off), to compare with (tests). flatMirror(): the last prepare()'s.
-    enum class FlatMirror { Auto, On, Off };
+    // points) where the sea is a flat mirror to every pixel, and OCEAN_SMOOTH_MIRROR (all of the
+    // reflected sky from the grid's points) where it is a smooth one (Auto: flat_mirror.h, per
+    // frame), or always the one (On: flat, Smooth: smooth) or neither (Off), to compare with
+    // (tests). flatMirror(), smoothMirror(): the last prepare()'s (a smooth mirror is flat too).
+    enum class FlatMirror { Auto, On, Smooth, Off };
     void setFlatMirror(FlatMirror mode) { flatMirrorMode_ = mode; }
     bool flatMirror() const { return flatMirror_; }
+    bool smoothMirror() const { return smoothMirror_; }
 
     // Land culling (on by default): patches over land dropped in the control stage, fragments
     // under land or behind the terrain discarded before the water is shaded. Off only to
@@ -77,9 +80,10 @@ public:
 private:
     void uploadWaves(const Scene& scene, const Camera& camera);
 
-    AtmosphereProgram program_;  // modes OCEAN_FLAT_MIRROR and UNDER_WATER (the surface seen from below)
+    AtmosphereProgram program_;  // modes OCEAN_FLAT_MIRROR, UNDER_WATER (the surface seen from below), OCEAN_SMOOTH_MIRROR
     FlatMirror flatMirrorMode_ = FlatMirror::Auto;
     bool flatMirror_ = false;
+    bool smoothMirror_ = false;
     GridMesh mesh_{"ocean"};
     gl::Buffer waves_;
     gl::Buffer block_;  // OceanBlock
