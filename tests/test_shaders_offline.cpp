@@ -59,6 +59,11 @@ TEST(ShadersOffline, EveryStageValidatesWithGlslang) {
             const std::size_t n = variants.size();
             for (std::size_t i = 0; i < n; ++i) variants.push_back(variants[i] + "#define OCEAN_FLAT_MIRROR 1\n");
         }
+        // And its smooth-mirror program (OCEAN_SMOOTH_MIRROR 1: the whole reflected sky from the grid).
+        if (expanded.text.find("#if OCEAN_SMOOTH_MIRROR") != std::string::npos) {
+            const std::size_t n = variants.size();
+            for (std::size_t i = 0; i < n; ++i) variants.push_back(variants[i] + "#define OCEAN_SMOOTH_MIRROR 1\n");
+        }
         // The sea reflection's spread and its every-pixel list (src/render/renderer.cpp: the modes of seaReflection_).
         if (expanded.text.find("#if SEA_REFLECTION_COMPOSE") != std::string::npos) {
             const std::size_t n = variants.size();

@@ -34,6 +34,6 @@ void main() {
     teDirection = v;
     teOffset = dv;
     teGridReflection = mix(mix(tcGridReflection[0], tcGridReflection[1], uv.x),
-                            mix(tcGridReflection[3], tcGridReflection[2], uv.x), uv.y);
+                           mix(tcGridReflection[3], tcGridReflection[2], uv.x), uv.y);
     gl_Position = frame.clipFromView * (frame.viewFromWorld * vec4(tePosition, 1.0));
 }
