@@ -22,6 +22,8 @@ const int BUFFER_CLOUD_STATISTICS = 4;  // the sky pass's march step counts, whe
 const int BUFFER_SKY_REFINE = 5;    // the pixels the temporal reconstruction marks for a full-rate march (render/pixel_list.glsl)
 const int BUFFER_SEA_REFLECTION_LIST = 6;  // the sea's pixels that march their own reflection (ocean/sea_reflection.frag)
 const int BUFFER_TERRAIN_REFLECTION_LIST = 7;  // the sea's pixels that may reflect the terrain (ocean/terrain_reflection.glsl)
+const int BUFFER_OCEAN_GRID_POINTS = 8;      // the ocean grid's coordinates, a vec2 per point (src/grid/grid_mesh.h)
+const int BUFFER_OCEAN_GRID_REFLECTION = 9;  // the reflection at each of them (ocean/grid_reflection.comp)
 
 // Image units (the passes that store into a frame target from a compute shader).
 const int IMAGE_HDR_RADIANCE = 0;   // RGBA16F radiance arriving at the camera

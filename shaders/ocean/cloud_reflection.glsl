@@ -53,3 +53,4 @@ vec3 SeaReflectedRay(vec3 view, vec3 normal, vec3 up) {
     vec3 reflected = reflect(view, normal);
     return normalize(reflected + up * max(0.0, 0.01 - dot(reflected, up)));
 }
+

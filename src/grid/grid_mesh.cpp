@@ -141,9 +141,11 @@ void GridMesh::setProjection(const GridBlock& block) {
     glNamedBufferSubData(block_.id(), 0, sizeof block, &block);
 }
 
+void GridMesh::bindBlock() const { glBindBufferBase(GL_UNIFORM_BUFFER, binding::BLOCK_GRID, block_.id()); }
+
 void GridMesh::draw(int first, int count) const {
     if (count <= 0) return;
-    glBindBufferBase(GL_UNIFORM_BUFFER, binding::BLOCK_GRID, block_.id());
+    bindBlock();
     glBindVertexArray(vertexArray_.id());
     glPatchParameteri(GL_PATCH_VERTICES, 4);
     const auto offset = [](int patch) { return reinterpret_cast<const void*>(static_cast<std::uintptr_t>(patch) * 4 * sizeof(GLuint)); };

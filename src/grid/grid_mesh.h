@@ -64,6 +64,12 @@ public:
     void draw() const { draw(0, patchCount()); }
     void draw(int first, int count) const;
     int patchCount() const { return size_ > 1 ? (size_ - 1) * (size_ - 1) : 0; }
+    // The grid's points: size x size coordinates (vec2), index j * size + i, as the vertex stage
+    // reads them (gl_VertexID), for a compute pass that works per point; and the grid's block at
+    // BLOCK_GRID for it.
+    int pointCount() const { return size_ * size_; }
+    const gl::Buffer& points() const { return vertices_; }
+    void bindBlock() const;
     // NearFirst's rings (empty in row order).
     const std::vector<PatchRing>& rings() const { return rings_; }
 

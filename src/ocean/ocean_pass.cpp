@@ -18,12 +18,15 @@ double seaRadiusM(const Scene& scene) { return scene.planetRadiusM() + scene.oce
 
 // The program's modes (AtmosphereProgram), by their index in get().
 constexpr int kFlatMirrorMode = 1, kUnderWaterMode = 2, kSmoothMirrorMode = 3;
+constexpr int kGridReflectionGroup = 64;  // ocean/grid_reflection.comp's local_size_x
 }  // namespace
 
 OceanPass::OceanPass(const gl::ShaderSources& sources, const atmosphere::TableSizes& tables)
     : program_(sources, tables,
                gl::ProgramDesc{"ocean", {"ocean/ocean.vert", "ocean/ocean.tesc", "ocean/ocean.tese", "ocean/ocean.frag"}},
-               {"OCEAN_FLAT_MIRROR", "UNDER_WATER", "OCEAN_SMOOTH_MIRROR"}) {
+               {"OCEAN_FLAT_MIRROR", "UNDER_WATER", "OCEAN_SMOOTH_MIRROR"}),
+      gridReflectionProgram_(sources, tables, gl::ProgramDesc{"ocean grid reflection", {"ocean/grid_reflection.comp"}},
+                             {"OCEAN_FLAT_MIRROR", "OCEAN_SMOOTH_MIRROR"}) {
     waves_.label("ocean waves");
     glNamedBufferStorage(block_.id(), sizeof(ocean::OceanBlock), nullptr, GL_DYNAMIC_STORAGE_BIT);
     block_.label("OceanBlock");
@@ -83,6 +86,29 @@ void OceanPass::prepare(const Scene& scene, const Camera& camera, double radians
 
 void OceanPass::bindBlock() const { glBindBufferBase(GL_UNIFORM_BUFFER, binding::BLOCK_OCEAN, block_.id()); }
 
+std::vector<gl::HotProgram*> OceanPass::builtPrograms() {
+    std::vector<gl::HotProgram*> programs;
+    for (AtmosphereProgram* a : atmospherePrograms())
+        for (gl::HotProgram* p : a->built()) programs.push_back(p);
+    return programs;
+}
+
+void OceanPass::formGridReflection(bool elekTable) {
+    const int points = mesh_.pointCount();
+    if (points != gridReflectionPoints_) {
+        gridReflection_ = gl::Buffer();
+        glNamedBufferStorage(gridReflection_.id(), static_cast<GLsizeiptr>(points) * 4 * GLsizeiptr(sizeof(float)), nullptr, 0);
+        gridReflection_.label("ocean grid reflection");
+        gridReflectionPoints_ = points;
+    }
+    mesh_.bindBlock();
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding::BUFFER_OCEAN_GRID_POINTS, mesh_.points().id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding::BUFFER_OCEAN_GRID_REFLECTION, gridReflection_.id());
+    glUseProgram(gridReflectionProgram_.get(elekTable, false, smoothMirror_ ? 2 : 1).id());  // its modes' order
+    glDispatchCompute(static_cast<GLuint>((points + kGridReflectionGroup - 1) / kGridReflectionGroup), 1, 1);
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+}
+
 void OceanPass::draw(bool elekTable, bool underWater) {
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding::BUFFER_OCEAN_WAVES, waves_.id());
     bindBlock();
@@ -91,6 +117,7 @@ void OceanPass::draw(bool elekTable, bool underWater) {
     glDepthMask(GL_TRUE);
     glDisable(GL_CULL_FACE);  // the surface is seen from below too
     const int mode = underWater ? kUnderWaterMode : smoothMirror_ ? kSmoothMirrorMode : flatMirror_ ? kFlatMirrorMode : 0;
+    if (mode == kFlatMirrorMode || mode == kSmoothMirrorMode) formGridReflection(elekTable);
     glUseProgram(program_.get(elekTable, false, mode).id());
     if (countPrimitives_) glBeginQuery(GL_PRIMITIVES_GENERATED, primitives_.id());
     mesh_.draw();

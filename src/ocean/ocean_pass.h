@@ -53,6 +53,10 @@ public:
     void bindBlock() const;
 
     AtmosphereProgram& program() { return program_; }
+    // Its programs that read the atmosphere's tables (the sea's, and the grid's reflection), and
+    // those of their variants built so far (hot reload).
+    std::vector<AtmosphereProgram*> atmospherePrograms() { return {&program_, &gridReflectionProgram_}; }
+    std::vector<gl::HotProgram*> builtPrograms();
 
     // The program's mode OCEAN_FLAT_MIRROR (the clouds' share of the reflection from the grid's
     // points) where the sea is a flat mirror to every pixel, and OCEAN_SMOOTH_MIRROR (all of the
@@ -79,11 +83,18 @@ public:
 
 private:
     void uploadWaves(const Scene& scene, const Camera& camera);
+    // ocean/grid_reflection.comp over the grid's points, for the program in the flat or smooth mode.
+    void formGridReflection(bool elekTable);
 
     AtmosphereProgram program_;  // modes OCEAN_FLAT_MIRROR, UNDER_WATER (the surface seen from below), OCEAN_SMOOTH_MIRROR
     FlatMirror flatMirrorMode_ = FlatMirror::Auto;
     bool flatMirror_ = false;
     bool smoothMirror_ = false;
+    // ocean/grid_reflection.comp (modes OCEAN_FLAT_MIRROR, OCEAN_SMOOTH_MIRROR) and its output, a
+    // vec4 per grid point, read by the vertex stage where the sea is a flat or smooth mirror.
+    AtmosphereProgram gridReflectionProgram_;
+    gl::Buffer gridReflection_;
+    int gridReflectionPoints_ = 0;
     GridMesh mesh_{"ocean"};
     gl::Buffer waves_;
     gl::Buffer block_;  // OceanBlock

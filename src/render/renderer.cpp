@@ -221,7 +221,7 @@ std::vector<Renderer::Pass> Renderer::makePasses() {
                           ocean_.draw(s.atmosphere.elek_3d_table, lastPrepare_.underWater);
                           glEndQuery(GL_ANY_SAMPLES_PASSED);
                       },
-                      [this] { return ocean_.program().built(); }});
+                      [this] { return ocean_.builtPrograms(); }});
     // The terrain in the sea's reflection: searched at the pixels where the ocean found that land
     // may lie within the reflected ray's reach (ocean/terrain_reflection.glsl), a fifth of the sea
     // from orbit, and only where some ground above the sea is on screen.
@@ -566,8 +566,11 @@ bool Renderer::matchAtmosphereTables() {
     surfaceLight_.program().setSources(withAtmosphere(sources_, sizes));
     terrainShadow_.program().setSources(withAtmosphere(sources_, sizes));
     std::vector<gl::HotProgram*> rebuilt{&terrainShadow_.program(), &surfaceLight_.program()};
-    for (AtmosphereProgram* p : {&ocean_.program(), &seaReflection_, &seaReflectionListed_, &terrainReflectionList_,
-                                 &terrainReflection_, &sky_, &skySparse_, &skyTemporal_, &skyRefine_}) {
+    std::vector<AtmosphereProgram*> withTables = ocean_.atmospherePrograms();
+    for (AtmosphereProgram* p : {&seaReflection_, &seaReflectionListed_, &terrainReflectionList_, &terrainReflection_,
+                                 &sky_, &skySparse_, &skyTemporal_, &skyRefine_})
+        withTables.push_back(p);
+    for (AtmosphereProgram* p : withTables) {
         p->setTableSizes(sizes);
         const std::vector<gl::HotProgram*> built = p->built();
         rebuilt.insert(rebuilt.end(), built.begin(), built.end());
