@@ -191,26 +191,37 @@ float terrainMountainsGradFiltered(vec3 p, int octaves, float ridgedWeight, floa
         fbmShare * fbmShare * TERRAIN_FBM_OCTAVE_VARIANCE + ridgedWeight * ridgedWeight * TERRAIN_RIDGED_OCTAVE_VARIANCE;
     float octaveGradientMs = fbmShare * fbmShare * TERRAIN_FBM_OCTAVE_GRADIENT_MS +
                              ridgedWeight * ridgedWeight * TERRAIN_RIDGED_OCTAVE_GRADIENT_MS;
+    // The octaves the footprint shows (fade > 0) come first, each finer one fading sooner: their
+    // noise is evaluated in a loop of their own, so that a group of pixels that shows none (from
+    // orbit) takes no noise at all (a software renderer runs an if's code for every pixel, masked,
+    // but leaves a loop that none of them enters); the rest add their mean and variance alone.
+    int shown = 0;
+    for (float f = 1.0f; shown < count && terrainOctaveFade(footprint * f) > 0.0f; f *= 2.0f) shown++;
     float sum = 0.0f;
     float total = 0.0f;
     float amplitude = 1.0f;
     float frequency = 1.0f;
-    for (int k = 0; k < 10; k++) {
-        if (k >= count) break;
+    int k = 0;
+    for (; k < shown; k++) {
         float fade = terrainOctaveFade(footprint * frequency);
-        float value = octaveMean;
-        if (fade > 0.0f) {
-            vec3 g;
-            float n = simplexNoiseGrad(p * frequency, g);
-            float slope;
-            float octaveValue = terrainMountainOctave(n, ridgedWeight, slope);
-            value = fade * octaveValue + (1.0f - fade) * octaveMean;
-            gradient += (fade * amplitude * frequency * slope) * g;
-        }
+        vec3 g;
+        float n = simplexNoiseGrad(p * frequency, g);
+        float slope;
+        float octaveValue = terrainMountainOctave(n, ridgedWeight, slope);
+        float value = fade * octaveValue + (1.0f - fade) * octaveMean;
+        gradient += (fade * amplitude * frequency * slope) * g;
         float hidden = 1.0f - fade * fade;  // the share of this octave's variance the footprint averages away
         variance += hidden * amplitude * amplitude * octaveVariance;
         gradientVariance += hidden * amplitude * amplitude * frequency * frequency * octaveGradientMs;
         sum += amplitude * value;
+        total += amplitude;
+        frequency *= 2.0f;
+        amplitude *= 0.5f;
+    }
+    for (; k < count; k++) {  // not shown: the mean, all of the variance hidden
+        variance += amplitude * amplitude * octaveVariance;
+        gradientVariance += amplitude * amplitude * frequency * frequency * octaveGradientMs;
+        sum += amplitude * octaveMean;
         total += amplitude;
         frequency *= 2.0f;
         amplitude *= 0.5f;
