@@ -18,6 +18,7 @@ double seaRadiusM(const Scene& scene) { return scene.planetRadiusM() + scene.oce
 
 // The program's modes (AtmosphereProgram), by their index in get().
 constexpr int kFlatMirrorMode = 1, kUnderWaterMode = 2, kSmoothMirrorMode = 3;
+constexpr int kGridFlatMirrorMode = 1, kGridSmoothMirrorMode = 2;  // the grid reflection program's modes
 constexpr int kGridReflectionGroup = 64;  // ocean/grid_reflection.comp's local_size_x
 }  // namespace
 
@@ -104,7 +105,7 @@ void OceanPass::formGridReflection(bool elekTable) {
     mesh_.bindBlock();
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding::BUFFER_OCEAN_GRID_POINTS, mesh_.points().id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding::BUFFER_OCEAN_GRID_REFLECTION, gridReflection_.id());
-    glUseProgram(gridReflectionProgram_.get(elekTable, false, smoothMirror_ ? 2 : 1).id());  // its modes' order
+    glUseProgram(gridReflectionProgram_.get(elekTable, false, smoothMirror_ ? kGridSmoothMirrorMode : kGridFlatMirrorMode).id());
     glDispatchCompute(static_cast<GLuint>((points + kGridReflectionGroup - 1) / kGridReflectionGroup), 1, 1);
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
 }
