@@ -90,6 +90,13 @@ namespace {
 
 constexpr glm::ivec2 kSize{320, 180};
 
+// Prints how `test` differs from its reference, for the tolerances' record.
+void printComparison(const std::string& view, const char* what, const ImageComparison& c) {
+    std::printf("%-6s %s: mean %.4f %%, p99 %.3f %%, max %.3f %%, mean luminance %+.4f %%\n", view.c_str(), what,
+                100.0 * c.meanRelativeError, 100.0 * c.errorPercentile(99.0), 100.0 * c.maxRelativeError,
+                100.0 * c.meanLuminanceDifference);
+}
+
 class FlatMirrorFrame : public test::GLTest {
 protected:
     void SetUp() override {
@@ -121,10 +128,7 @@ TEST_F(FlatMirrorFrame, FromOrbitTheGridsCloudsMatchEveryPixelsOwnMarch) {
         const ImageRGBAF forced = render(view, OceanPass::FlatMirror::On);
         EXPECT_TRUE(renderer->ocean().flatMirror()) << view;
         const ImageComparison c = compareImages(forced, marched);
-        std::printf("%-6s flat mirror against the per-pixel march: mean %.3f %%, p99 %.3f %%, max %.3f %%, "
-                    "mean luminance %+.3f %%\n",
-                    view.c_str(), 100.0 * c.meanRelativeError, 100.0 * c.errorPercentile(99.0),
-                    100.0 * c.maxRelativeError, 100.0 * c.meanLuminanceDifference);
+        printComparison(view, "flat mirror against the per-pixel march", c);
         EXPECT_EQ(c.nonFinitePixels, 0u);
         EXPECT_LT(c.meanRelativeError, 0.002) << view;
         EXPECT_LT(c.errorPercentile(99.0), 0.03) << view;
@@ -148,10 +152,7 @@ TEST_F(FlatMirrorFrame, FromHighUpTheGridsWholeReflectionMatchesEachPixelsOwnSky
         const ImageRGBAF smooth = render(view, OceanPass::FlatMirror::Smooth);
         EXPECT_EQ(automatic.pixels, smooth.pixels) << view;
         const ImageComparison c = compareImages(smooth, flat);
-        std::printf("%-6s smooth mirror against the flat mirror: mean %.4f %%, p99 %.3f %%, max %.3f %%, "
-                    "mean luminance %+.4f %%\n",
-                    view.c_str(), 100.0 * c.meanRelativeError, 100.0 * c.errorPercentile(99.0),
-                    100.0 * c.maxRelativeError, 100.0 * c.meanLuminanceDifference);
+        printComparison(view, "smooth mirror against the flat mirror", c);
         EXPECT_EQ(c.nonFinitePixels, 0u);
         EXPECT_LT(c.meanRelativeError, 2e-4) << view;
         EXPECT_LT(c.errorPercentile(99.0), 3e-3) << view;

@@ -261,11 +261,26 @@ TEST_F(OceanReflections, TheLakeMirrorsTheMountainsWhereTheMirrorRayMeetsThem) {
     EXPECT_LT(worstSky, 0.05);
 }
 
+namespace {
+
+// One frame of `s` with the shader tree `shaders`: the terrain reflection's list and the image.
+struct ListedFrame {
+    std::size_t listed = 0;
+    ImageRGBAF image;
+};
+ListedFrame renderListed(const fs::path& shaders, const Session& s) {
+    Renderer r(shaders, atmosphere::TableSizes::reduced(), s.continents);
+    r.render(s.scene, s.camera, kSize);
+    return {r.targets().readTerrainReflectionList().size(), readTextureRGBAF(r.targets().hdr(), kSize.x, kSize.y)};
+}
+
 // The shader tree where rays whose reach spans under a pixel are searched too.
 fs::path shadersWithoutPixelReach() {
     return test::shadersWith("planet_test_ssr_pixel_reach_off", "ocean/screen_space_reflections.glsl",
                              "#define TERRAIN_REFLECTION_PIXEL_REACH 1", "#define TERRAIN_REFLECTION_PIXEL_REACH 0");
 }
+
+}  // namespace
 
 // The terrain reflection pass searches only the sea pixels where land may lie within the
 // reflected ray's reach (shaders/ocean/screen_space_reflections.glsl's terrainMayBeReflected,
@@ -289,14 +304,10 @@ TEST_F(OceanReflections, OnlyPixelsWithLandWithinReachAreSearchedAndThatChangesN
     for (const Case& c : {Case{"orbit", 0.25}, Case{"space", 0.5}, Case{"beach", 1.0}, Case{"sea", 0.0}}) {
         SCOPED_TRACE(c.view);
         const Session s = loadSession(test::repoPaths(), "earth", c.view);
-        Renderer bounded(withoutPixelReach, atmosphere::TableSizes::reduced(), s.continents);
-        bounded.render(s.scene, s.camera, kSize);
-        const std::size_t listed = bounded.targets().readTerrainReflectionList().size();
-        const ImageRGBAF image = readTextureRGBAF(bounded.targets().hdr(), kSize.x, kSize.y);
-        Renderer every(searchAll, atmosphere::TableSizes::reduced(), s.continents);
-        every.render(s.scene, s.camera, kSize);
-        const std::size_t all = every.targets().readTerrainReflectionList().size();
-        const ImageComparison cmp = compareImages(image, readTextureRGBAF(every.targets().hdr(), kSize.x, kSize.y));
+        const ListedFrame bounded = renderListed(withoutPixelReach, s);
+        const ListedFrame every = renderListed(searchAll, s);
+        const std::size_t listed = bounded.listed, all = every.listed;
+        const ImageComparison cmp = compareImages(bounded.image, every.image);
         std::printf("%s: %zu of %zu sea pixels searched; max change %.3g %%\n", c.view, listed, all,
                     100.0 * cmp.maxRelativeError);
         EXPECT_GT(all, std::size_t(kSize.x * kSize.y / 10));  // the sea is in view
@@ -321,11 +332,10 @@ TEST_F(OceanReflections, RaysWhoseReachSpansUnderAPixelAreNotSearched) {
         Renderer withRule(test::repoPaths().shaders(), atmosphere::TableSizes::reduced(), s.continents);
         withRule.render(s.scene, s.camera, kSize);
         const std::size_t listed = withRule.targets().readTerrainReflectionList().size();
-        const ImageRGBAF image = readTextureRGBAF(withRule.targets().hdr(), kSize.x, kSize.y);
-        Renderer without(withoutPixelReach, atmosphere::TableSizes::reduced(), s.continents);
-        without.render(s.scene, s.camera, kSize);
-        const std::size_t listedWithout = without.targets().readTerrainReflectionList().size();
-        const ImageComparison cmp = compareImages(image, readTextureRGBAF(without.targets().hdr(), kSize.x, kSize.y));
+        const ListedFrame without = renderListed(withoutPixelReach, s);
+        const std::size_t listedWithout = without.listed;
+        const ImageComparison cmp =
+            compareImages(readTextureRGBAF(withRule.targets().hdr(), kSize.x, kSize.y), without.image);
         const auto over = std::count_if(cmp.relativeError.begin(), cmp.relativeError.end(),
                                         [](float e) { return e > 1e-3f; });
         std::printf("%s: %zu searched, %zu without the rule; mean change %.4f %%, max %.3g %% (%td pixels over 0.1 %%)\n",
