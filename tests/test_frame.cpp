@@ -306,6 +306,8 @@ TEST_F(FrameTest, BlockMirrorsMatchTheDriversLayoutAndBindings) {
     EXPECT_EQ(grid.binding, binding::BLOCK_GRID);
     EXPECT_EQ(grid.size, static_cast<GLint>(sizeof(GridBlock)));
     EXPECT_EQ(memberOffset(p, "GridBlock.exponent"), static_cast<GLint>(offsetof(GridBlock, exponent)));
+    EXPECT_EQ(memberOffset(p, "GridBlock.pointsPerSide"), static_cast<GLint>(offsetof(GridBlock, pointsPerSide)));
+    EXPECT_EQ(memberOffset(p, "GridBlock.stride"), static_cast<GLint>(offsetof(GridBlock, stride)));
 }
 
 TEST(FrameSources, AerialPerspectiveIsComputedInOneShaderFunctionCalledFromOnePass) {

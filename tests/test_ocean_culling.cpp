@@ -104,7 +104,7 @@ TEST_F(OceanCulling, WhereTheWavesCannotShowTheSeaTakesLargerTriangles) {
     // view's foreground) the waves show and the mesh stays as fine. Against the same shaders with
     // the factor at 1 (the fixed target).
     const std::filesystem::path fixedTarget =
-        test::shadersWith("planet_ocean_fixed_target", "ocean/ocean.tesc", "const float OCEAN_FAR_EDGE_FACTOR = 4.0;",
+        test::shadersWith("planet_ocean_fixed_target", "ocean/edge_target.glsl", "const float OCEAN_FAR_EDGE_FACTOR = 4.0;",
                           "const float OCEAN_FAR_EDGE_FACTOR = 1.0;");
     Renderer fixed(fixedTarget, atmosphere::TableSizes::reduced());
     // At 160x90 the grid's patches from orbit span under 8 pixels: already one triangle pair each.
@@ -127,11 +127,12 @@ TEST_F(OceanCulling, WhereTheWavesCannotShowTheSeaTakesLargerTriangles) {
                     view.c_str(), fine, coarse, 100 * c.meanRelativeError, 100 * c.errorPercentile(99),
                     100 * c.maxRelativeError);
         EXPECT_GT(fine, 0) << view;
-        // Measured on llvmpipe at 640x360: orbit 36640 -> 3832 (frame mean 0.017 %, p99 0.36 %),
-        // space 31074 -> 12482 (0.004 %; many of its patches were one pair already), sea 117970
-        // -> 99992 (the far sea; 0.0000 %).
+        // Measured on llvmpipe at 640x360, with the grids' stride from high up (src/grid/grid_stride.h):
+        // orbit 20426 -> 4666 (frame mean 0.005 %, p99 0.09 %), space 10416 -> 6408 (0.008 %; the
+        // limb's band keeps a segment per grid cell either way), sea 117970 -> 99992 (the far sea;
+        // 0.0000 %). Before the stride: orbit 36640 -> 3832, space 31074 -> 12482.
         if (view == "sea") EXPECT_GT(coarse, fine / 2) << "the near sea keeps its fine mesh";
-        else EXPECT_LT(coarse, view == "orbit" ? fine / 4 : fine / 2) << view;
+        else EXPECT_LT(coarse, view == "orbit" ? fine / 4 : fine * 3 / 4) << view;
         EXPECT_LT(c.meanRelativeError, 0.001) << view;
         EXPECT_LT(c.errorPercentile(99), 0.01) << view;
     }

@@ -157,7 +157,7 @@ TEST(TerrainDetailRings, EveryPatchAfterTheDetailsRingsIsBeyondItsRange) {
             const glm::dvec3 side = glm::normalize(glm::cross(camera.position, glm::dvec3(0.0, 0.0, 1.0)));
             camera.position += side * (roam * 0.999 * anchorThresholdM(params, altitude));
             const GridProjection projection = gridProjection(anchor, radius, maxHeight);
-            const GridBlock block = makeGridBlock(projection, params.exponent, camera.position, radius);
+            const GridBlock block = makeGridBlock(projection, params.exponent, camera.position, radius, params.size);
             const int count = TerrainPass::detailPatchCount(rings, (N - 1) * (N - 1), N, block, range);
             // The rings drawn with the detail: those that end at `count`.
             glm::ivec2 low(0), high(N - 1);

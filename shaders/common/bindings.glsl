@@ -23,13 +23,13 @@ const int BUFFER_SKY_REFINE = 5;    // the pixels the temporal reconstruction ma
 const int BUFFER_SEA_REFLECTION_LIST = 6;  // the sea's pixels that march their own reflection (ocean/sea_reflection.frag)
 const int BUFFER_TERRAIN_REFLECTION_LIST = 7;  // the sea's pixels that may reflect the terrain (ocean/terrain_reflection.glsl)
 const int BUFFER_OCEAN_GRID_POINTS = 8;      // the ocean grid's coordinates, a vec2 per point (src/grid/grid_mesh.h)
-const int BUFFER_OCEAN_GRID_REFLECTION = 9;  // the reflection at each of them (ocean/grid_reflection.comp)
 
 // Image units (the passes that store into a frame target from a compute shader).
 const int IMAGE_HDR_RADIANCE = 0;   // RGBA16F radiance arriving at the camera
 const int IMAGE_SKY_MEDIUM = 1;     // RGBA32UI the sky passes' T, S and samples (render/sky_medium.glsl)
 const int IMAGE_SURFACE_RADIANCE = 2;  // RGBA16F radiance leaving the surface (ocean/sea_reflection.comp adds to it)
 const int IMAGE_SEA_REFLECTION = 3;    // RGBA32F the sea's reflected ray and weight (ocean/terrain_reflection.comp lowers it)
+const int IMAGE_OCEAN_GRID_REFLECTION = 4;  // RGBA32F N x N: the reflection at the ocean grid's points (ocean/grid_reflection.comp)
 
 // Texture units.
 const int UNIT_GBUFFER_NORMAL = 0;          // RGBA16F world normal
@@ -61,3 +61,4 @@ const int UNIT_TERRAIN_SHADOW = 25;         // RG32F, half size: the terrain sha
 const int UNIT_SEA_REFLECTION = 21;         // RGBA32F: the sea's reflected ray and the clouds' weight there (ocean/ocean.frag)
 const int UNIT_SEA_SKY_REFLECTION = 28;     // RGBA32F: the sky the sea reflected where the terrain may be reflected, its distance (ocean/ocean.frag)
 const int UNIT_SEA_REFLECTION_SAMPLES = 27; // RGBA16F, half size: the clouds' change to the sea's reflection (ocean/sea_reflection.frag)
+const int UNIT_OCEAN_GRID_REFLECTION = 29;  // RGBA32F N x N, bilinear: the reflection at the ocean grid's points (ocean/ocean.frag)

@@ -3,13 +3,43 @@
 // frustum. Include after common/frame_uniforms.glsl.
 const float FRUSTUM_WIDENING = 1.2;  // culling planes 20 % wider than the view
 const float MAX_TESSELLATION_LEVEL = 64.0;
+// The most a segment's chord of the sphere may sag, in pixels where it is nearest: at the limb
+// the sag is seen edge-on, and the silhouette recedes by it.
+const float MAX_SAG_PIXELS = 0.25;
 
 // Level for the edge between two camera-relative points: its angular size seen from the
-// nearer end, in units of targetPixels. Depends on the two points only, so patches sharing
-// the edge agree (no cracks).
-float edgeLevel(vec3 a, vec3 b, float targetPixels) {
-    float angle = length(a - b) / max(min(length(a), length(b)), 1e-3);
-    return clamp(angle / radiansPerPixel() / targetPixels, 1.0, MAX_TESSELLATION_LEVEL);
+// nearer end, in units of targetPixels, and at least enough segments that each one's chord of
+// the sphere sags (length^2 / 8r) under MAX_SAG_PIXELS there and under maxSagM. The first sag
+// bound binds only far away at a low resolution, where a pixel is tens of kilometres (from
+// space at 160x90 the limb's 32-pixel chords of the sea sagged 3.5 pixels: segments of at most
+// 8.6 pixels there, 24 from space at 1280x720). Depends on the two points only, so patches
+// sharing the edge agree (no cracks).
+float edgeSegments(vec3 a, vec3 b, float targetPixels, float maxSagM) {  // unclamped
+    float nearest = max(min(length(a), length(b)), 1e-3);
+    float chord = length(a - b);
+    float sag = min(MAX_SAG_PIXELS * nearest * radiansPerPixel(), maxSagM);
+    return max(chord / nearest / radiansPerPixel() / targetPixels, chord / sqrt(8.0 * frame.planetRadius * sag));
+}
+float edgeLevel(vec3 a, vec3 b, float targetPixels, float maxSagM) {
+    return clamp(edgeSegments(a, b, targetPixels, maxSagM), 1.0, MAX_TESSELLATION_LEVEL);
+}
+
+// Segments a grid cell's edge keeps in a stride's patch where the sphere is seen nearly edge-on
+// (either end within LIMB_COSINE of it, the view ray against the vertical): one, as each cell
+// is a patch of its own at stride 1. There the chords' sag shows as the silhouette itself, and
+// under even a quarter of a pixel of it the limb's pixel centres fell outside the planet (from
+// orbit at 160x90, 20 of some 160 along the limb; RenderTest.TerrainLeavesNoHolesWhereTheGroundMustBe).
+const float LIMB_COSINE = 0.1;
+float limbCellSegments(vec3 a, vec3 b) {
+    float cosA = abs(dot(normalize(a), normalize(a - frame.planetCenterFromCamera)));
+    float cosB = abs(dot(normalize(b), normalize(b - frame.planetCenterFromCamera)));
+    return min(cosA, cosB) < LIMB_COSINE ? 1.0 : 0.0;
+}
+
+// The camera-relative point on the sphere of radius `radius` at place c of `cells` from grid
+// point `a` to grid point `b` (indices; one row or column of the grid).
+vec3 gridLinePoint(ivec2 a, ivec2 b, int c, int cells, double radius) {
+    return cameraRelative(gridDirection(gridCoordinateAt(mix(vec2(a), vec2(b), float(c) / float(cells)))), radius);
 }
 
 // True when all eight camera-relative corners of a patch's bounding shell lie outside one
@@ -41,9 +71,23 @@ void setQuadLevelsFromEdges(float edge03, float edge01, float edge12, float edge
 }
 
 // Quad levels from the four corners' sizes on screen.
-void setQuadLevels(vec3 p[4], float targetPixels) {
-    setQuadLevelsFromEdges(edgeLevel(p[0], p[3], targetPixels), edgeLevel(p[0], p[1], targetPixels),
-                           edgeLevel(p[1], p[2], targetPixels), edgeLevel(p[3], p[2], targetPixels));
+void setQuadLevels(vec3 p[4], float targetPixels, float maxSagM) {
+    setQuadLevelsFromEdges(edgeLevel(p[0], p[3], targetPixels, maxSagM), edgeLevel(p[0], p[1], targetPixels, maxSagM),
+                           edgeLevel(p[1], p[2], targetPixels, maxSagM), edgeLevel(p[3], p[2], targetPixels, maxSagM));
+}
+
+// How far a patch's surface can bulge out of its corners' shell: the sphere between corners
+// `diagonal` apart rises above their chord by about diagonal^2 / 8r (with stride patches
+// (grid/grid_stride.h) from space, kilometres; under a metre for a stride-1 patch near the
+// ground), so a culling shell is widened by it. m, for the grid sphere's radius in m.
+float patchBulgeM(vec3 p[4], float radius) {
+    float diagonal = max(length(p[0] - p[2]), length(p[1] - p[3]));
+    return diagonal * diagonal / (8.0 * radius);
+}
+
+// The shell's outer corners (corners[4..7]) raised by `bulge` m along the vertical.
+void raiseOuterCorners(inout vec3 corners[8], float bulge) {
+    for (int i = 4; i < 8; ++i) corners[i] += normalize(corners[i] - frame.planetCenterFromCamera) * bulge;
 }
 
 void cullPatch() {

@@ -22,12 +22,7 @@
 // grid's points form the whole reflection, L_sky + dL_C = MarchView(p, r), and the fragments
 // take it interpolated, with no sky lookup of their own (from space the lookup was a third of
 // the sea's fragment work; the reflected sky varies over the disc, not within a patch).
-#ifndef OCEAN_SMOOTH_MIRROR
-#define OCEAN_SMOOTH_MIRROR 0
-#endif
-#ifndef OCEAN_FLAT_MIRROR
-#define OCEAN_FLAT_MIRROR OCEAN_SMOOTH_MIRROR
-#endif
+#include "ocean/mirror_modes.glsl"
 
 // The reflected ray's march: one slice, a 32nd of the steps, two sun samples and the far field
 // (its few steps would alias the volume; waves and Fresnel blur the reflection anyway).

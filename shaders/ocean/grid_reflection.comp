@@ -12,9 +12,11 @@ layout(local_size_x = 64, local_size_y = 1, local_size_z = 1) in;
 layout(std430, binding = BUFFER_OCEAN_GRID_POINTS) readonly buffer OceanGridPoints {
     vec2 oceanGridPoints[];  // the grid mesh's vertex buffer
 };
+layout(binding = IMAGE_OCEAN_GRID_REFLECTION, rgba32f) uniform writeonly image2D oceanGridReflection;  // texel (i, j): point j N + i
 
 void main() {
     uint i = gl_GlobalInvocationID.x;
     if (i >= uint(oceanGridPoints.length())) return;
-    oceanGridReflection[i] = vec4(GridReflection(oceanGridPoints[i]), 0.0);
+    int n = grid.pointsPerSide;
+    imageStore(oceanGridReflection, ivec2(int(i) % n, int(i) / n), vec4(GridReflection(oceanGridPoints[i]), 0.0));
 }

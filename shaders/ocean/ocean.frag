@@ -42,10 +42,14 @@
 #include "clouds/cloud_march.glsl"
 #include "terrain/grid.glsl"
 #include "ocean/ocean_block.glsl"
+#include "ocean/edge_target.glsl"
 #include "ocean/gerstner.glsl"
 #include "ocean/ocean_waves.glsl"
 #include "ocean/water.glsl"
 #include "ocean/cloud_reflection.glsl"
+#if OCEAN_FLAT_MIRROR
+#include "ocean/grid_reflection_points.glsl"
+#endif
 #include "noise/simplex.glsl"
 #include "terrain/height.glsl"
 #include "terrain/terrain_block.glsl"
@@ -56,7 +60,7 @@
 in vec3 tePosition;
 in vec3 teDirection;
 in vec3 teOffset;
-in vec3 teGridReflection;  // OCEAN_FLAT_MIRROR: dL_C; OCEAN_SMOOTH_MIRROR: L_sky + dL_C (ocean/cloud_reflection.glsl)
+in vec2 teGridPoint;  // the place on the grid in point indices, for the grid's reflection (ocean/grid_reflection_points.glsl)
 
 layout(binding = UNIT_SEABED_DEPTH) uniform sampler2D seabedDepth;         // copy of the G-buffer depth (reversed-Z)
 layout(binding = UNIT_SEABED_RADIANCE) uniform sampler2D seabedRadiance;   // copy of the surface radiance
@@ -81,6 +85,21 @@ layout(depth_greater) out float gl_FragDepth;  // reversed-Z: only ever moved to
 #define UNDER_WATER 0
 #endif
 
+// The distance along the unit `view` (from the camera) to the mean sea surface's sphere, m,
+// where the ray meets it from above; -1 where it does not. In the stable form t = c / (-b +
+// sqrt(b^2 - c)), with c = (|p| - R)(|p| + R) from the camera's height above the sea (formed in
+// double on the CPU), exact to float's rounding from a beach to deep space.
+float seaSphereDistance(vec3 view) {
+    float radius = frame.planetRadius + ocean.seaLevel;
+    float height = frame.cameraAltitude - ocean.seaLevel;
+    if (height <= 0.0) return -1.0;
+    float b = (frame.planetRadius + frame.cameraAltitude) * dot(view, frame.cameraUp);
+    float c = height * (2.0 * radius + height);
+    float discriminant = b * b - c;
+    if (b >= 0.0 || discriminant < 0.0) return -1.0;
+    return c / (-b + sqrt(discriminant));
+}
+
 const float SHORE_FADE_M = 0.5;  // water path over which the sea fades in at the shore
 // Off (0), no foam where the waves break at the shore (tests compare the two).
 #define OCEAN_FOAM 1
@@ -97,12 +116,12 @@ const float SHORE_FADE_M = 0.5;  // water path over which the sea fades in at th
 // the terrain reflection pass's.
 vec3 reflectedSky(vec3 point, vec3 reflected, vec3 sun) {
 #if OCEAN_SMOOTH_MIRROR
-    return teGridReflection;
+    return gridReflectionAt(teGridPoint);
 #else
     vec3 clearTransmittance;
     vec3 radiance = SkyRadiance(point, reflected, sun, clearTransmittance);
 #if OCEAN_FLAT_MIRROR
-    radiance += teGridReflection;
+    radiance += gridReflectionAt(teGridPoint);
 #endif
     return radiance;
 #endif
@@ -120,6 +139,22 @@ void main() {
     float surfaceDistance = length(tePosition);
     vec3 view = tePosition / surfaceDistance;  // camera -> surface
     vec3 up = normalize(teDirection);
+    // From afar the mesh's chords sag below the sea's sphere (see above; from space with the
+    // grid's larger patches, src/grid/grid_stride.h, kilometres), and there no wave shows: the
+    // pixel shows the mean surface where its ray meets the sphere, so its point, its vertical
+    // and the distance the air is taken over are the sphere's, not the chord's. The mesh still
+    // decides which pixels are sea, and their depth. Near the camera the two agree to far below
+    // a millimetre and the mesh's point (with its waves) stays.
+    // How far the meshes may sag below the sphere here (see above), m, and how far that makes
+    // this the far field (below).
+    float sag = meshSagM(surfaceDistance, max(ocean.coarsestEdgePixels, oceanEdgeTargetPixels(surfaceDistance)));
+    float farness = smoothstep(0.05, 0.5, sag);
+    float seaDistance = surfaceDistance;
+    float sphereDistance = seaSphereDistance(view);
+    if (farness > 0.0 && sphereDistance > 0.0) {
+        seaDistance = mix(surfaceDistance, sphereDistance, farness);
+        up = normalize(mix(up, normalize(cameraFromPlanetCentreKm() * M_PER_KM + view * sphereDistance), farness));
+    }
     vec3 sun = frame.sunDirection;
 
     // A pixel's footprint on the sea: its size at this distance, stretched along the view by
@@ -131,9 +166,7 @@ void main() {
     // fails the depth test (the depth only grows from the seabed copy's).
     if (ocean.landCulling != 0 && continentValue(up, uContinents) >= ocean.landContinent) discard;
     float pixelAngle = radiansPerPixel();
-    // How far the meshes may sag below the sphere here (see above), m, and what that means
-    // along this ray.
-    float sag = meshSagM(surfaceDistance, ocean.coarsestEdgePixels);
+    // What the sag means along this ray.
     float cosIncidence = max(abs(dot(view, up)), 0.05);
     vec3 forward = -vec3(frame.worldFromView[2]);
     float pulled = max(dot(tePosition, forward) - 2.0 * sag / cosIncidence * dot(view, forward), frame.nearPlane);
@@ -141,7 +174,7 @@ void main() {
     float seabed = texelFetch(seabedDepth, pixel, 0).r;
     float forwardCos = max(dot(view, forward), 1e-6);
     float seabedDistance = seabed > 0.0 ? viewDistanceFromDepth(seabed) / forwardCos : 1e30;
-    float footprint = surfaceDistance * pixelAngle / max(abs(dot(view, up)), 0.02);
+    float footprint = seaDistance * pixelAngle / max(abs(dot(view, up)), 0.02);
     // Behind the land the depth test would drop this fragment, unless the land is the shore
     // itself, within this pixel's footprint in front of the water (its coverage below).
     bool behindLand = seabed > 0.0 && !(fragmentDepth > seabed);
@@ -160,7 +193,6 @@ void main() {
     // Land: near the camera only where no crest can reach (waves may run up a beach, and the
     // depth test is exact there); where the meshes sag, wherever the terrain is above the sea;
     // less half the pixel's spread, where the pixel still holds some of the water.
-    float farness = smoothstep(0.05, 0.5, sag);
     if (waterDepth < -ocean.maxWaveHeight * (1.0 - farness) - 0.5 * depthSpread) discard;
     // The water's path along the ray, signed (below 0: the land is in front), and the spread
     // as a path: the ray descends sin(elevation) per metre.
@@ -199,8 +231,8 @@ void main() {
     float waterPath = mix(meshPath, depthPath, farness);
     vec3 behind = texelFetch(seabedRadiance, pixel, 0).rgb;
 
-    vec3 point = cameraFromPlanetCentreKm() + tePosition / M_PER_KM;  // km from the planet centre
-    outSurfaceDistance = behindLand ? seabedDistance : surfaceDistance;  // mostly the land's pixel
+    vec3 point = cameraFromPlanetCentreKm() + view * (seaDistance / M_PER_KM);  // km from the planet centre
+    outSurfaceDistance = behindLand ? seabedDistance : seaDistance;  // mostly the land's pixel
     float fresnel = waterFresnel(cosView);
     if (fromBelow) {  // the sky above, through the surface; the water below is the sky pass's
         vec3 skyTransmittance;
@@ -215,8 +247,8 @@ void main() {
     // sea reflection pass (the clouds' change, but as a flat mirror, which has it) and the
     // terrain reflection pass, which searches the terrain where it may be reflected instead.
     outSeaReflection = vec4(reflected, coverage * fresnel);
-    if (terrainMayBeReflected(up, reflected, ocean.seaLevel, surfaceDistance, pixelAngle))
-        outSeaSkyReflection = vec4(sky, surfaceDistance);
+    if (terrainMayBeReflected(up, reflected, ocean.seaLevel, seaDistance, pixelAngle))
+        outSeaSkyReflection = vec4(sky, seaDistance);
     // The sun's visibility from the water's surface (the clouds' shadows and the terrain's, the
     // march starting at sea level, not on the sea floor), formed once for the light into the
     // water and the glitter.

@@ -7,25 +7,26 @@
 #include "terrain/grid.glsl"
 #include "grid/tessellation.glsl"
 #include "ocean/ocean_block.glsl"
+#include "ocean/edge_target.glsl"
 #include "noise/simplex.glsl"
 #include "terrain/height.glsl"
 #include "terrain/terrain_block.glsl"
 
 layout(vertices = 4) out;
 in vec2 vGrid[];
-in vec3 vGridReflection[];
+in ivec2 vPoint[];
 out vec2 tcGrid[];
-out vec3 tcGridReflection[];
+out ivec2 tcPoint[];
 
 // Whether the patch lies over land throughout (src/ocean/land_cull.h): the continent value at
 // its centre, less the map's steepest slope times the patch's angular radius, above the value
 // at which the ground surely stands above the highest crest. The radius is the farthest of the
-// corners and the edges' midpoints on the grid (the grid's lines curve between vertices), times
-// 1.25 for what lies between them.
+// corners, the edges' midpoints and the centre on the grid (the grid's lines curve between
+// vertices; a stride's patch spans several cells), times 1.25 for what lies between them.
 bool overLand(dvec3 directions[4]) {
     if (ocean.landCulling == 0) return false;
     vec3 centre = normalize(vec3(directions[0] + directions[1] + directions[2] + directions[3]));
-    float chord = 0.0;
+    float chord = length(vec3(gridDirection(0.25 * (vGrid[0] + vGrid[1] + vGrid[2] + vGrid[3]))) - centre);
     for (int i = 0; i < 4; ++i) {
         chord = max(chord, length(vec3(directions[i]) - centre));
         vec3 mid = vec3(gridDirection(mix(vGrid[i], vGrid[(i + 1) % 4], 0.5)));
@@ -36,28 +37,34 @@ bool overLand(dvec3 directions[4]) {
     return e - ocean.continentLipschitz * radius > ocean.patchLandContinent;
 }
 
-// Where even the highest crest cannot show (ocean.maxWaveHeight, the sum of the amplitudes, and
-// as much again sideways, under WAVE_VISIBLE_PIXELS on screen at the edge's nearer end), the
-// mesh only has to follow the sphere, and the edge aims at up to OCEAN_FAR_EDGE_FACTOR times
-// ocean.targetEdgePixels (continuously: the factor grows with the distance from where the waves
-// fall under a quarter of a pixel). The normals, and so the light, come from the fragments' own
-// waves (ocean/ocean.frag); a sphere's chord of 32 pixels at the limb from 400 km sags 0.03 pixel.
-// A software renderer shades a 4x4 block of pixels for each triangle that touches it, so 8-pixel
-// triangles cost it about three blocks' pixels for one triangle's (orbit, 1280x720: the ocean's
-// fragments 158 -> 109 ms with 24-pixel triangles). Depends on the edge's two points only, as
-// edgeLevel: neighbouring patches agree.
-const float WAVE_VISIBLE_PIXELS = 0.25;
-const float OCEAN_FAR_EDGE_FACTOR = 4.0;
-float oceanEdgeLevel(vec3 a, vec3 b) {
-    float nearest = max(min(length(a), length(b)), 1e-3);
-    float wavePixels = 2.0 * ocean.maxWaveHeight / nearest / radiansPerPixel();
-    float factor = clamp(WAVE_VISIBLE_PIXELS / max(wavePixels, 1e-9), 1.0, OCEAN_FAR_EDGE_FACTOR);
-    return edgeLevel(a, b, ocean.targetEdgePixels * factor);
+// The edge's level for the target at its nearer end (ocean/edge_target.glsl). Depends on the
+// edge's two points only, as edgeLevel: neighbouring patches agree.
+// No sag bound in metres: far away ocean.frag shades the sphere itself, not the chord.
+const float OCEAN_MAX_SAG_M = 1.0e30;
+float oceanEdgeSegments(vec3 a, vec3 b) {
+    return edgeSegments(a, b, oceanEdgeTargetPixels(max(min(length(a), length(b)), 1e-3)), OCEAN_MAX_SAG_M);
+}
+float oceanEdgeLevel(vec3 a, vec3 b) { return clamp(oceanEdgeSegments(a, b), 1.0, MAX_TESSELLATION_LEVEL); }
+
+// A stride's patch edge: as many segments per cell as its neediest cell asks for on its own
+// (terrain/terrain.tesc's strideEdgeLevel says why).
+float strideEdgeLevel(ivec2 a, ivec2 b) {
+    int cells = max(abs(b.x - a.x), abs(b.y - a.y));
+    double radius = gridSphereRadius();
+    float need = 0.0;
+    vec3 previous = gridLinePoint(a, b, 0, cells, radius);
+    for (int c = 1; c <= cells; ++c) {
+        vec3 next = gridLinePoint(a, b, c, cells, radius);
+        need = max(need, oceanEdgeSegments(previous, next));
+        need = max(need, limbCellSegments(previous, next));
+        previous = next;
+    }
+    return clamp(need * float(cells), 1.0, MAX_TESSELLATION_LEVEL);
 }
 
 void main() {
     tcGrid[gl_InvocationID] = vGrid[gl_InvocationID];
-    tcGridReflection[gl_InvocationID] = vGridReflection[gl_InvocationID];
+    tcPoint[gl_InvocationID] = vPoint[gl_InvocationID];
     if (gl_InvocationID != 0) return;
     vec3 mean[4];
     vec3 corners[8];
@@ -69,10 +76,15 @@ void main() {
         corners[i] = cameraRelative(d, gridSphereRadius() - double(ocean.maxWaveHeight));
         corners[i + 4] = cameraRelative(d, gridSphereRadius() + double(ocean.maxWaveHeight));
     }
+    raiseOuterCorners(corners, patchBulgeM(mean, float(gridSphereRadius())));
     if (outsideFrustum(corners) || overLand(directions)) {
         cullPatch();
         return;
     }
-    setQuadLevelsFromEdges(oceanEdgeLevel(mean[0], mean[3]), oceanEdgeLevel(mean[0], mean[1]),
-                           oceanEdgeLevel(mean[1], mean[2]), oceanEdgeLevel(mean[3], mean[2]));
+    if (grid.stride == 1)
+        setQuadLevelsFromEdges(oceanEdgeLevel(mean[0], mean[3]), oceanEdgeLevel(mean[0], mean[1]),
+                               oceanEdgeLevel(mean[1], mean[2]), oceanEdgeLevel(mean[3], mean[2]));
+    else
+        setQuadLevelsFromEdges(strideEdgeLevel(vPoint[0], vPoint[3]), strideEdgeLevel(vPoint[0], vPoint[1]),
+                               strideEdgeLevel(vPoint[1], vPoint[2]), strideEdgeLevel(vPoint[3], vPoint[2]));
 }

@@ -13,17 +13,22 @@
 
 layout(quads, fractional_odd_spacing, ccw) in;
 in vec2 tcGrid[];
-in vec3 tcGridReflection[];
+in ivec2 tcPoint[];
 out vec3 tePosition;   // camera-relative, m
 out vec3 teDirection;  // unit direction of the undisplaced point
 out vec3 teOffset;     // teDirection - camera direction (gerstner.glsl's dv)
-out vec3 teGridReflection;  // dL_C, or L_sky + dL_C, between the grid points (ocean/cloud_reflection.glsl)
+out vec2 teGridPoint;  // the place on the grid in point indices (i, j), for the grid's reflection (ocean.frag)
 
 #include "terrain/terrain_block.glsl"
 
 void main() {
     vec2 uv = gl_TessCoord.xy;
-    vec2 g = mix(mix(tcGrid[0], tcGrid[1], uv.x), mix(tcGrid[3], tcGrid[2], uv.x), uv.y);
+    // A one-cell patch mixes its corners (as it always has); a stride's patch follows the grid's
+    // warp between its points (ocean.tesc's levels are counted on them), so that the grid's
+    // reflection read at teGridPoint (ocean.frag) is the reflection of this very place.
+    teGridPoint = vec2(tcPoint[0]) + uv * vec2(tcPoint[2] - tcPoint[0]);
+    vec2 g = grid.stride == 1 ? mix(mix(tcGrid[0], tcGrid[1], uv.x), mix(tcGrid[3], tcGrid[2], uv.x), uv.y)
+                              : gridCoordinateAt(teGridPoint);
     dvec3 direction = gridDirection(g);
     vec3 sphere = cameraRelative(direction, gridSphereRadius());
     float vertexSpacing = length(sphere) * radiansPerPixel() * ocean.targetEdgePixels;
@@ -33,7 +38,5 @@ void main() {
     tePosition = sphere + oceanDisplacement(v, dv, vertexSpacing, waterDepth);
     teDirection = v;
     teOffset = dv;
-    teGridReflection = mix(mix(tcGridReflection[0], tcGridReflection[1], uv.x),
-                           mix(tcGridReflection[3], tcGridReflection[2], uv.x), uv.y);
     gl_Position = frame.clipFromView * (frame.viewFromWorld * vec4(tePosition, 1.0));
 }

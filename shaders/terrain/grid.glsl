@@ -14,6 +14,8 @@ layout(std140, binding = BLOCK_GRID) uniform GridBlock {
     dvec4 cameraPositionAndRadius;  // xyz: the camera, world frame, m; w: the grid sphere's radius, m
     double zShift;                  // z_s of Eq. 3
     int exponent;                   // n of Eq. 2
+    int pointsPerSide;              // N: the grid's points are N x N, index j * N + i
+    int stride;                     // cells a patch spans per side (src/grid/grid_stride.h)
 } grid;
 
 dmat3 worldFromGrid() {
@@ -34,6 +36,17 @@ dvec3 gridDirection(vec2 g) {
     double gx = double(g.x), gy = double(g.y);
     double hemisphere = (1.0 - powInt(abs(gx), grid.exponent)) * (1.0 - powInt(abs(gy), grid.exponent));  // Eq. 2
     return normalize(worldFromGrid() * dvec3(gx, gy, hemisphere + grid.zShift));                                 // Eq. 4, 1
+}
+
+// The grid coordinate of a place on the grid given in point indices (i, j), fractional:
+// src/grid/projected_grid.h's gridVertexCoordinate between the points, so a patch of several
+// cells (the grids' stride, src/grid/grid_stride.h) puts its vertices where the grid's own
+// points and their warp put them (at whole indices, on the points exactly).
+const float GRID_CENTRE_DENSITY = 0.05;  // kGridCentreDensity (src/grid/projected_grid.h)
+vec2 gridCoordinateAt(vec2 index) {
+    vec2 g = -1.0 + 2.0 * index / float(grid.pointsPerSide - 1);
+    float m = max(abs(g.x), abs(g.y));
+    return g * (GRID_CENTRE_DENSITY + (1.0 - GRID_CENTRE_DENSITY) * m * (2.0 - m));
 }
 
 // Camera-relative position (m, world axes) of the point at `radius` along a direction.

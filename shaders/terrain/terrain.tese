@@ -10,6 +10,7 @@
 
 layout(quads, fractional_odd_spacing, ccw) in;
 in vec2 tcGrid[];
+in ivec2 tcPoint[];
 out vec3 teDirection;   // unit direction from the planet centre
 out float teHeight;     // m above sea level (negative: under water)
 out vec3 tePointFromCamera;  // m, world axes: the camera-relative position (formed in double)
@@ -18,7 +19,10 @@ out vec3 tePointFromCamera;  // m, world axes: the camera-relative position (for
 
 void main() {
     vec2 uv = gl_TessCoord.xy;
-    vec2 g = mix(mix(tcGrid[0], tcGrid[1], uv.x), mix(tcGrid[3], tcGrid[2], uv.x), uv.y);
+    // A one-cell patch mixes its corners; a stride's patch follows the grid's warp between its
+    // points (terrain.tesc's levels are counted on them).
+    vec2 g = grid.stride == 1 ? mix(mix(tcGrid[0], tcGrid[1], uv.x), mix(tcGrid[3], tcGrid[2], uv.x), uv.y)
+                              : gridCoordinateAt(vec2(tcPoint[0]) + uv * vec2(tcPoint[2] - tcPoint[0]));
     dvec3 direction = gridDirection(g);
     float height = terrainHeight(vec3(direction), terrainShape, uContinents);
     vec3 position = cameraRelative(direction, gridSphereRadius() + double(height));

@@ -12,12 +12,14 @@
 
 layout(location = 0) in vec2 gridCoordinate;
 out vec2 vGrid;
+out ivec2 vPoint;  // the point's indices (i, j): a stride's patch (terrain.tesc, terrain.tese)
 out vec3 vGround;  // m, camera-relative (world axes): the point on the terrain
 out vec3 vLow;     // m, camera-relative: the lowest sea floor below it
 out vec3 vHigh;    // m, camera-relative: the highest possible terrain above it
 
 void main() {
     vGrid = gridCoordinate;
+    vPoint = ivec2(gl_VertexID % grid.pointsPerSide, gl_VertexID / grid.pointsPerSide);
     dvec3 d = gridDirection(gridCoordinate);
     vGround = cameraRelative(d, gridSphereRadius() + double(terrainHeight(vec3(d), terrainShape, uContinents)));
     vLow = cameraRelative(d, gridSphereRadius() - double(terrainShape.oceanDepth));

@@ -6,6 +6,8 @@
 #include <algorithm>
 #include <cstdint>
 #include <cstdlib>
+#include <stdexcept>
+#include <string>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -73,6 +75,22 @@ std::vector<PatchRing> ringsOf(const std::vector<std::vector<PatchBlock>>& ringB
 
 std::vector<PatchRing> nearFirstRings(int size) { return ringsOf(ringBlocks(size), size); }
 
+std::vector<GLuint> stridePatches(int size, int stride) {
+    const int n = size - 1;  // cells per side
+    std::vector<int> starts;
+    for (int first = 0; first < n; first += stride) starts.push_back(first);
+    const auto end = [&](std::size_t b) { return b + 1 < starts.size() ? starts[b + 1] : n; };
+    std::vector<GLuint> patches;
+    patches.reserve(starts.size() * starts.size() * 4);
+    const auto at = [size](int x, int y) { return static_cast<GLuint>(y * size + x); };
+    for (std::size_t bj = 0; bj < starts.size(); ++bj)
+        for (std::size_t bi = 0; bi < starts.size(); ++bi) {
+            const int i0 = starts[bi], i1 = end(bi), j0 = starts[bj], j1 = end(bj);
+            patches.insert(patches.end(), {at(i0, j0), at(i1, j0), at(i1, j1), at(i0, j1)});
+        }
+    return patches;
+}
+
 void GridMesh::setOrder(PatchOrder order) {
     if (order == order_) return;
     order_ = order;
@@ -106,6 +124,10 @@ void GridMesh::resize(int size) {
     }
     vertices_ = gl::Buffer();
     indices_ = gl::Buffer();
+    for (int k = 0; k < 3; ++k) {
+        coarseIndices_[k] = gl::Buffer();
+        coarsePatchCount_[k] = 0;
+    }
     vertexArray_ = gl::VertexArray();
     glNamedBufferStorage(vertices_.id(), static_cast<GLsizeiptr>(coordinates.size() * sizeof(glm::vec2)),
                          coordinates.data(), 0);
@@ -119,15 +141,46 @@ void GridMesh::resize(int size) {
     indices_.label((label_ + " grid patches").c_str());
     vertexArray_.label((label_ + " grid").c_str());
     size_ = size;
+    patchCount_ = (size - 1) * (size - 1);
+    const int stride = stride_;
+    stride_ = 1;
+    setStride(stride);
+}
+
+void GridMesh::setStride(int stride) {
+    if (stride != 1 && stride != 2 && stride != 4 && stride != 8) throw std::invalid_argument("GridMesh: stride 1, 2, 4 or 8");
+    if (size_ < 2) {
+        stride_ = stride;
+        return;
+    }
+    if (stride == stride_) return;
+    stride_ = stride;
+    if (stride == 1) {
+        glVertexArrayElementBuffer(vertexArray_.id(), indices_.id());
+        patchCount_ = (size_ - 1) * (size_ - 1);
+        return;
+    }
+    const int k = stride == 2 ? 0 : stride == 4 ? 1 : 2;
+    if (coarsePatchCount_[k] == 0) {
+        const std::vector<GLuint> patches = stridePatches(size_, stride);
+        glNamedBufferStorage(coarseIndices_[k].id(), static_cast<GLsizeiptr>(patches.size() * sizeof(GLuint)),
+                             patches.data(), 0);
+        coarseIndices_[k].label((label_ + " grid patches, stride " + std::to_string(stride)).c_str());
+        coarsePatchCount_[k] = static_cast<int>(patches.size() / 4);
+    }
+    glVertexArrayElementBuffer(vertexArray_.id(), coarseIndices_[k].id());
+    patchCount_ = coarsePatchCount_[k];
 }
 
 GridBlock makeGridBlock(const GridProjection& projection, int exponent, const glm::dvec3& cameraPosition,
-                        double radius) {
+                        double radius, int pointsPerSide, int stride) {
     GridBlock b{};
     for (int i = 0; i < 3; ++i) b.worldFromGridColumns[i] = glm::dvec4(projection.worldFromGrid[i], 0.0);
     b.cameraPositionAndRadius = glm::dvec4(cameraPosition, radius);
     b.zShift = projection.zShift;
     b.exponent = exponent;
+    b.pointsPerSide = pointsPerSide;
+    b.stride = stride;
     return b;
 }
 

@@ -22,15 +22,18 @@ struct GridBlock {
     glm::dvec4 cameraPositionAndRadius;  // camera (world, m); w: the grid sphere's radius, m
     double zShift;                       // z_s of Eq. 3
     int exponent;                        // n of Eq. 2
-    int padding = 0;                     // to the 16 bytes a std140 block rounds to
+    int pointsPerSide = 0;               // N: the grid's points are N x N, index j * N + i
+    int stride = 1;                      // cells a patch spans per side (GridMesh::setStride)
+    int padding[3] = {0, 0, 0};          // to the 32 bytes a std140 block with a dvec4 rounds to
 };
 static_assert(offsetof(GridBlock, cameraPositionAndRadius) == 96 && offsetof(GridBlock, zShift) == 128 &&
-                  offsetof(GridBlock, exponent) == 136 && sizeof(GridBlock) == 144,
+                  offsetof(GridBlock, exponent) == 136 && offsetof(GridBlock, stride) == 144 &&
+                  sizeof(GridBlock) == 160,
               "GridBlock must match std140 (shaders/terrain/grid.glsl)");
 
 // Eq. 1-4's frame and shift, Eq. 2's n, the camera (world, m) and the sphere's radius (m).
 GridBlock makeGridBlock(const GridProjection& projection, int exponent, const glm::dvec3& cameraPosition,
-                        double radius);
+                        double radius, int pointsPerSide, int stride = 1);
 
 // The order the patches are drawn in. Rows: row by row. NearFirst: ring by ring (of 8 x 8 patch blocks) outwards
 // from the grid's centre, the point below the grid's projection camera (Eq. 2-4), which
@@ -50,6 +53,10 @@ struct PatchRing {
 };
 std::vector<PatchRing> nearFirstRings(int size);
 
+// The patches of stride x stride cells (GridMesh::setStride) of a size x size grid, in row
+// order: four point indices (j * size + i) each, corners (i0, j0), (i1, j0), (i1, j1), (i0, j1).
+std::vector<GLuint> stridePatches(int size, int stride);
+
 class GridMesh {
 public:
     explicit GridMesh(std::string label, PatchOrder order = PatchOrder::Rows);
@@ -57,21 +64,29 @@ public:
     // Rebuilds the buffers when the size or the order changed; size in [2, 4096].
     void resize(int size);
     void setOrder(PatchOrder order);
+    // Patches of stride x stride cells (1, 2, 4 or 8; grid/grid_stride.h picks it), their
+    // corners on the same points: fewer, larger patches that tessellation subdivides to the
+    // same target, where the grid's cells are far smaller on screen than that target. The
+    // last patch of a row or column takes what is left. Larger strides draw in row order
+    // (NearFirst's rings are for stride 1, the views near the ground).
+    void setStride(int stride);
+    int stride() const { return stride_; }
     // Uploads the grid's projection (the prepare step).
     void setProjection(const GridBlock& block);
     // Binds the grid's block at BLOCK_GRID and draws the patches (GL_PATCHES, 4 vertices
     // each) with the bound program: all of them, or `count` from `first` in draw order.
     void draw() const { draw(0, patchCount()); }
     void draw(int first, int count) const;
-    int patchCount() const { return size_ > 1 ? (size_ - 1) * (size_ - 1) : 0; }
+    int patchCount() const { return patchCount_; }
     // The grid's points: size x size coordinates (vec2), index j * size + i, as the vertex stage
     // reads them (gl_VertexID), for a compute pass that works per point; and the grid's block at
     // BLOCK_GRID for it.
     int pointCount() const { return size_ * size_; }
+    int size() const { return size_; }
     const gl::Buffer& points() const { return vertices_; }
     void bindBlock() const;
     // NearFirst's rings (empty in row order).
-    const std::vector<PatchRing>& rings() const { return rings_; }
+    const std::vector<PatchRing>& rings() const { return stride_ == 1 ? rings_ : noRings_; }
 
     // Mesa's software renderers (llvmpipe, softpipe) tessellate in the Gallium draw module,
     // which numbers the tessellated vertices of one chunk of input (up to 4096 vertices: 1024
@@ -90,8 +105,13 @@ private:
     gl::Buffer block_;  // GridBlock
     PatchOrder order_;
     int size_ = 0;
+    int stride_ = 1;
+    int patchCount_ = 0;
+    gl::Buffer coarseIndices_[3];            // strides 2, 4, 8, built on first use
+    int coarsePatchCount_[3] = {0, 0, 0};
     bool splitDraws_;  // a software renderer: draw in runs (above)
     std::vector<PatchRing> rings_;
+    std::vector<PatchRing> noRings_;
 };
 
 }  // namespace planet

@@ -8,6 +8,7 @@
 #include "ocean/ocean_gpu.h"
 #include "ocean/land_cull.h"
 #include "render/bindings.h"
+#include "terrain/height.h"
 
 namespace planet {
 
@@ -49,7 +50,7 @@ void OceanPass::uploadWaves(const Scene& scene, const Camera& camera) {
                              records.data());
 }
 
-void OceanPass::prepare(const Scene& scene, const Camera& camera, double radiansPerPixel,
+void OceanPass::prepare(const Scene& scene, const Camera& camera, double radiansPerPixel, double aspect,
                         const std::shared_ptr<const noise::CubeMap>& continents) {
     GridParams grid;
     grid.size = scene.ocean.grid_size;
@@ -60,7 +61,17 @@ void OceanPass::prepare(const Scene& scene, const Camera& camera, double radians
     const double maxHeight = ocean::maxWaveHeight(scene.waves);
     // The grid must reach the horizon of the wave crests seen from the camera, wherever it is.
     updateAnchor(anchor_, camera, anchorThresholdM(grid, std::abs(glm::length(camera.position) - radius)), false);
-    mesh_.setProjection(makeGridBlock(gridProjection(anchor_, radius, maxHeight), grid.exponent, camera.position, radius));
+    // Larger patches where the grid's cells are far under the target on screen (grid/grid_stride.h),
+    // only as high up as the terrain's (above the ground detail's reach): the sea near the camera
+    // keeps its mesh to the vertex. Its base target: the far edges' factor (ocean/edge_target.glsl)
+    // only lowers what a cell needs.
+    mesh_.setStride(chooseGridStride(
+        stride_, strideOverride_,
+        gridStrideAllowed(camera.altitude(scene.planetRadiusM()), scene.terrain.max_height_m,
+                          terrain::terrainNearRangeM()),
+        grid, anchor_, radius, maxHeight, camera, radiansPerPixel, aspect, scene.ocean.target_edge_px, 1.0e30));
+    mesh_.setProjection(makeGridBlock(gridProjection(anchor_, radius, maxHeight), grid.exponent, camera.position, radius,
+                                      grid.size, mesh_.stride()));
     uploadWaves(scene, camera);
     ocean::OceanBlock block = ocean::makeOceanBlock(scene);
     if (continents != continents_) {  // a new map: measure its slope once
@@ -97,17 +108,23 @@ std::vector<gl::HotProgram*> OceanPass::builtPrograms() {
 void OceanPass::formGridReflection(bool elekTable) {
     const int points = mesh_.pointCount();
     if (points != gridReflectionPoints_) {
-        gridReflection_ = gl::Buffer();
-        glNamedBufferStorage(gridReflection_.id(), static_cast<GLsizeiptr>(points) * 4 * GLsizeiptr(sizeof(float)), nullptr, 0);
+        const int side = mesh_.size();
+        gridReflection_ = gl::Texture(GL_TEXTURE_2D);
+        glTextureStorage2D(gridReflection_.id(), 1, GL_RGBA32F, side, side);
+        glTextureParameteri(gridReflection_.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+        glTextureParameteri(gridReflection_.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+        glTextureParameteri(gridReflection_.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+        glTextureParameteri(gridReflection_.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
         gridReflection_.label("ocean grid reflection");
         gridReflectionPoints_ = points;
     }
     mesh_.bindBlock();
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding::BUFFER_OCEAN_GRID_POINTS, mesh_.points().id());
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding::BUFFER_OCEAN_GRID_REFLECTION, gridReflection_.id());
+    glBindImageTexture(binding::IMAGE_OCEAN_GRID_REFLECTION, gridReflection_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
     glUseProgram(gridReflectionProgram_.get(elekTable, false, smoothMirror_ ? kGridSmoothMirrorMode : kGridFlatMirrorMode).id());
     glDispatchCompute(static_cast<GLuint>((points + kGridReflectionGroup - 1) / kGridReflectionGroup), 1, 1);
-    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+    glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
+    glBindTextureUnit(binding::UNIT_OCEAN_GRID_REFLECTION, gridReflection_.id());
 }
 
 void OceanPass::draw(bool elekTable, bool underWater) {

@@ -26,6 +26,7 @@
 #include "gl/handle.h"
 #include "gl/program.h"
 #include "grid/grid_mesh.h"
+#include "grid/grid_stride.h"
 #include "grid/projected_grid.h"
 #include "noise/continents.h"
 #include "render/atmosphere_program.h"
@@ -39,8 +40,9 @@ public:
     OceanPass(const gl::ShaderSources& sources, const atmosphere::TableSizes& tables);
 
     // `continents`: the CPU map the GPU samples (the land culling's bounds are made from it
-    // when it changes); `radiansPerPixel`: the angle of a pixel (the flat mirror's test).
-    void prepare(const Scene& scene, const Camera& camera, double radiansPerPixel,
+    // when it changes); `radiansPerPixel`: the angle of a pixel (the flat mirror's test); with
+    // `aspect`, the view's, for the grid's stride (grid/grid_stride.h).
+    void prepare(const Scene& scene, const Camera& camera, double radiansPerPixel, double aspect,
                  const std::shared_ptr<const noise::CubeMap>& continents);
     // The sea surface into the bound target (surface radiance and distance + the G-buffer's
     // depth, tested and written), reading the seabed copies, the atmosphere and the terrain's
@@ -72,6 +74,10 @@ public:
     // under land or behind the terrain discarded before the water is shaded. Off only to
     // compare with (tests): the pixels are the same either way.
     void setLandCulling(bool on) { landCulling_ = on; }
+    // Tests: the patches' stride forced (1, 2, 4 or 8), or 0 (the default) to let the grid's cells
+    // on screen decide above the terrain detail's reach (grid/grid_stride.h); the last prepared frame's.
+    void setStrideOverride(int stride) { strideOverride_ = stride; }
+    int stride() const { return mesh_.stride(); }
     bool landCulling() const { return landCulling_; }
     // Counts the primitives the pass's tessellation emits (GL_PRIMITIVES_GENERATED) while on;
     // lastPrimitives() is the last drawn frame's count (read back at once: tests, bench).
@@ -93,13 +99,15 @@ private:
     // ocean/grid_reflection.comp (modes OCEAN_FLAT_MIRROR, OCEAN_SMOOTH_MIRROR) and its output, a
     // vec4 per grid point, read by the vertex stage where the sea is a flat or smooth mirror.
     AtmosphereProgram gridReflectionProgram_;
-    gl::Buffer gridReflection_;
+    gl::Texture gridReflection_{GL_TEXTURE_2D};  // N x N RGBA32F, bilinear (ocean/grid_reflection_points.glsl)
     int gridReflectionPoints_ = 0;
     GridMesh mesh_{"ocean"};
     gl::Buffer waves_;
     gl::Buffer block_;  // OceanBlock
     std::size_t waveCapacity_ = 0;
     GridAnchor anchor_;
+    GridStride stride_;
+    int strideOverride_ = 0;
     bool landCulling_ = true;
     bool countPrimitives_ = false;
     long long lastPrimitives_ = -1;

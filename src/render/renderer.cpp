@@ -494,8 +494,8 @@ void Renderer::prepare(const Scene& scene, const Camera& camera, glm::ivec2 size
     atmosphere_.bind();
     report.cloudsUpdated = clouds_.update(scene, camera, size.y);
     clouds_.bind();
-    terrain_.prepare(scene, camera, *continents_->map());
-    if (scene.terrain.ocean) ocean_.prepare(scene, camera, camera.fovY_rad / size.y, continents_->map());
+    terrain_.prepare(scene, camera, *continents_->map(), camera.fovY_rad / size.y, double(size.x) / size.y);
+    if (scene.terrain.ocean) ocean_.prepare(scene, camera, camera.fovY_rad / size.y, double(size.x) / size.y, continents_->map());
     lastPrepare_ = report;
 }
 

@@ -53,15 +53,23 @@ TerrainPass::TerrainPass(const gl::ShaderSources& sources)
     nearBlock_.label("TerrainNearBlock");
 }
 
-void TerrainPass::prepare(const Scene& scene, const Camera& camera, const noise::CubeMap& continents) {
+void TerrainPass::prepare(const Scene& scene, const Camera& camera, const noise::CubeMap& continents,
+                          double radiansPerPixel, double aspect) {
     grid_.size = scene.terrain.grid_size;
     grid_.exponent = scene.terrain.grid_exponent == 2 ? 2 : 4;  // Eq. 2 is defined for these two
     grid_.hysteresisFraction = scene.terrain.grid_hysteresis;
     mesh_.resize(grid_.size);
     const double radius = scene.planetRadiusM();
     updateAnchor(anchor_, camera, anchorThresholdM(grid_, camera.altitude(radius)), false);
+    // Larger patches where the grid's cells are far under the target on screen (grid/grid_stride.h),
+    // only above the detail's reach: the views near the ground keep their mesh to the vertex.
+    mesh_.setStride(chooseGridStride(
+        stride_, strideOverride_,
+        gridStrideAllowed(camera.altitude(radius), scene.terrain.max_height_m, terrain::terrainNearRangeM()), grid_,
+        anchor_, radius, scene.terrain.max_height_m, camera, radiansPerPixel, aspect, scene.terrain.target_edge_px,
+        kTerrainMaxSagM));
     const GridProjection projection = gridProjection(anchor_, radius, scene.terrain.max_height_m);
-    const GridBlock gridBlock = makeGridBlock(projection, grid_.exponent, camera.position, radius);
+    const GridBlock gridBlock = makeGridBlock(projection, grid_.exponent, camera.position, radius, grid_.size, mesh_.stride());
     mesh_.setProjection(gridBlock);
 
     const terrain::TerrainBlock block = terrain::makeTerrainBlock(scene);

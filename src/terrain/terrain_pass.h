@@ -21,12 +21,16 @@
 #include "gl/handle.h"
 #include "gl/program.h"
 #include "grid/grid_mesh.h"
+#include "grid/grid_stride.h"
 #include "grid/projected_grid.h"
 #include "noise/continents.h"
 #include "scene/camera.h"
 #include "scene/scene.h"
 
 namespace planet {
+
+// The most the terrain's chords may sag, m: shaders/terrain/terrain.tesc's TERRAIN_MAX_SAG_M.
+inline constexpr double kTerrainMaxSagM = 1000.0;
 
 class TerrainPass {
 public:
@@ -35,7 +39,9 @@ public:
     // Uploads the grid's projection and the TerrainBlock (bound at BLOCK_TERRAIN for the
     // frame: the ocean reads the sea floor through it too).
     // Also the TerrainNearBlock, from the CPU copy of the continents map the GPU samples.
-    void prepare(const Scene& scene, const Camera& camera, const noise::CubeMap& continents);
+    // `radiansPerPixel` and `aspect`: the view's, for the grid's stride (grid/grid_stride.h).
+    void prepare(const Scene& scene, const Camera& camera, const noise::CubeMap& continents, double radiansPerPixel,
+                 double aspect);
     // Draws into the bound G-buffer (depth test on, reversed-Z).
     void draw();
     // The programs built so far, for hot reload: without the ground detail, and with it
@@ -71,6 +77,11 @@ public:
     void setDetailOnEveryPatch(bool on) { detailOnEveryPatch_ = on; }
     // The patches' draw order (grid/grid_mesh.h; NearFirst by default). Tests compare.
     void setPatchOrder(PatchOrder order) { mesh_.setOrder(order); }
+    // Tests: the patches' stride forced (1, 2, 4 or 8), or 0 (the default) to let the grid's
+    // cells on screen decide where the detail is out of reach (grid/grid_stride.h); the last
+    // prepared frame's.
+    void setStrideOverride(int stride) { strideOverride_ = stride; }
+    int stride() const { return mesh_.stride(); }
     const Statistics& lastStatistics() const { return lastStatistics_; }
 
 private:
@@ -89,6 +100,8 @@ private:
     std::optional<gl::Texture> detail_;  // terrain/detail_texture.h, baked when terrain.detail is first on (~0.1 s)
     GridParams grid_;
     GridAnchor anchor_;
+    GridStride stride_;
+    int strideOverride_ = 0;
     bool statistics_ = false;
     Statistics lastStatistics_;
     gl::Query primitives_{GL_PRIMITIVES_GENERATED};
