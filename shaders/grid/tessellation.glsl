@@ -1,11 +1,11 @@
 // Tessellation control helpers shared by the projected grids (terrain and ocean,
-// Michelic §3): levels from an edge's size on screen, and culling against a widened
-// frustum. Include after common/frame_uniforms.glsl.
+// Michelic §3): levels from an edge's size on screen and its chord's sag, and culling against
+// a widened frustum. Include after common/frame_uniforms.glsl and terrain/grid.glsl.
 const float FRUSTUM_WIDENING = 1.2;  // culling planes 20 % wider than the view
 const float MAX_TESSELLATION_LEVEL = 64.0;
 // The most a segment's chord of the sphere may sag, in pixels where it is nearest: at the limb
 // the sag is seen edge-on, and the silhouette recedes by it.
-const float MAX_SAG_PIXELS = 0.25;
+const float MAX_SAG_PIXELS = 0.25;  // src/grid/grid_stride.cpp counts with it too
 
 // Level for the edge between two camera-relative points: its angular size seen from the
 // nearer end, in units of targetPixels, and at least enough segments that each one's chord of

@@ -139,14 +139,13 @@ void main() {
     float surfaceDistance = length(tePosition);
     vec3 view = tePosition / surfaceDistance;  // camera -> surface
     vec3 up = normalize(teDirection);
-    // From afar the mesh's chords sag below the sea's sphere (see above; from space with the
-    // grid's larger patches, src/grid/grid_stride.h, kilometres), and there no wave shows: the
-    // pixel shows the mean surface where its ray meets the sphere, so its point, its vertical
-    // and the distance the air is taken over are the sphere's, not the chord's. The mesh still
-    // decides which pixels are sea, and their depth. Near the camera the two agree to far below
-    // a millimetre and the mesh's point (with its waves) stays.
-    // How far the meshes may sag below the sphere here (see above), m, and how far that makes
-    // this the far field (below).
+    // How far the meshes may sag below the sphere here (see above; the sea's own edges aim at
+    // ocean/edge_target.glsl's target), m, and how far that makes this the far field.
+    // There (from space with the grid's larger patches, src/grid/grid_stride.h, kilometres of
+    // sag) no wave shows: the pixel shows the mean surface where its ray meets the sphere, so its
+    // point, its vertical and the distance the air is taken over are the sphere's, not the
+    // chord's. The mesh still decides which pixels are sea, and their depth. Near the camera,
+    // where the sag is nothing, the mesh's point (with its waves) stays.
     float sag = meshSagM(surfaceDistance, max(ocean.coarsestEdgePixels, oceanEdgeTargetPixels(surfaceDistance)));
     float farness = smoothstep(0.05, 0.5, sag);
     float seaDistance = surfaceDistance;
