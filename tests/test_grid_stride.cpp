@@ -65,21 +65,59 @@ TEST(GridStride, MedianCellOfAPlanarGridSeenHeadOn) {
     camera.position = {0.0, 0.0, R + D};
     camera.orientation = orientationFromAxes({1.0, 0.0, 0.0}, {0.0, 1.0, 0.0}, {0.0, 0.0, -1.0});
     const double radiansPerPixel = 1.0e-4;
-    const double median = medianVisibleCellPixels(points, N, camera, radiansPerPixel, 0.5);
+    const auto cells = [&](double halfFov, double maxSagM) {
+        return measureVisibleCells(points, N, camera, radiansPerPixel, halfFov, R, 12.0, maxSagM);
+    };
+    const double median = cells(0.5, 1.0e30).medianPixels;
     EXPECT_NEAR(median, s / D / radiansPerPixel, 0.003 * s / D / radiansPerPixel);
     // Segments a cell needs: its 100 px over a 12 px target, 8.33 (the sag bound, a chord of 1 km
     // under 0.25 px = 2.5 m, asks for 1000 / sqrt(8 R 2.5) = 0.09, less); with a 0.1 mm sag bound,
     // 1000 / sqrt(8 R 1e-4) = 14.0.
-    EXPECT_NEAR(maxVisibleCellSegments(points, N, camera, radiansPerPixel, 0.5, R, 12.0, 1.0e30), 100.0 / 12.0, 0.03);
-    EXPECT_NEAR(maxVisibleCellSegments(points, N, camera, radiansPerPixel, 0.5, R, 12.0, 1.0e-4),
-                1000.0 / std::sqrt(8.0 * R * 1.0e-4), 0.05);
+    EXPECT_NEAR(cells(0.5, 1.0e30).maxSegments, 100.0 / 12.0, 0.03);
+    EXPECT_NEAR(cells(0.5, 1.0e-4).maxSegments, 1000.0 / std::sqrt(8.0 * R * 1.0e-4), 0.05);
     // Looking away (up), no cell is in the view's cone.
     camera.orientation = orientationFromAxes({1.0, 0.0, 0.0}, {0.0, -1.0, 0.0}, {0.0, 0.0, 1.0});
-    EXPECT_EQ(medianVisibleCellPixels(points, N, camera, radiansPerPixel, 0.5), 0.0);
+    EXPECT_EQ(cells(0.5, 1.0e30).medianPixels, 0.0);
+    EXPECT_EQ(cells(0.5, 1.0e30).maxSegments, 0.0);
     // From below the planet's surface plane (the far side), none is above its horizon.
     camera.position = {0.0, 0.0, -R - D};
     camera.orientation = orientationFromAxes({1.0, 0.0, 0.0}, {0.0, -1.0, 0.0}, {0.0, 0.0, 1.0});
-    EXPECT_EQ(medianVisibleCellPixels(points, N, camera, radiansPerPixel, 1.5), 0.0);
+    EXPECT_EQ(cells(1.5, 1.0e30).medianPixels, 0.0);
+}
+
+TEST(GridStride, GridPointsAreProjectedAgainOnlyWhenTheAnchorMoves) {
+    // From orbit, the camera turning and drifting within the anchor's hysteresis: the grid's points
+    // stay those of the anchor (the walk over them still sees the new view); the anchor moving
+    // projects them afresh.
+    const double R = 6.371e6;
+    GridParams params;
+    params.size = 40;
+    Camera camera = cameraAtGeographic(10.0, 20.0, 4.0e5, 0.0, -60.0, 60.0, R);
+    GridAnchor anchor;
+    updateAnchor(anchor, camera, anchorThresholdM(params, camera.altitude(R)), false);
+    GridStride state;
+    const auto choose = [&] {
+        return chooseGridStride(state, 0, true, params, anchor, R, 8000.0, camera, camera.fovY_rad / 360.0, 16.0 / 9.0,
+                                12.0, 1000.0);
+    };
+    choose();
+    ASSERT_EQ(state.points, projectedGridVertices(params, anchor, R, 8000.0));
+    const std::vector<glm::dvec3> first = state.points;
+    const glm::dvec3 start = camera.position;
+    camera = cameraAtGeographic(10.0, 20.0, 4.0e5 + 100.0, 30.0, -50.0, 60.0, R);
+    EXPECT_FALSE(updateAnchor(anchor, camera, anchorThresholdM(params, camera.altitude(R)), false));
+    choose();
+    EXPECT_EQ(state.points, first);
+    camera = cameraAtGeographic(12.0, 20.0, 4.0e5, 0.0, -60.0, 60.0, R);
+    ASSERT_TRUE(updateAnchor(anchor, camera, anchorThresholdM(params, camera.altitude(R)), false));
+    ASSERT_GT(glm::length(camera.position - start), 1.0e5);
+    choose();
+    EXPECT_NE(state.points, first);
+    EXPECT_EQ(state.points, projectedGridVertices(params, anchor, R, 8000.0));
+    // Another grid size is another grid.
+    params.size = 20;
+    choose();
+    EXPECT_EQ(state.points.size(), 400u);
 }
 
 TEST(GridStride, StridePatchesTileTheGridOnce) {

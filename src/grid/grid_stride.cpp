@@ -8,8 +8,8 @@ namespace planet {
 
 namespace {
 
-// Calls f(a, b, c) for each cell (i, j) of the grid whose first corner a is above the horizon
-// and within the view's cone; b and c its neighbours along i and j.
+// Calls f(a - eye, |a - eye|, b, c) for each cell (i, j) of the grid whose first corner a is above
+// the horizon and within the view's cone; b and c its neighbours along i and j.
 template <typename F>
 void forVisibleCells(const std::vector<glm::dvec3>& points, int N, const Camera& camera, double halfDiagonalFov, F f) {
     const glm::dvec3 eye = camera.position;
@@ -22,48 +22,49 @@ void forVisibleCells(const std::vector<glm::dvec3>& points, int N, const Camera&
             const double distance = glm::length(toA);
             if (!(distance > 0.0) || glm::dot(a, -toA) <= 0.0) continue;  // behind the horizon
             if (glm::dot(toA, forward) < cosCone * distance) continue;     // outside the view's cone
-            f(a, points[static_cast<std::size_t>(j * N + i + 1)], points[static_cast<std::size_t>((j + 1) * N + i)]);
+            f(toA, distance, points[static_cast<std::size_t>(j * N + i + 1)],
+              points[static_cast<std::size_t>((j + 1) * N + i)]);
         }
 }
 
 }  // namespace
 
-double medianVisibleCellPixels(const std::vector<glm::dvec3>& points, int N, const Camera& camera,
-                               double radiansPerPixel, double halfDiagonalFov) {
-    if (N < 2 || static_cast<int>(points.size()) < N * N || !(radiansPerPixel > 0.0)) return 0.0;
+VisibleCells measureVisibleCells(const std::vector<glm::dvec3>& points, int N, const Camera& camera,
+                                 double radiansPerPixel, double halfDiagonalFov, double planetRadiusM,
+                                 double targetPixels, double maxSagM) {
+    VisibleCells cells;
+    if (N < 2 || static_cast<int>(points.size()) < N * N || !(radiansPerPixel > 0.0)) return cells;
+    constexpr double kMaxSagPixels = 0.25;  // shaders/grid/tessellation.glsl's MAX_SAG_PIXELS
     const glm::dvec3 eye = camera.position;
-    const auto angle = [&](const glm::dvec3& a, const glm::dvec3& b) {
-        const glm::dvec3 u = a - eye, v = b - eye;
-        return std::atan2(glm::length(glm::cross(u, v)), glm::dot(u, v));
+    const double sagScale = 8.0 * planetRadiusM;
+    // Edge a-b (a at `distanceA` from the camera): its angle on screen, as its sine (cells are a
+    // few pixels here, within 0.2 % for an angle under 0.1 rad; sine <= angle, so never larger), and the
+    // segments it needs (tessellation.glsl's edgeSegments).
+    const auto edge = [&](const glm::dvec3& u, double distanceA, const glm::dvec3& b, double& pixels,
+                          double& segments) {
+        const glm::dvec3 v = b - eye;
+        const double distanceB = glm::length(v);
+        pixels = glm::length(glm::cross(u, v)) / (distanceA * distanceB) / radiansPerPixel;
+        const double nearest = std::max(std::min(distanceA, distanceB), 1e-3);
+        const double chord = glm::length(u - v);
+        const double sag = std::min(kMaxSagPixels * nearest * radiansPerPixel, maxSagM);
+        segments = std::max(chord / nearest / radiansPerPixel / targetPixels, chord / std::sqrt(sagScale * sag));
     };
     std::vector<double> pixels;
     pixels.reserve(static_cast<std::size_t>(N - 1) * static_cast<std::size_t>(N - 1));
-    forVisibleCells(points, N, camera, halfDiagonalFov, [&](const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c) {
-        pixels.push_back(std::max(angle(a, b), angle(a, c)) / radiansPerPixel);
-    });
-    if (pixels.empty()) return 0.0;
+    forVisibleCells(points, N, camera, halfDiagonalFov,
+                    [&](const glm::dvec3& toA, double distanceA, const glm::dvec3& b, const glm::dvec3& c) {
+                        double pixelsB, segmentsB, pixelsC, segmentsC;
+                        edge(toA, distanceA, b, pixelsB, segmentsB);
+                        edge(toA, distanceA, c, pixelsC, segmentsC);
+                        pixels.push_back(std::max(pixelsB, pixelsC));
+                        cells.maxSegments = std::max({cells.maxSegments, segmentsB, segmentsC});
+                    });
+    if (pixels.empty()) return cells;
     const auto middle = pixels.begin() + static_cast<std::ptrdiff_t>(pixels.size() / 2);
     std::nth_element(pixels.begin(), middle, pixels.end());
-    return *middle;
-}
-
-double maxVisibleCellSegments(const std::vector<glm::dvec3>& points, int N, const Camera& camera,
-                              double radiansPerPixel, double halfDiagonalFov, double planetRadiusM,
-                              double targetPixels, double maxSagM) {
-    if (N < 2 || static_cast<int>(points.size()) < N * N || !(radiansPerPixel > 0.0)) return 0.0;
-    constexpr double kMaxSagPixels = 0.25;  // shaders/grid/tessellation.glsl's MAX_SAG_PIXELS
-    const glm::dvec3 eye = camera.position;
-    const auto segments = [&](const glm::dvec3& a, const glm::dvec3& b) {
-        const double nearest = std::max(std::min(glm::length(a - eye), glm::length(b - eye)), 1e-3);
-        const double chord = glm::length(a - b);
-        const double sag = std::min(kMaxSagPixels * nearest * radiansPerPixel, maxSagM);
-        return std::max(chord / nearest / radiansPerPixel / targetPixels, chord / std::sqrt(8.0 * planetRadiusM * sag));
-    };
-    double most = 0.0;
-    forVisibleCells(points, N, camera, halfDiagonalFov, [&](const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c) {
-        most = std::max({most, segments(a, b), segments(a, c)});
-    });
-    return most;
+    cells.medianPixels = *middle;
+    return cells;
 }
 
 int strideWithinTessellation(double segments) {
@@ -91,14 +92,23 @@ int chooseGridStride(GridStride& state, int stride, bool allowed, const GridPara
                      double targetPixels, double maxSagM) {
     if (stride > 0) return stride;
     if (!allowed) {
-        state = GridStride{};
+        state.stride = 1;  // afresh when allowed again (the points stay for their anchor)
+        state.cellPixels = 0.0;
         return 1;
     }
-    const std::vector<glm::dvec3> points = projectedGridVertices(params, anchor, radiusM, maxHeightM);
-    const double fov = halfDiagonalFov(camera.fovY_rad, aspect);
-    state.update(medianVisibleCellPixels(points, params.size, camera, radiansPerPixel, fov), kStridePatchPixels,
-                 strideWithinTessellation(maxVisibleCellSegments(points, params.size, camera, radiansPerPixel, fov,
-                                                                 radiusM, targetPixels, maxSagM)));
+    const glm::dvec4 grid(params.size, params.exponent, radiusM, maxHeightM);
+    const bool sameAnchor = state.pointsAnchor.valid && state.pointsAnchor.position == anchor.position &&
+                            state.pointsAnchor.worldFromGrid == anchor.worldFromGrid &&
+                            state.pointsAnchor.roamRadiusM == anchor.roamRadiusM;
+    if (!sameAnchor || state.pointsGrid != grid) {
+        state.points = projectedGridVertices(params, anchor, radiusM, maxHeightM);
+        state.pointsAnchor = anchor;
+        state.pointsGrid = grid;
+    }
+    const VisibleCells cells = measureVisibleCells(state.points, params.size, camera, radiansPerPixel,
+                                                   halfDiagonalFov(camera.fovY_rad, aspect), radiusM, targetPixels,
+                                                   maxSagM);
+    state.update(cells.medianPixels, kStridePatchPixels, strideWithinTessellation(cells.maxSegments));
     return state.stride;
 }
 

@@ -27,23 +27,24 @@ namespace planet {
 inline constexpr double kStridePatchPixels = 48.0;
 inline constexpr int kMaxGridStride = 8;
 
-// The median over the grid's visible cells of each cell's longer edge on screen, px: the
-// angle between its corners seen from the camera over `radiansPerPixel`. A cell is visible
-// when its first corner is above the horizon (in front of the sphere's tangent plane there)
-// and within the view's cone (`halfDiagonalFov` from the view direction). `points`: the
-// grid's N x N points (index j * N + i; projectedGridVertices). 0 when no cell is visible.
-double medianVisibleCellPixels(const std::vector<glm::dvec3>& points, int N, const Camera& camera,
-                               double radiansPerPixel, double halfDiagonalFov);
-
-// The most segments any visible cell's edge needs on its own (shaders/grid/tessellation.glsl's
-// edgeSegments: the edge's angle over targetPixels, and chords sagging under a quarter of a pixel
-// and under maxSagM), over the cells medianVisibleCellPixels counts; `planetRadiusM` the sphere's.
-// A stride's patch edge gives each of its cells as many (terrain.tesc's strideEdgeLevel), so k
-// times this must stay within the tessellator's 64: near the horizon from orbit a cell needs
-// tens.
-double maxVisibleCellSegments(const std::vector<glm::dvec3>& points, int N, const Camera& camera,
-                              double radiansPerPixel, double halfDiagonalFov, double planetRadiusM,
-                              double targetPixels, double maxSagM);
+// What a grid's visible cells ask for on screen, from one walk over them. A cell is visible when
+// its first corner is above the horizon (in front of the sphere's tangent plane there) and within
+// the view's cone (`halfDiagonalFov` from the view direction). `points`: the grid's N x N points
+// (index j * N + i; projectedGridVertices).
+struct VisibleCells {
+    // The median of each cell's longer edge on screen, px: the angle between its corners seen from
+    // the camera over `radiansPerPixel`. 0 when no cell is visible.
+    double medianPixels = 0.0;
+    // The most segments any cell's edge needs on its own (shaders/grid/tessellation.glsl's
+    // edgeSegments: the edge's angle over targetPixels, and chords sagging under a quarter of a
+    // pixel and under maxSagM on the sphere of `planetRadiusM`). A stride's patch edge gives each of
+    // its cells as many (strideEdgeLevel), so k times this must stay within the tessellator's 64:
+    // near the horizon from orbit a cell needs tens.
+    double maxSegments = 0.0;
+};
+VisibleCells measureVisibleCells(const std::vector<glm::dvec3>& points, int N, const Camera& camera,
+                                 double radiansPerPixel, double halfDiagonalFov, double planetRadiusM,
+                                 double targetPixels, double maxSagM);
 
 // The largest power of two k <= kMaxGridStride with k x segments <= 64 (1 when none).
 int strideWithinTessellation(double segments);
@@ -60,7 +61,7 @@ inline bool gridStrideAllowed(double cameraAltitudeM, double maxHeightM, double 
     return cameraAltitudeM - maxHeightM >= nearRangeM;
 }
 
-// Half the view's diagonal field of view, rad, for medianVisibleCellPixels.
+// Half the view's diagonal field of view, rad, for measureVisibleCells.
 double halfDiagonalFov(double fovY_rad, double aspect);
 
 // The stride a grid's pass keeps from frame to frame: `previous` only while the median cell
@@ -69,6 +70,11 @@ double halfDiagonalFov(double fovY_rad, double aspect);
 struct GridStride {
     int stride = 1;
     double cellPixels = 0.0;
+    // The grid's points (projectedGridVertices) and what they were projected from: the anchor
+    // moves only now and then (Michelic's hysteresis), so most frames reuse them.
+    std::vector<glm::dvec3> points;
+    GridAnchor pointsAnchor;
+    glm::dvec4 pointsGrid{0.0};  // size, exponent, radius, maxHeight
     // `limit`: the largest stride the tessellator can subdivide (strideWithinTessellation).
     void update(double newCellPixels, double patchPixels, int limit) {
         const bool near = cellPixels > 0.0 && newCellPixels < 1.5 * cellPixels && newCellPixels > cellPixels / 1.5;
