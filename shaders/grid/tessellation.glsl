@@ -3,9 +3,7 @@
 // a widened frustum. Include after common/frame_uniforms.glsl and terrain/grid.glsl.
 const float FRUSTUM_WIDENING = 1.2;  // culling planes 20 % wider than the view
 const float MAX_TESSELLATION_LEVEL = 64.0;
-// The most a segment's chord of the sphere may sag, in pixels where it is nearest: at the limb
-// the sag is seen edge-on, and the silhouette recedes by it.
-const float MAX_SAG_PIXELS = 0.25;  // src/grid/grid_stride.cpp counts with it too
+#include "grid/constants.glsl"
 
 // Level for the edge between two camera-relative points: its angular size seen from the
 // nearer end, in units of targetPixels, and at least enough segments that each one's chord of
@@ -40,6 +38,28 @@ float limbCellSegments(vec3 a, vec3 b) {
 // point `a` to grid point `b` (indices; one row or column of the grid).
 vec3 gridLinePoint(ivec2 a, ivec2 b, int c, int cells, double radius) {
     return cameraRelative(gridDirection(gridCoordinateAt(mix(vec2(a), vec2(b), float(c) / float(cells)))), radius);
+}
+
+// A stride's patch edge (src/grid/grid_stride.h), from grid point `a` to grid point `b`, spans
+// several cells, and the tessellator splits it evenly in grid coordinates, which the projection
+// (Michelic Eq. 2-4) does not map evenly onto the sphere: near the grid's edge, at the horizon,
+// its cells grow fast. So the edge takes as many segments per cell as its neediest cell would ask
+// for on its own (edgeSegments on the grid's sphere, `targetPixels` and `maxSagM`, and one at the
+// limb: limbCellSegments), and each segment is no worse than a stride-1 cell's; the end-to-end
+// chord under-counted them, and the limb from orbit receded by a pixel at 160x90. Depends on the
+// edge's grid points only: neighbouring patches agree.
+float strideEdgeLevel(ivec2 a, ivec2 b, float targetPixels, float maxSagM) {
+    int cells = max(abs(b.x - a.x), abs(b.y - a.y));
+    double radius = gridSphereRadius();
+    float need = 0.0;
+    vec3 previous = gridLinePoint(a, b, 0, cells, radius);
+    for (int c = 1; c <= cells; ++c) {
+        vec3 next = gridLinePoint(a, b, c, cells, radius);
+        need = max(need, edgeSegments(previous, next, targetPixels, maxSagM));
+        need = max(need, limbCellSegments(previous, next));
+        previous = next;
+    }
+    return clamp(need * float(cells), 1.0, MAX_TESSELLATION_LEVEL);
 }
 
 // True when all eight camera-relative corners of a patch's bounding shell lie outside one

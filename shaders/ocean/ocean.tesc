@@ -41,25 +41,15 @@ bool overLand(dvec3 directions[4]) {
 // edge's two points only, as edgeLevel: neighbouring patches agree.
 // No sag bound in metres: far away ocean.frag shades the sphere itself, not the chord.
 const float OCEAN_MAX_SAG_M = 1.0e30;
-float oceanEdgeSegments(vec3 a, vec3 b) {
-    return edgeSegments(a, b, oceanEdgeTargetPixels(max(min(length(a), length(b)), 1e-3)), OCEAN_MAX_SAG_M);
+float oceanEdgeLevel(vec3 a, vec3 b) {
+    return edgeLevel(a, b, oceanEdgeTargetPixels(max(min(length(a), length(b)), 1e-3)), OCEAN_MAX_SAG_M);
 }
-float oceanEdgeLevel(vec3 a, vec3 b) { return clamp(oceanEdgeSegments(a, b), 1.0, MAX_TESSELLATION_LEVEL); }
 
-// A stride's patch edge: as many segments per cell as its neediest cell asks for on its own
-// (terrain/terrain.tesc's strideEdgeLevel says why).
-float strideEdgeLevel(ivec2 a, ivec2 b) {
-    int cells = max(abs(b.x - a.x), abs(b.y - a.y));
-    double radius = gridSphereRadius();
-    float need = 0.0;
-    vec3 previous = gridLinePoint(a, b, 0, cells, radius);
-    for (int c = 1; c <= cells; ++c) {
-        vec3 next = gridLinePoint(a, b, c, cells, radius);
-        need = max(need, oceanEdgeSegments(previous, next));
-        need = max(need, limbCellSegments(previous, next));
-        previous = next;
-    }
-    return clamp(need * float(cells), 1.0, MAX_TESSELLATION_LEVEL);
+// A stride's patch edge (grid/tessellation.glsl's strideEdgeLevel) at the target of its nearer
+// end: the target grows with distance, so no cell along it gets a larger one than its own.
+float oceanStrideEdgeLevel(vec3 corners[4], int i, int j) {
+    float nearest = max(min(length(corners[i]), length(corners[j])), 1e-3);
+    return strideEdgeLevel(vPoint[i], vPoint[j], oceanEdgeTargetPixels(nearest), OCEAN_MAX_SAG_M);
 }
 
 void main() {
@@ -85,6 +75,6 @@ void main() {
         setQuadLevelsFromEdges(oceanEdgeLevel(mean[0], mean[3]), oceanEdgeLevel(mean[0], mean[1]),
                                oceanEdgeLevel(mean[1], mean[2]), oceanEdgeLevel(mean[3], mean[2]));
     else
-        setQuadLevelsFromEdges(strideEdgeLevel(vPoint[0], vPoint[3]), strideEdgeLevel(vPoint[0], vPoint[1]),
-                               strideEdgeLevel(vPoint[1], vPoint[2]), strideEdgeLevel(vPoint[3], vPoint[2]));
+        setQuadLevelsFromEdges(oceanStrideEdgeLevel(mean, 0, 3), oceanStrideEdgeLevel(mean, 0, 1),
+                               oceanStrideEdgeLevel(mean, 1, 2), oceanStrideEdgeLevel(mean, 3, 2));
 }

@@ -6,6 +6,7 @@
 // that are then made camera-relative, and float would round them to half a
 // metre (visible steps when standing on a beach).
 #include "common/bindings.glsl"
+#include "grid/constants.glsl"
 
 // The grid of the pass that draws, uploaded before the frame (src/grid/grid_mesh.h:
 // GridBlock, std140: a dvec4 takes 32 bytes).
@@ -42,7 +43,6 @@ dvec3 gridDirection(vec2 g) {
 // src/grid/projected_grid.h's gridVertexCoordinate between the points, so a patch of several
 // cells (the grids' stride, src/grid/grid_stride.h) puts its vertices where the grid's own
 // points and their warp put them (at whole indices, on the points exactly).
-const float GRID_CENTRE_DENSITY = 0.05;  // kGridCentreDensity (src/grid/projected_grid.h)
 vec2 gridCoordinateAt(vec2 index) {
     vec2 g = -1.0 + 2.0 * index / float(grid.pointsPerSide - 1);
     float m = max(abs(g.x), abs(g.y));

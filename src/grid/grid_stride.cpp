@@ -4,6 +4,8 @@
 #include <cmath>
 #include <cstddef>
 
+#include "grid/constants.h"
+
 namespace planet {
 
 namespace {
@@ -34,7 +36,7 @@ VisibleCells measureVisibleCells(const std::vector<glm::dvec3>& points, int N, c
                                  double targetPixels, double maxSagM) {
     VisibleCells cells;
     if (N < 2 || static_cast<int>(points.size()) < N * N || !(radiansPerPixel > 0.0)) return cells;
-    constexpr double kMaxSagPixels = 0.25;  // shaders/grid/tessellation.glsl's MAX_SAG_PIXELS
+    const double kMaxSagPixels = grid_constant::MAX_SAG_PIXELS;
     const glm::dvec3 eye = camera.position;
     const double sagScale = 8.0 * planetRadiusM;
     // Edge a-b (a at `distanceA` from the camera): its angle on screen, as its sine (cells are a

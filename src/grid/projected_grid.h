@@ -57,6 +57,7 @@
 
 #include <glm/glm.hpp>
 
+#include "grid/constants.h"
 #include "scene/camera.h"
 
 namespace planet {
@@ -97,7 +98,7 @@ glm::dvec2 gridCoordinate(int i, int j, int N);
 // kilometres between them at the camera's feet, more than tessellation (at most 64
 // subdivisions) can make up; here the spacing is a (1/20) of the even one at the centre (the
 // projection camera), at most 1.32 times it (at m = 2/3), and equal to it at the edge.
-inline constexpr double kGridCentreDensity = 0.05;
+inline const double kGridCentreDensity = grid_constant::GRID_CENTRE_DENSITY;  // shaders/grid/constants.glsl
 glm::dvec2 gridVertexCoordinate(int i, int j, int N);
 
 // The smallest angle from grid z (rad) at which the projected grid puts any point outside the

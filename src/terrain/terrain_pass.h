@@ -20,6 +20,7 @@
 
 #include "gl/handle.h"
 #include "gl/program.h"
+#include "grid/constants.h"
 #include "grid/grid_mesh.h"
 #include "grid/grid_stride.h"
 #include "grid/projected_grid.h"
@@ -29,8 +30,8 @@
 
 namespace planet {
 
-// The most the terrain's chords may sag, m: shaders/terrain/terrain.tesc's TERRAIN_MAX_SAG_M.
-inline constexpr double kTerrainMaxSagM = 1000.0;
+// The most the terrain's chords may sag, m (shaders/grid/constants.glsl).
+inline const double kTerrainMaxSagM = grid_constant::TERRAIN_MAX_SAG_M;
 
 class TerrainPass {
 public:
