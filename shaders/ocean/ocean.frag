@@ -43,6 +43,7 @@
 #include "terrain/grid.glsl"
 #include "ocean/ocean_block.glsl"
 #include "ocean/edge_target.glsl"
+#include "ocean/sea_sphere.glsl"
 #include "ocean/gerstner.glsl"
 #include "ocean/ocean_waves.glsl"
 #include "ocean/water.glsl"
@@ -84,21 +85,6 @@ layout(depth_greater) out float gl_FragDepth;  // reversed-Z: only ever moved to
 #ifndef UNDER_WATER
 #define UNDER_WATER 0
 #endif
-
-// The distance along the unit `view` (from the camera) to the mean sea surface's sphere, m,
-// where the ray meets it from above; -1 where it does not. In the stable form t = c / (-b +
-// sqrt(b^2 - c)), with c = (|p| - R)(|p| + R) from the camera's height above the sea (formed in
-// double on the CPU), exact to float's rounding from a beach to deep space.
-float seaSphereDistance(vec3 view) {
-    float radius = frame.planetRadius + ocean.seaLevel;
-    float height = frame.cameraAltitude - ocean.seaLevel;
-    if (height <= 0.0) return -1.0;
-    float b = (frame.planetRadius + frame.cameraAltitude) * dot(view, frame.cameraUp);
-    float c = height * (2.0 * radius + height);
-    float discriminant = b * b - c;
-    if (b >= 0.0 || discriminant < 0.0) return -1.0;
-    return c / (-b + sqrt(discriminant));
-}
 
 const float SHORE_FADE_M = 0.5;  // water path over which the sea fades in at the shore
 // Off (0), no foam where the waves break at the shore (tests compare the two).

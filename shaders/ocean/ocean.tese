@@ -23,12 +23,10 @@ out vec2 teGridPoint;  // the place on the grid in point indices (i, j), for the
 
 void main() {
     vec2 uv = gl_TessCoord.xy;
-    // A one-cell patch mixes its corners (as it always has); a stride's patch follows the grid's
-    // warp between its points (ocean.tesc's levels are counted on them), so that the grid's
-    // reflection read at teGridPoint (ocean.frag) is the reflection of this very place.
-    teGridPoint = vec2(tcPoint[0]) + uv * vec2(tcPoint[2] - tcPoint[0]);
-    vec2 g = grid.stride == 1 ? mix(mix(tcGrid[0], tcGrid[1], uv.x), mix(tcGrid[3], tcGrid[2], uv.x), uv.y)
-                              : gridCoordinateAt(teGridPoint);
+    // With a stride the vertex is where the grid's warp puts teGridPoint, so the grid's reflection
+    // read there (ocean.frag) is the reflection of this very place.
+    teGridPoint = patchGridPoint(tcPoint[0], tcPoint[2], uv);
+    vec2 g = patchGridCoordinate(tcGrid[0], tcGrid[1], tcGrid[2], tcGrid[3], tcPoint[0], tcPoint[2], uv);
     dvec3 direction = gridDirection(g);
     vec3 sphere = cameraRelative(direction, gridSphereRadius());
     float vertexSpacing = length(sphere) * radiansPerPixel() * ocean.targetEdgePixels;

@@ -22,6 +22,7 @@
 #include "render/sample_spacing.glsl"
 #include "ocean/water.glsl"
 #include "ocean/ocean_block.glsl"
+#include "ocean/sea_sphere.glsl"
 
 layout(binding = UNIT_GBUFFER_NORMAL) uniform sampler2D gNormal;
 layout(binding = UNIT_GBUFFER_DEPTH) uniform sampler2D gDepth;
@@ -37,16 +38,8 @@ layout(location = 0) out vec2 outClearance;
 bool seaSurfaceAt(vec3 dir, SurfacePoint ground, bool hasGround, out vec3 point) {
     point = vec3(0.0);
     if (terrainHasOcean == 0) return false;
-    float aboveSea = -frame.cameraDepthBelowSea;  // m, the camera's height above the sea's surface
-    float seaRadius = frame.planetRadius + ocean.seaLevel;
-    // |C + t d| = seaRadius with |C| = seaRadius + aboveSea: t^2 + 2 b t + c = 0, the near root
-    // in the form that subtracts nothing of planet size.
-    float b = (seaRadius + aboveSea) * dot(dir, frame.cameraUp);
-    float c = aboveSea * (2.0 * seaRadius + aboveSea);
-    float discriminant = b * b - c;
-    if (aboveSea <= 0.0 || b >= 0.0 || discriminant < 0.0) return false;
-    float t = c / (-b + sqrt(discriminant));  // m
-    if (hasGround && t >= ground.rayDistance) return false;
+    float t = seaSphereDistance(dir);  // m; -1: no sea in front, or the camera under it
+    if (t < 0.0 || (hasGround && t >= ground.rayDistance)) return false;
     point = cameraFromPlanetCentreKm() + dir * (t / M_PER_KM);
     return true;
 }

@@ -49,5 +49,18 @@ vec2 gridCoordinateAt(vec2 index) {
     return g * (GRID_CENTRE_DENSITY + (1.0 - GRID_CENTRE_DENSITY) * m * (2.0 - m));
 }
 
+// A patch's place at the tessellation coordinate `uv`, in point indices: between its first and
+// third corners' grid points (`first`, `third`: tcPoint[0] and [2]).
+vec2 patchGridPoint(ivec2 first, ivec2 third, vec2 uv) { return vec2(first) + uv * vec2(third - first); }
+
+// The grid coordinate at `uv` in a patch whose corners have the coordinates g0..g3 and the
+// points `first` and `third` (the evaluation stages'): a one-cell patch mixes its corners (as it
+// always has); a stride's patch (src/grid/grid_stride.h) follows the grid's warp between its
+// points, where the control stages count its levels and where the grid's own points lie.
+vec2 patchGridCoordinate(vec2 g0, vec2 g1, vec2 g2, vec2 g3, ivec2 first, ivec2 third, vec2 uv) {
+    if (grid.stride == 1) return mix(mix(g0, g1, uv.x), mix(g3, g2, uv.x), uv.y);
+    return gridCoordinateAt(patchGridPoint(first, third, uv));
+}
+
 // Camera-relative position (m, world axes) of the point at `radius` along a direction.
 vec3 cameraRelative(dvec3 direction, double radius) { return vec3(direction * radius - gridCameraPosition()); }

@@ -19,10 +19,7 @@ out vec3 tePointFromCamera;  // m, world axes: the camera-relative position (for
 
 void main() {
     vec2 uv = gl_TessCoord.xy;
-    // A one-cell patch mixes its corners; a stride's patch follows the grid's warp between its
-    // points (terrain.tesc's levels are counted on them).
-    vec2 g = grid.stride == 1 ? mix(mix(tcGrid[0], tcGrid[1], uv.x), mix(tcGrid[3], tcGrid[2], uv.x), uv.y)
-                              : gridCoordinateAt(vec2(tcPoint[0]) + uv * vec2(tcPoint[2] - tcPoint[0]));
+    vec2 g = patchGridCoordinate(tcGrid[0], tcGrid[1], tcGrid[2], tcGrid[3], tcPoint[0], tcPoint[2], uv);
     dvec3 direction = gridDirection(g);
     float height = terrainHeight(vec3(direction), terrainShape, uContinents);
     vec3 position = cameraRelative(direction, gridSphereRadius() + double(height));

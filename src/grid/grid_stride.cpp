@@ -98,14 +98,10 @@ int chooseGridStride(GridStride& state, int stride, bool allowed, const GridPara
         state.cellPixels = 0.0;
         return 1;
     }
-    const glm::dvec4 grid(params.size, params.exponent, radiusM, maxHeightM);
-    const bool sameAnchor = state.pointsAnchor.valid && state.pointsAnchor.position == anchor.position &&
-                            state.pointsAnchor.worldFromGrid == anchor.worldFromGrid &&
-                            state.pointsAnchor.roamRadiusM == anchor.roamRadiusM;
-    if (!sameAnchor || state.pointsGrid != grid) {
+    const GridStride::PointsOf of{anchor, params.size, params.exponent, radiusM, maxHeightM};
+    if (state.points.empty() || !(state.pointsOf == of)) {
         state.points = projectedGridVertices(params, anchor, radiusM, maxHeightM);
-        state.pointsAnchor = anchor;
-        state.pointsGrid = grid;
+        state.pointsOf = of;
     }
     const VisibleCells cells = measureVisibleCells(state.points, params.size, camera, radiansPerPixel,
                                                    halfDiagonalFov(camera.fovY_rad, aspect), radiusM, targetPixels,

@@ -72,9 +72,18 @@ struct GridStride {
     double cellPixels = 0.0;
     // The grid's points (projectedGridVertices) and what they were projected from: the anchor
     // moves only now and then (Michelic's hysteresis), so most frames reuse them.
+    struct PointsOf {
+        GridAnchor anchor;
+        int size = 0, exponent = 0;
+        double radiusM = 0.0, maxHeightM = 0.0;
+        bool operator==(const PointsOf& o) const {
+            return anchor.valid == o.anchor.valid && anchor.position == o.anchor.position &&
+                   anchor.worldFromGrid == o.anchor.worldFromGrid && anchor.roamRadiusM == o.anchor.roamRadiusM &&
+                   size == o.size && exponent == o.exponent && radiusM == o.radiusM && maxHeightM == o.maxHeightM;
+        }
+    };
     std::vector<glm::dvec3> points;
-    GridAnchor pointsAnchor;
-    glm::dvec4 pointsGrid{0.0};  // size, exponent, radius, maxHeight
+    PointsOf pointsOf;
     // `limit`: the largest stride the tessellator can subdivide (strideWithinTessellation).
     void update(double newCellPixels, double patchPixels, int limit) {
         const bool near = cellPixels > 0.0 && newCellPixels < 1.5 * cellPixels && newCellPixels > cellPixels / 1.5;
