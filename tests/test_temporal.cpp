@@ -74,55 +74,6 @@ TEST_F(Temporal, AFrameWithoutHistoryIsMarchedAtFullRate) {
     EXPECT_TRUE(temporal->lastPrepare().reducedRate);
 }
 
-TEST_F(Temporal, AClearSkyIsMarchedAtTheReducedRateOnlyWhereNothingMoved) {
-    // Without clouds the sky's reconstruction in a moving frame costs what its full-rate pass
-    // does, so a clear sky takes the reduced rate only in a still frame (its history its own
-    // frame: the still-frame program), and its image stays the full-rate one's; a frame where
-    // the camera moved is marched at full rate again, and the next still one takes the reduced
-    // rate from it.
-    const glm::ivec2 size{96, 54};
-    Session s = session("orbit");
-    s.scene.clouds.enabled = false;
-    s.scene.time_s = 13.0;  // a scene no other test left in the history
-    temporal->render(s.scene, s.camera, size);
-    EXPECT_FALSE(temporal->lastPrepare().reducedRate);
-    // Measured: mean relative error 0.7-1.0e-4 over the still frames, the largest in a pixel
-    // 0.9-1.3e-3 (the history's T and S are half floats: 4.9e-4 a rounding).
-    double worst = 0.0, worstMean = 0.0;
-    for (int frame = 1; frame <= 20; ++frame) {
-        if (frame == 10) {  // a turn of a degree: full rate again
-            s.camera.orientation = glm::angleAxis(glm::radians(1.0), s.camera.up()) * s.camera.orientation;
-            temporal->render(s.scene, s.camera, size);
-            ASSERT_TRUE(temporal->lastPrepare().historyValid);
-            EXPECT_FALSE(temporal->lastPrepare().stillFrame);
-            EXPECT_FALSE(temporal->lastPrepare().reducedRate);
-            EXPECT_EQ(hdrOf(*temporal, size).pixels, fullRate(s.scene, s.camera, size).pixels) << "frame " << frame;
-            continue;
-        }
-        temporal->render(s.scene, s.camera, size);
-        ASSERT_TRUE(temporal->lastPrepare().stillFrame) << "frame " << frame;
-        EXPECT_TRUE(temporal->lastPrepare().reducedRate) << "frame " << frame;
-        const ImageComparison c = compareImages(hdrOf(*temporal, size), fullRate(s.scene, s.camera, size));
-        worst = std::max(worst, c.maxRelativeError);
-        worstMean = std::max(worstMean, c.meanRelativeError);
-    }
-    std::printf("clear sky, still frames at the reduced rate against the full rate: mean relative error up to %.2e, "
-                "largest %.2e\n", worstMean, worst);
-    EXPECT_LT(worstMean, 3.0e-4);
-    EXPECT_LT(worst, 3.0e-3);
-    // The clock alone moved (the waves, no clouds to drift): still for the sky, which does not
-    // change with it.
-    for (int frame = 0; frame < 3; ++frame) {
-        s.scene.time_s += 1.0 / 30.0;
-        temporal->render(s.scene, s.camera, size);
-        EXPECT_TRUE(temporal->lastPrepare().stillFrame);
-        EXPECT_TRUE(temporal->lastPrepare().reducedRate);
-        const ImageComparison c = compareImages(hdrOf(*temporal, size), fullRate(s.scene, s.camera, size));
-        EXPECT_LT(c.meanRelativeError, 3.0e-4);
-        EXPECT_LT(c.maxRelativeError, 3.0e-3);
-    }
-}
-
 TEST_F(Temporal, TheReducedRateMarchesOnePixelOfEach4x4Block) {
     // The march's own count of the pixels it marched (the statistics buffer): the full frame
     // at full rate, one of each 4x4 block (rounded up at the edges) at the reduced rate.

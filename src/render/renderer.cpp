@@ -468,6 +468,8 @@ void Renderer::prepare(const Scene& scene, const Camera& camera, glm::ivec2 size
     report.historyValid = historyUsable(scene, camera, resized);
     const bool inAir = cameraDepthBelowSeaM(scene, camera) <= 0.0;
     report.underWater = !inAir;
+    report.reducedRate = scene.render.temporal && scene.clouds.enabled && inAir &&
+                         (report.historyValid || !fullRateOnReset_);
     frameJitterPx_ = temporalAntialiasing_ ? glm::dvec2(subPixelJitter(frameIndex_)) : jitterPx_;
     const FrameUniforms uniforms = makeFrameUniforms(scene, camera, size, frameIndex_,
                                                      report.historyValid ? previous_ : std::nullopt, frameJitterPx_);
@@ -475,13 +477,6 @@ void Renderer::prepare(const Scene& scene, const Camera& camera, glm::ivec2 size
     // point moves by a fraction of a pixel: the general reconstruction reads its history there).
     report.stillFrame =
         report.historyValid && uniforms.stillSincePrevious > 0.5f && uniforms.viewStillSincePrevious > 0.5f;
-    // The sky at the reduced rate: with clouds (their march costs the most); a clear sky only in a
-    // still frame (nothing moved but, perhaps, the clock, which does not change a clear sky), where
-    // the still-frame program keeps its history, its own full-rate frame: in a moving frame the
-    // reconstruction costs what the clear sky's full-rate pass does (along takeoff at 320x180, 10.4
-    // against 10.2 ms a frame), in a still one a quarter of it (orbit, 1280x720: 105 -> 28 ms).
-    report.reducedRate = scene.render.temporal && inAir && (report.historyValid || !fullRateOnReset_) &&
-                         (scene.clouds.enabled || report.stillFrame);
     // The air's sphere (the preset's top: the model's may end lower, never higher), and the
     // ground's highest (the terrain's highest above the sea, the waves' crests well under the
     // kilometre added).
