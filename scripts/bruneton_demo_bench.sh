@@ -159,7 +159,7 @@ summarize() {
         }
         printf "\nBruneton demo against planet bench, %s, %s; medians of %d interleaved rounds (demo: %d frames after %d warm-up; ours: %d after %d)\n", \
             renderer, size, rounds, dframes, dwarmup, frames, warmup
-        printf "ms. ours: the earth preset (clouds, temporal march); clear: the same without clouds (the air alone: these still views at the reduced rate, a moving frame at full rate).\n"
+        printf "ms. ours: the earth preset (clouds, temporal march); clear: the same without clouds (the air marched at full rate).\n"
         printf "Our frame = cpu + wait summed over the passes; a pass = its own cpu + wait (--finish-each-pass on; see the script).\n"
         printf "Bars (issue 15): frame <= 1.5x the demo frame for orbit and space, <= 2x for ground; atmosphere pass <= 0.7x (orbit, space).\n\n"
         printf "| view | demo frame | our frame | / demo | bar | | clear frame | / demo | our sky passes (air + clouds) | / demo | clear sky pass (air alone) | / demo | bar | |\n"
