@@ -234,7 +234,14 @@ void main() {
     float historyContrast = 0.0;
     if (frame.historyValid > 0.5) {
         vec2 position = previousPixel(dir, reprojectionKm, cloudy);
-        motion = length(position - (vec2(pixel) + 0.5));
+        // The history's texels moved with the anti-aliasing's sub-pixel jitter (the explorer's: a
+        // point that stood still is read that much off its pixel's centre): no motion of the scene,
+        // which clamps the history and mixes in the spatial estimate. Counted as motion, every pixel
+        // took half of the spatial estimate each frame in the explorer (a still camera under the
+        // cumulus with the clock on, 96x54, against a renderer marching every pixel with the same
+        // anti-aliasing: worst mean error 1.13 -> 0.34 %, 99th percentile 9.5 -> 3.4 %).
+        vec2 jitterShift = vec2(frame.previousJitterX, frame.previousJitterY) - frame.jitter;
+        motion = length(position - (vec2(pixel) + 0.5) - jitterShift);
         readHistory(position, previousSurfaceDistance(dir, distance), behind, history, samples, historyWeight,
                     historyContrast);
     }
