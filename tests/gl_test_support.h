@@ -13,12 +13,11 @@
 #include <string>
 #include <vector>
 
-#include <unistd.h>
-
 #include "app/session.h"
 #include "gl/context.h"
 #include "gl/debug.h"
 #include "render/readback.h"
+#include "test_util.h"
 
 namespace planet::test {
 
@@ -64,33 +63,16 @@ inline glm::dvec3 pixelRay(const Camera& camera, glm::ivec2 size, int x, int ima
     return glm::normalize(camera.worldFromView() * glm::normalize(glm::dvec3(v) / v.w));
 }
 
-// The temporary shader trees of shadersWith, removed when the test program ends.
-struct ShaderTreeCopies {
-    std::vector<std::filesystem::path> roots;
-    ~ShaderTreeCopies() {
-        for (const std::filesystem::path& root : roots) {
-            std::error_code ignored;
-            std::filesystem::remove_all(root, ignored);
-        }
-    }
-};
-inline ShaderTreeCopies& shaderTreeCopies() {
-    static ShaderTreeCopies copies;
-    return copies;
-}
-
-// A copy of the repository's shader tree in a temporary folder named `name` and this process's id
-// (CTest runs tests side by side, and two of them may ask for the same tree: one removed it while
-// the other read it), with `from` replaced by `to` in the shader `file` (e.g. a #define switch
-// turned off), for a test that renders a scene with and without one piece. Fails the test when
-// `from` is not in the file.
+// A copy of the repository's shader tree in a TempDir named by `name` (its own per process: CTest
+// runs tests side by side, and two of them may ask for the same tree), kept until the test program
+// ends, with `from` replaced by `to` in the shader `file` (e.g. a #define switch turned off), for a
+// test that renders a scene with and without one piece. Fails the test when `from` is not in the file.
 inline std::filesystem::path shadersWith(const std::string& name, const std::string& file, const std::string& from,
                                          const std::string& to) {
     namespace fs = std::filesystem;
-    const fs::path root = fs::temp_directory_path() / (name + "_" + std::to_string(::getpid()));
-    fs::remove_all(root);
-    fs::create_directories(root);
-    shaderTreeCopies().roots.push_back(root);
+    static std::vector<std::unique_ptr<TempDir>> trees;  // removed when the program ends
+    trees.push_back(std::make_unique<TempDir>(name));
+    const fs::path root = trees.back()->path;
     fs::copy(repoPaths().shaders(), root / "shaders", fs::copy_options::recursive);
     const fs::path path = root / "shaders" / file;
     std::stringstream text;

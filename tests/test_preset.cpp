@@ -43,20 +43,7 @@ const fs::path kAssets = fs::path(PLANET_SOURCE_DIR) / "assets";
 using test::contains;
 using test::expectInputError;
 
-// A fresh, empty folder under the system temp dir, removed at the end of the test.
-struct TempDir {
-    fs::path path;
-    explicit TempDir(const std::string& tag) {
-        path = fs::temp_directory_path() / ("planet_" + tag + "_" + std::to_string(::getpid()));
-        fs::remove_all(path);
-        fs::create_directories(path);
-    }
-    ~TempDir() {
-        std::error_code ec;
-        fs::permissions(path, fs::perms::owner_all, fs::perm_options::add, ec);
-        fs::remove_all(path, ec);
-    }
-};
+using test::TempDir;
 
 TEST(Preset, ShippedPresetsLoadWithoutWarnings) {
     for (const char* name : {"earth", "mars", "hazy"}) {

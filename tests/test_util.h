@@ -3,12 +3,36 @@
 
 #include <gtest/gtest.h>
 
+#include <filesystem>
 #include <functional>
 #include <string>
+#include <system_error>
+
+#include <unistd.h>
 
 #include "scene/toml_error.h"
 
 namespace planet::test {
+
+// A fresh, empty folder under the system temp dir, named by `tag` and this process's id (CTest
+// runs tests side by side), removed when this goes out of scope.
+struct TempDir {
+    std::filesystem::path path;
+    explicit TempDir(const std::string& tag) {
+        namespace fs = std::filesystem;
+        path = fs::temp_directory_path() / ("planet_" + tag + "_" + std::to_string(::getpid()));
+        fs::remove_all(path);
+        fs::create_directories(path);
+    }
+    ~TempDir() {
+        namespace fs = std::filesystem;
+        std::error_code ec;
+        fs::permissions(path, fs::perms::owner_all, fs::perm_options::add, ec);
+        fs::remove_all(path, ec);
+    }
+    TempDir(const TempDir&) = delete;
+    TempDir& operator=(const TempDir&) = delete;
+};
 
 inline bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
 
