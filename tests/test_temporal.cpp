@@ -302,16 +302,21 @@ TEST_F(Temporal, WithOnlyTheClockRunningOnlyTheSamplesErrorsMarkPixels) {
 }
 
 TEST_F(Temporal, WithTheExplorersAntiAliasingAStillCameraWithTheClockOnStaysNearTheFullRate) {
-    // The explorer anti-aliases: its sub-pixel jitter moves every frame, and the history is read
-    // that much off each pixel's centre. That is no motion of the scene: a still camera under the
-    // cumulus with the clock on stays near a renderer that marches every pixel and anti-aliases
-    // the same way (the same jitter each frame). Measured on llvmpipe at 96x54, frames 16-39:
-    // worst mean 0.34 %, worst 99th percentile 3.4 %; with the jitter's shift taken for motion
-    // (every pixel then took half of its samples' spatial estimate each frame), 1.13 % and 9.5 %.
-    // A frame where the jitter moved counts as a moving one for the marks (the edges shift under
-    // the jitter): 62 % of the pixels marched again a frame at this size, 23 % at 480x270; as a
-    // clock-only one, 14 % but 2.3 % and 19 %.
-    const glm::ivec2 size{96, 54};
+    // The explorer anti-aliases: its sub-pixel jitter moves every frame. With the camera and the
+    // sun still, that is no motion of the scene: the history's texels are taken for their own
+    // pixels (render/sky_history.glsl), and only the samples' errors mark pixels for the full-rate
+    // march, as when only the clock runs without the jitter; a pixel at an edge that sees another
+    // surface under the jitter finds no history of it and is marched again. A still camera under
+    // the cumulus with the clock on stays near a renderer that marches every pixel and
+    // anti-aliases the same way (the same jitter each frame). Measured on llvmpipe at 192x108 over
+    // 40 frames, frames 16-39: 15.9 % of the pixels marched again a frame, worst mean 1.43 %, worst
+    // 99th percentile 10.8 %; with the jitter's frames taken for moving ones (the edges and lines
+    // marked, the history read across texels), 41 % and 0.42 %, 3.2 % (at 96x54: 62 %; at 480x270
+    // along cumulus_wind: 19 % against 5.8 %, the sky passes 0.72 against 0.33 of the full rate).
+    // The error left is each pixel's last sample's noise and sub-pixel place, held until its next
+    // visit, against the full-rate renderer's mean over the last ten or so jittered frames; it
+    // shrinks with the pixels (at 480x270 along cumulus_wind: mean 0.83 %, p99 6.1 %).
+    const glm::ivec2 size{192, 108};
     Session s = session("cumulus");
     s.scene.time_s = 19.0;
     Renderer explorer(test::repoPaths().shaders(), atmosphere::TableSizes::reduced());
@@ -342,8 +347,9 @@ TEST_F(Temporal, WithTheExplorersAntiAliasingAStillCameraWithTheClockOnStaysNear
     std::printf("anti-aliased, clock running, camera still: %.1f %% of the pixels marched again a frame; against "
                 "the anti-aliased full rate, frames 16-39: worst mean %.3f %%, worst p99 %.2f %%\n",
                 100 * refined, 100 * worstMean, 100 * worstP99);
-    EXPECT_LT(worstMean, 0.007);
-    EXPECT_LT(worstP99, 0.06);
+    EXPECT_LT(refined, 0.25);
+    EXPECT_LT(worstMean, 0.02);  // the bars for a path: 3 % and 15 %
+    EXPECT_LT(worstP99, 0.15);
 }
 
 TEST_F(Temporal, TheHistoryResetsOnAJumpAResizeAParameterChangeAndASunJump) {

@@ -28,7 +28,7 @@ layout(std140, binding = BLOCK_FRAME) uniform FrameBlock {
     vec3 cloudDriftSincePrevious; // m, world axes: how far the wind moved the clouds since the previous frame
     float previousJitterY;       // ... and y
     float temporalRefineError;   // render.temporal_refine_error (render/sky_temporal.frag)
-    float viewStillSincePrevious; // 1: the camera, its jitter and the sun are the previous frame's (the clock may have run on)
+    float viewStillSincePrevious; // 1: the camera and the sun are the previous frame's (the clock and the jitter may have moved on)
 } frame;
 
 // World-oriented direction of the view ray through a point in NDC (x, y in [-1, 1]).

@@ -99,9 +99,24 @@ void readHistory(vec2 position, float expected, vec3 behind, out SkySample histo
     }
 }
 
-// Where the previous frame saw the point of the ray `dir` (pixels, centres at +0.5): the
-// clouds' opacity-weighted distance moved back by the wind where they dominate (`cloudy`),
-// else the surface's, else (0 km) the direction alone.
+// How far the anti-aliasing's sub-pixel jitter moved between the frames (the explorer's: every
+// frame), in pixels: a point that stood still lies that far off its pixel's centre in the
+// previous frame's image.
+vec2 jitterShift() { return vec2(frame.previousJitterX, frame.previousJitterY) - frame.jitter; }
+
+// How far the history's texels lie off the pixels they are read for. Where the camera and the
+// sun stood (only the clock ran, or nothing), none: each texel is taken for its own pixel, a
+// sample of the pixel's area at the jitter it was traced with, as the pixel's new samples are
+// (at another jitter at each visit: subPixelJitter), so the history is neither resampled
+// between texels (blurred) every frame nor taken for moving, which marks every edge and line
+// for the full-rate march (tests/test_temporal.cpp, WithTheExplorersAntiAliasing...). Else the
+// jitter's shift: the history is read where the point was.
+vec2 historyJitterShift() { return frame.viewStillSincePrevious > 0.5 ? vec2(0.0) : jitterShift(); }
+
+// Where the history holds the point of the ray `dir` (pixels, centres at +0.5): where the
+// previous frame saw it, less the jitter's shift where the view stood (historyJitterShift). The
+// point: the clouds' opacity-weighted distance moved back by the wind where they dominate
+// (`cloudy`), else the surface's, else (0 km) the direction alone.
 vec2 previousPixel(vec3 dir, float reprojectionKm, bool cloudy) {
     vec3 previousNdc;
     if (reprojectionKm <= 0.0)
@@ -110,7 +125,7 @@ vec2 previousPixel(vec3 dir, float reprojectionKm, bool cloudy) {
         previousNdc = previousNdcFromWorld(dir * (reprojectionKm * M_PER_KM) - frame.cloudDriftSincePrevious);
     else
         previousNdc = previousNdcFromWorld(dir * (reprojectionKm * M_PER_KM));
-    return (previousNdc.xy * 0.5 + 0.5) * frame.viewportSize;
+    return (previousNdc.xy * 0.5 + 0.5) * frame.viewportSize - (jitterShift() - historyJitterShift());
 }
 
 // The distance the previous camera had to the surface point `distanceM` along `dir` (0: sky).

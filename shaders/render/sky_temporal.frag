@@ -234,20 +234,18 @@ void main() {
     float historyContrast = 0.0;
     if (frame.historyValid > 0.5) {
         vec2 position = previousPixel(dir, reprojectionKm, cloudy);
-        // The history's texels moved with the anti-aliasing's sub-pixel jitter (the explorer's: a
-        // point that stood still is read that much off its pixel's centre): no motion of the scene,
-        // which clamps the history and mixes in the spatial estimate. Counted as motion, every pixel
-        // took half of the spatial estimate each frame in the explorer (a still camera under the
-        // cumulus with the clock on, 96x54, against a renderer marching every pixel with the same
-        // anti-aliasing: worst mean error 1.13 -> 0.34 %, 99th percentile 9.5 -> 3.4 %).
-        vec2 jitterShift = vec2(frame.previousJitterX, frame.previousJitterY) - frame.jitter;
-        motion = length(position - (vec2(pixel) + 0.5) - jitterShift);
+        // Where the history's texels lie off the pixels by the anti-aliasing's sub-pixel jitter (a
+        // moving camera: render/sky_history.glsl), that is no motion of the scene, which clamps the
+        // history and mixes in the spatial estimate (counted as motion, every pixel took half of
+        // the spatial estimate each frame in the explorer).
+        motion = length(position - (vec2(pixel) + 0.5) - historyJitterShift());
         readHistory(position, previousSurfaceDistance(dir, distance), behind, history, samples, historyWeight,
                     historyContrast);
     }
     bool reprojected = historyWeight > 0.05;
     float moving = 1.0 - frame.stillSincePrevious;
-    // Only the clock ran (the camera and the sun stayed: the explorer with its clock on).
+    // Only the clock ran (the camera and the sun stayed: the explorer with its clock on, its
+    // anti-aliasing's jitter moving or not).
     bool clockOnly = frame.viewStillSincePrevious > 0.5;
     SkySample result;
     if (reprojected) {
@@ -301,6 +299,9 @@ void main() {
     // in any moving frame, the edges and lines of a cumulus field were 35 % of the pixels (a still
     // camera under the cumulus at 160x90 over 4 s: the sky passes cost 1.01 of the full rate,
     // and 0.37 with this; the mean error 0.29 % and 0.62 %, as a still camera's converges to).
+    // Under the anti-aliasing's moving jitter an edge between surfaces moves by a fraction of a
+    // pixel, and a pixel that sees another surface than before finds no history of it (not
+    // reprojected: marched again).
     // And there a sample's error is mostly the jitter's noise (its pixel's history is that pixel's
     // own single sample of 16 frames before, marched with another jitter; nothing else changed
     // but a fraction of a pixel of cloud), so it marks at CLOCK_REFINE_SCALE times the error.

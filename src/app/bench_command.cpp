@@ -401,11 +401,14 @@ int runBench(const BenchOptions& o) {
     const bool finishEachPass = o.finishEachPass == "on" || (o.finishEachPass == "auto" && softwareRenderer(renderer));
     frame.profiler().setFinishEachPass(finishEachPass);
     if (finishEachPass) std::printf("each pass waits for the work before it and for its own (--finish-each-pass)\n");
+    frame.setTemporalAntialiasing(o.antialias);
+    if (o.antialias) std::printf("anti-aliased as in the explorer: a sub-pixel jitter each frame (--antialias)\n");
 
     if (o.suite == "soak") return benchSoak(frame, session, size, o.frames, o);
     if (o.suite == "temporal") {
         Renderer fullRate(paths.shaders(), atmosphere::tableSizesFor(o.common.tables, renderer), session.continents);
         fullRate.profiler().setFinishEachPass(finishEachPass);
+        fullRate.setTemporalAntialiasing(o.antialias);  // the same jitter, frame for frame
         benchTemporal(frame, fullRate, session, paths, size, o);
         return 0;
     }

@@ -53,6 +53,7 @@ struct BenchOptions {
     std::string path = "takeoff";         // --suite temporal: the camera path
     std::optional<int> pathFrames;        // --suite temporal: frames over it (default: its natural count)
     std::string finishEachPass = "auto";  // on / off / auto (on for software renderers): Profiler::setFinishEachPass
+    bool antialias = false;               // the explorer's anti-aliasing: a sub-pixel jitter each frame, blended over time
     std::string csv = "out/bench.csv";
     std::string plot = "out/bench.png";
 };

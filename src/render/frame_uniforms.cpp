@@ -18,7 +18,10 @@ double halton(int index, int base) {
 }
 
 glm::vec2 subPixelJitter(int frameIndex) {
-    const int i = frameIndex % 16 + 1;  // from 1: element 0 of every Halton sequence is 0
+    // One step further along the cycle at every new cycle: the reduced-rate march traces each
+    // pixel every 16 frames (render/sparse_pattern.glsl), and with the same cycle it would trace
+    // it at the same jitter every time.
+    const int i = (frameIndex + frameIndex / 16) % 16 + 1;  // from 1: element 0 of every Halton sequence is 0
     return glm::vec2(static_cast<float>(halton(i, 2) - 0.5), static_cast<float>(halton(i, 3) - 0.5));
 }
 
@@ -101,9 +104,9 @@ FrameUniforms makeFrameUniforms(const Scene& scene, const Camera& camera, glm::i
     u.historyValid = previous ? 1.0f : 0.0f;
     // The view: the camera and the light; with the clock, everything (the wind moves the clouds).
     const bool viewStill = previous && viewStoodStill(before, camera, previous->sunDirection, scene.sunDirection());
-    // Only the clock ran: the view, and its sub-pixel jitter too (the explorer's anti-aliasing
-    // moves it every frame, and then every point moves by a fraction of a pixel).
-    u.viewStillSincePrevious = viewStill && previous->jitterPx == jitterPx ? 1.0f : 0.0f;
+    // Only the clock ran, and the explorer's anti-aliasing moved the sub-pixel jitter: the
+    // camera and the sun stood (render/sky_history.glsl then reads a pixel's own history texel).
+    u.viewStillSincePrevious = viewStill ? 1.0f : 0.0f;
     u.stillSincePrevious =
         viewStill && (previous->time_s == scene.time_s ||
                       cloudDriftPixels(scene, camera, size, scene.time_s - previous->time_s) < kStillCloudDriftPx)

@@ -54,7 +54,8 @@ struct FrameUniforms {
     glm::vec3 cloudDriftSincePrevious; // m, world axes: how far the wind moved the clouds since the previous frame
     float previousJitterY;
     float temporalRefineError;        // render.temporal_refine_error (render/sky_temporal.frag)
-    float viewStillSincePrevious;     // 1: the camera, its jitter and the sun are the previous frame's (the clock may have run)
+    float viewStillSincePrevious;     // 1: the camera and the sun are the previous frame's (the clock and the
+                                      // anti-aliasing's sub-pixel jitter may have moved on)
     float padding[2];
 };
 static_assert(offsetof(FrameUniforms, planetCenterFromCamera) == 320 && offsetof(FrameUniforms, cameraUp) == 336 &&
@@ -106,7 +107,8 @@ FrameUniforms makeFrameUniforms(const Scene& scene, const Camera& camera, glm::i
 // Element `index` (from 1) of the Halton sequence in `base`, in [0, 1).
 double halton(int index, int base);
 // The sub-pixel jitter of frame `frameIndex`: Halton (2, 3) over a cycle of 16 frames,
-// centred, in pixels in [-0.5, 0.5).
+// centred, in pixels in [-0.5, 0.5); each cycle starts one element further on, so that frames
+// 16 apart take every element in turn.
 glm::vec2 subPixelJitter(int frameIndex);
 // The offset of sample `sample` of `samples` (>= 1) that a still averages: Halton (2, 3)
 // from element 1, moved so that the offsets of the `samples` average to exactly (0, 0)
