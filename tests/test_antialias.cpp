@@ -86,8 +86,8 @@ TEST_F(Antialias, AFrameWithoutHistoryPassesThrough) {
 }
 
 // A still camera: after 32 frames the result is closer to the pixel's mean (the 16-sample
-// still) than one unjittered frame is: measured 1.46 -> 0.81 % (mountains: ridges, grass)
-// and 1.81 -> 0.59 % (space: the limb, coasts); the exponential mean keeps about a quarter
+// still) than one unjittered frame is: measured 1.76 -> 0.96 % (mountains: ridges, grass)
+// and 1.69 -> 0.54 % (space: the limb, coasts; fourteenth session); the exponential mean keeps about a quarter
 // of one frame's jitter noise. (Reprojecting the jittered sample instead of the pixel's
 // centre blurred the history every frame: 2.7 and 66 %.)
 TEST_F(Antialias, AStillCameraConvergesToThePixelsMean) {
@@ -108,7 +108,7 @@ TEST_F(Antialias, AStillCameraConvergesToThePixelsMean) {
 
 // A camera turning by a pixel and a half a frame for 12 frames after 16 still ones: the
 // result stays about as close to the supersampled still of where it now looks as one frame
-// is (measured 1.48 % against 1.43 %), where a history that is not reprojected drags the old
+// is (measured 1.38 % against 1.43 %), where a history that is not reprojected drags the old
 // view along (measured 4.25 %: ghosting). Without the ground detail: at 160x90 its 32 m
 // scale's waves sit at the frame's Nyquist limit, and the history's bilinear resampling
 // softens them as the view turns (with it: 2.19 % against 1.74 %, 1.26x; the softening of

@@ -198,6 +198,18 @@ TEST_F(CliTest, BenchWritesTableCsvAndPlot) {
     EXPECT_GT(w, 100);
 }
 
+TEST_F(CliTest, BenchAntialiasTimesTheExplorersFrames) {
+    // --antialias: each frame jittered and blended as the explorer does, so the pass "antialias"
+    // runs and is timed (the bench's frames are otherwise unjittered, without it).
+    const auto r = runCommand(planet("bench --antialias --size 48x27 --frames 2 --warmup 1 --views '" PLANET_SOURCE_DIR
+                                     "/assets/views/orbit.toml' --csv a.csv --plot ''"));
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_TRUE(contains(r.output, "anti-aliased as in the explorer")) << r.output;
+    std::ifstream csv(dir / "a.csv");
+    std::string text((std::istreambuf_iterator<char>(csv)), {});
+    EXPECT_TRUE(contains(text, ",orbit,antialias,2,")) << text;
+}
+
 TEST_F(CliTest, BenchTerrainSuiteSweepsGridSizeAndOctaves) {
     const auto r = runCommand(planet("bench --suite terrain --size 32x18 --frames 1 --warmup 0 --views '" PLANET_SOURCE_DIR
                                      "/assets/views/orbit.toml' --csv t.csv --plot ''"));

@@ -164,7 +164,7 @@ TEST(FrameUniformsTest, TheViewStandsStillWhileTheClockRunsAndToWithinRounding) 
     EXPECT_EQ(clock.stillSincePrevious, 0.0f);
     EXPECT_EQ(clock.viewStillSincePrevious, 1.0f);
     // The explorer's anti-aliasing jitters the projection by a fraction of a pixel each frame:
-    // the camera and the sun stood all the same (the still program is not taken: Renderer).
+    // the camera and the sun stood all the same.
     const FrameUniforms jittered = makeFrameUniforms(later, camera, size, 1, before, glm::dvec2(0.25, -0.125));
     EXPECT_EQ(jittered.viewStillSincePrevious, 1.0f);
     EXPECT_EQ(jittered.stillSincePrevious, 0.0f);

@@ -95,6 +95,55 @@ void addSample(inout SkySample result, inout float samples, SkySample fresh) {
     samples += 1.0;
 }
 
+// This frame's samples around a pixel, summed for its spatial estimate: each weighted by its
+// distance in the image (a tent four pixels wide: bilinear between samples) and by how alike its
+// surface distance is; where none within four pixels is alike, those within eight; where none at
+// all is (a thin surface between the samples), the best match: most alike, then nearest.
+struct SpatialSum {
+    SkySample near;
+    float nearWeight;
+    SkySample broad;
+    float broadWeight;
+    SkySample best;
+    float bestRank;
+};
+
+SpatialSum noSamples() {
+    SkySample none = SkySample(vec3(0.0), vec3(0.0));
+    return SpatialSum(none, 0.0, none, 0.0, none, -1.0);
+}
+
+// The tent four pixels wide at a sample `offset` blocks away (each axis).
+float sampleTent(vec2 offset) { return max(1.0 - offset.x, 0.0) * max(1.0 - offset.y, 0.0); }
+
+// Adds a sample `offset` blocks away whose surface is `alike` the pixel's; true when it is the
+// best match so far.
+bool addSpatialSample(inout SpatialSum sum, SkySample here, float alike, vec2 offset) {
+    float near = sampleTent(offset) * alike;
+    sum.near.inscatter += near * here.inscatter;
+    sum.near.transmittance += near * here.transmittance;
+    sum.nearWeight += near;
+    float wide = max(1.0 - 0.5 * offset.x, 0.0) * max(1.0 - 0.5 * offset.y, 0.0) * alike;  // a tent 8 px wide
+    sum.broad.inscatter += wide * here.inscatter;
+    sum.broad.transmittance += wide * here.transmittance;
+    sum.broadWeight += wide;
+    // (the traced pixel itself, where it is one, ranks first among equally alike ones: its
+    // reprojection distance is the pixel's own)
+    float rank = alike - 1.0e-3 * (offset.x + offset.y);
+    if (rank <= sum.bestRank) return false;
+    sum.bestRank = rank;
+    sum.best = here;
+    return true;
+}
+
+SkySample spatialEstimate(SpatialSum sum) {
+    if (sum.nearWeight > 1.0e-3)
+        return SkySample(sum.near.inscatter / sum.nearWeight, sum.near.transmittance / sum.nearWeight);
+    if (sum.broadWeight > 1.0e-3)
+        return SkySample(sum.broad.inscatter / sum.broadWeight, sum.broad.transmittance / sum.broadWeight);
+    return sum.best;
+}
+
 // The pixel's radiance through the air from its T and S, and T, S and samples for the history.
 void writeSky(vec3 dir, vec3 surface, float distance, SkySample result, float samples) {
     outRadiance = vec4(min(throughAir(dir, surface, distance, result.transmittance, result.inscatter),
@@ -103,31 +152,51 @@ void writeSky(vec3 dir, vec3 surface, float distance, SkySample result, float sa
 }
 
 #ifdef STILL_FRAME
-// A frame where nothing moved (the camera, its jitter, the sun and the clock, or the clock
-// only by the clouds' drift far under a pixel, from high above them: frame.stillSincePrevious
-// and viewStillSincePrevious, with a history, src/render/frame_uniforms.h; src/render/renderer.cpp
-// picks this variant). Then every pixel's point is its own texel of the history and nothing is
-// clamped or listed, so the general reconstruction below comes down to the history, and at the
-// traced pixel its running mean with the new sample: this variant is that alone, to the bit. A
-// program, not a branch: a software renderer runs every side of every branch, and the samples'
-// loop and the history's filters were four fifths of the pass (orbit, 480x270, llvmpipe: 12.6 ->
-// 2.7 ms).
+// A frame where the camera and the sun stood and nothing else moved at the pixels' scale (the
+// clock stopped, or it moved the clouds far under a pixel, from high above them:
+// frame.stillSincePrevious and viewStillSincePrevious, with a history, src/render/frame_uniforms.h;
+// src/render/renderer.cpp picks this variant), the anti-aliasing's sub-pixel jitter moving or not.
+// Then every pixel's history is its own texel (render/sky_history.glsl, historyJitterShift) and
+// nothing is clamped or listed, so the general reconstruction below comes down to the history,
+// and at the traced pixel its running mean with the new sample; and where a pixel's surface
+// changed (an edge that moved with the jitter), to its own new sample or its samples' spatial
+// estimate: this variant is that alone, to the bit. A program, not a branch: a software renderer
+// runs every side of every branch, and the samples' loop and the history's filters were four
+// fifths of the pass (orbit, 480x270, llvmpipe: 12.6 -> 2.7 ms).
 void main() {
     ivec2 pixel = ivec2(gl_FragCoord.xy);
     vec3 dir = worldRayFromNdc(vNdc);
     vec3 surface = texelFetch(surfaceRadiance, pixel, 0).rgb;
     float distance = texelFetch(surfaceDistance, pixel, 0).r;
+    if (distance <= 0.0 && rayMissesTheAir(dir)) {  // space: nothing to march or rebuild
+        outRadiance = vec4(spaceRadiance(gl_FragCoord.xy), 1.0);
+        outSkyMedium = spaceSkyMedium();
+        return;
+    }
     float samples;
     SkySample result = unpackSkyMedium(texelFetch(historySkyMedium, pixel, 0), samples);
     samples = floor(samples + 0.5);
     ivec2 block = pixel / SPARSE_BLOCK;
-    // A surface that changed under the still camera (none should: the grids and the waves are the
-    // camera's and the clock's) starts again from its block's sample.
-    bool surfaceChanged = distanceSimilarity(distance, texelFetch(historySurfaceDistance, pixel, 0).r) <= 0.05;
-    if (surfaceChanged) samples = 0.0;
-    if (sparseTracedPixel(block) == pixel || surfaceChanged)
-        addSample(result, samples, SkySample(texelFetch(sparseInscatter, block, 0).rgb,
-                                             texelFetch(sparseTransmittance, block, 0).rgb));
+    SkySample fresh = SkySample(texelFetch(sparseInscatter, block, 0).rgb, texelFetch(sparseTransmittance, block, 0).rgb);
+    bool traced = sparseTracedPixel(block) == pixel;
+    if (distanceSimilarity(distance, texelFetch(historySurfaceDistance, pixel, 0).r) <= 0.05) {
+        // Another surface than the history's at this pixel (under the anti-aliasing's jitter, an
+        // edge moved across it; without it, none should): no history, as in the general program.
+        SpatialSum around = noSamples();
+        ivec2 blocks = textureSize(sparseInscatter, 0);
+        for (int dy = -1; dy <= 1; ++dy) {
+            for (int dx = -1; dx <= 1; ++dx) {
+                ivec2 b = clamp(block + ivec2(dx, dy), ivec2(0), blocks - 1);
+                SkySample here = SkySample(texelFetch(sparseInscatter, b, 0).rgb, texelFetch(sparseTransmittance, b, 0).rgb);
+                float alike = distanceSimilarity(distance, texelFetch(sparseDistanceError, b, 0).r);
+                addSpatialSample(around, here, alike, abs(vec2(sparseTracedPixel(b) - pixel)) / float(SPARSE_BLOCK));
+            }
+        }
+        result = traced ? fresh : spatialEstimate(around);
+        samples = traced ? 1.0 : 0.0;
+    } else if (traced) {
+        addSample(result, samples, fresh);
+    }
     writeSky(dir, surface, distance, result, samples);
 }
 #else
@@ -146,12 +215,7 @@ void main() {
     // This frame's samples around the pixel.
     ivec2 block = pixel / SPARSE_BLOCK;
     ivec2 blocks = textureSize(sparseInscatter, 0);
-    SkySample spatial = SkySample(vec3(0.0), vec3(0.0));
-    float weightSum = 0.0;
-    SkySample broad = SkySample(vec3(0.0), vec3(0.0));
-    float broadSum = 0.0;
-    SkySample best;
-    float bestWeight = -1.0;
+    SpatialSum around = noSamples();
     float reprojectionKm = 0.0;
     bool cloudy = false;  // the clouds dominate the pixel: it moves with the wind
     bool traced = false;
@@ -172,13 +236,8 @@ void main() {
             float e = at.y;  // (now - then) / max(now, then)
             float alike = distanceSimilarity(distance, at.x);
             vec2 offset = abs(vec2(q - pixel)) / float(SPARSE_BLOCK);
-            float tent = max(1.0 - offset.x, 0.0) * max(1.0 - offset.y, 0.0);
-            // the best match: most alike, then nearest (the traced pixel itself, where it is one:
-            // its reprojection distance is the pixel's own)
-            float rank = alike - 1.0e-3 * (offset.x + offset.y);
-            if (rank > bestWeight) {
-                bestWeight = rank;
-                best = here;
+            float tent = sampleTent(offset);
+            if (addSpatialSample(around, here, alike, offset)) {  // the best match's point
                 reprojectionKm = s.a;
                 cloudy = t.a > CLOUDY_OPACITY;
             }
@@ -186,13 +245,6 @@ void main() {
                 traced = true;
                 fresh = here;
             }
-            spatial.inscatter += tent * alike * here.inscatter;
-            spatial.transmittance += tent * alike * here.transmittance;
-            weightSum += tent * alike;
-            float wide = max(1.0 - 0.5 * offset.x, 0.0) * max(1.0 - 0.5 * offset.y, 0.0) * alike;  // a tent 8 px wide
-            broad.inscatter += wide * here.inscatter;
-            broad.transmittance += wide * here.transmittance;
-            broadSum += wide;
             if (alike > 0.1) {
                 boxSamples += 1.0;
                 disagreement += abs(e);  // how far the sample is from what the history foresaw
@@ -210,15 +262,7 @@ void main() {
             }
         }
     }
-    if (weightSum > 1.0e-3) {
-        spatial.inscatter /= weightSum;
-        spatial.transmittance /= weightSum;
-    } else if (broadSum > 1.0e-3) {  // no alike sample within four pixels: those within eight
-        spatial.inscatter = broad.inscatter / broadSum;
-        spatial.transmittance = broad.transmittance / broadSum;
-    } else {  // none alike at all (a thin surface between the samples): the nearest best match
-        spatial = best;
-    }
+    SkySample spatial = spatialEstimate(around);
     // The samples are four pixels apart: what lies between them may reach past their range.
     vec3 marginS = BOX_MARGIN * (hiS - loS) + 0.01 * hiS, marginT = BOX_MARGIN * (hiT - loT) + 0.01 * hiT;
     loS -= marginS;

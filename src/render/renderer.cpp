@@ -473,11 +473,10 @@ void Renderer::prepare(const Scene& scene, const Camera& camera, glm::ivec2 size
     frameJitterPx_ = temporalAntialiasing_ ? glm::dvec2(subPixelJitter(frameIndex_)) : jitterPx_;
     const FrameUniforms uniforms = makeFrameUniforms(scene, camera, size, frameIndex_,
                                                      report.historyValid ? previous_ : std::nullopt, frameJitterPx_);
-    // Nothing moved, the sub-pixel jitter included: under the explorer's moving jitter a pixel at
-    // an edge sees another surface from frame to frame, which only the general reconstruction
-    // handles (the still program takes each pixel's history as its own).
-    report.stillFrame = report.historyValid && uniforms.stillSincePrevious > 0.5f &&
-                        uniforms.viewStillSincePrevious > 0.5f && previous_->jitterPx == frameJitterPx_;
+    // Nothing moved at the pixels' scale (the anti-aliasing's sub-pixel jitter may have: each
+    // pixel's history is then its own texel all the same, render/sky_history.glsl).
+    report.stillFrame =
+        report.historyValid && uniforms.stillSincePrevious > 0.5f && uniforms.viewStillSincePrevious > 0.5f;
     // The air's sphere (the preset's top: the model's may end lower, never higher), and the
     // ground's highest (the terrain's highest above the sea, the waves' crests well under the
     // kilometre added).
