@@ -167,7 +167,10 @@ TEST(FrameUniformsTest, TheViewStandsStillWhileTheClockRunsAndToWithinRounding) 
     // the camera and the sun stood all the same.
     const FrameUniforms jittered = makeFrameUniforms(later, camera, size, 1, before, glm::dvec2(0.25, -0.125));
     EXPECT_EQ(jittered.viewStillSincePrevious, 1.0f);
-    EXPECT_EQ(jittered.stillSincePrevious, 0.0f);
+    EXPECT_EQ(jittered.stillSincePrevious, 0.0f);  // the clock ran under the clouds
+    const FrameUniforms jitteredOnly = makeFrameUniforms(scene, camera, size, 1, before, glm::dvec2(0.25, -0.125));
+    EXPECT_EQ(jitteredOnly.viewStillSincePrevious, 1.0f);
+    EXPECT_EQ(jitteredOnly.stillSincePrevious, 1.0f);  // only the jitter moved: a still frame
 
     Camera rounded = camera;
     rounded.position += glm::dvec3(1.0e-6, -2.0e-6, 0.0);

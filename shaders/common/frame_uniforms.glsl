@@ -23,7 +23,8 @@ layout(std140, binding = BLOCK_FRAME) uniform FrameBlock {
     float exposure;              // tone mapping: display = 1 - exp(-exposure * radiance)
     int frameIndex;              // frames since the renderer started
     float cameraDepthBelowSea;   // m below the mean sea surface (> 0: the camera is under water)
-    float stillSincePrevious;    // 1: the camera, the sun and the clock are the previous frame's (nothing moved)
+    float stillSincePrevious;    // 1: the camera, the sun and the clock are the previous frame's (nothing moved but the
+                                 // anti-aliasing's sub-pixel jitter, maybe)
     float previousJitterX;       // pixels: the previous frame's jitter (its clipFromView's offset), x ...
     vec3 cloudDriftSincePrevious; // m, world axes: how far the wind moved the clouds since the previous frame
     float previousJitterY;       // ... and y

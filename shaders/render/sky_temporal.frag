@@ -123,7 +123,7 @@ bool addSpatialSample(inout SpatialSum sum, SkySample here, float alike, vec2 of
     sum.near.inscatter += near * here.inscatter;
     sum.near.transmittance += near * here.transmittance;
     sum.nearWeight += near;
-    float wide = max(1.0 - 0.5 * offset.x, 0.0) * max(1.0 - 0.5 * offset.y, 0.0) * alike;  // a tent 8 px wide
+    float wide = sampleTent(0.5 * offset) * alike;  // a tent 8 px wide
     sum.broad.inscatter += wide * here.inscatter;
     sum.broad.transmittance += wide * here.transmittance;
     sum.broadWeight += wide;
@@ -179,7 +179,8 @@ void main() {
     ivec2 block = pixel / SPARSE_BLOCK;
     SkySample fresh = SkySample(texelFetch(sparseInscatter, block, 0).rgb, texelFetch(sparseTransmittance, block, 0).rgb);
     bool traced = sparseTracedPixel(block) == pixel;
-    if (distanceSimilarity(distance, texelFetch(historySurfaceDistance, pixel, 0).r) <= 0.05) {
+    float expected = previousSurfaceDistance(dir, distance);  // as readHistory is asked (the camera stood, to a millimetre)
+    if (distanceSimilarity(expected, texelFetch(historySurfaceDistance, pixel, 0).r) <= 0.05) {
         // Another surface than the history's at this pixel (under the anti-aliasing's jitter, an
         // edge moved across it; without it, none should): no history, as in the general program.
         SpatialSum around = noSamples();
@@ -346,9 +347,11 @@ void main() {
     // Under the anti-aliasing's moving jitter an edge between surfaces moves by a fraction of a
     // pixel, and a pixel that sees another surface than before finds no history of it (not
     // reprojected: marched again).
-    // And there a sample's error is mostly the jitter's noise (its pixel's history is that pixel's
-    // own single sample of 16 frames before, marched with another jitter; nothing else changed
-    // but a fraction of a pixel of cloud), so it marks at CLOCK_REFINE_SCALE times the error.
+    // And there a sample's error is mostly the march's jitter's noise (its pixel's history is that
+    // pixel's own single sample of 16 frames before, marched with another start; nothing else
+    // changed but a fraction of a pixel of cloud, and under the anti-aliasing the sample's place
+    // in the pixel), so it marks at CLOCK_REFINE_SCALE times the error (tuned without the
+    // anti-aliasing; with it, see tests/test_temporal.cpp, WithTheExplorersAntiAliasing...).
     bool edge = false;
     if (!clockOnly) {
         for (int i = 0; i < 4; ++i) {

@@ -151,9 +151,10 @@ int main(int argc, char** argv) {
         ->check(CLI::IsMember({"auto", "on", "off"}))
         ->capture_default_str();
     benchCmd->add_flag("--antialias", bench.antialias,
-                       "Anti-alias as the explorer does while its temporal march is on: the projection moved by a "
-                       "sub-pixel jitter each frame, the frames blended over time (the bench's frames are otherwise "
-                       "unjittered, as `planet render` draws them)");
+                       "Anti-alias every frame the bench renders (its full-rate ones too) as the explorer does while "
+                       "its temporal march is on and no path plays: the projection moved by a sub-pixel jitter each "
+                       "frame, the frames blended over time (the bench's frames are otherwise unjittered, as `planet "
+                       "render` draws them)");
     benchCmd->add_option("--warmup", bench.warmup, "Unrecorded frames per view before recording")->capture_default_str();
     benchCmd->add_option("--csv", bench.csv, "CSV output (empty: none)")->capture_default_str();
     benchCmd->add_option("--plot", bench.plot, "Plot PNG output (empty: none)")->check(kPngFile)->capture_default_str();

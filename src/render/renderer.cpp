@@ -475,8 +475,7 @@ void Renderer::prepare(const Scene& scene, const Camera& camera, glm::ivec2 size
                                                      report.historyValid ? previous_ : std::nullopt, frameJitterPx_);
     // Nothing moved at the pixels' scale (the anti-aliasing's sub-pixel jitter may have: each
     // pixel's history is then its own texel all the same, render/sky_history.glsl).
-    report.stillFrame =
-        report.historyValid && uniforms.stillSincePrevious > 0.5f && uniforms.viewStillSincePrevious > 0.5f;
+    report.stillFrame = report.historyValid && uniforms.stillSincePrevious > 0.5f;  // the view stood too
     // The air's sphere (the preset's top: the model's may end lower, never higher), and the
     // ground's highest (the terrain's highest above the sea, the waves' crests well under the
     // kilometre added).

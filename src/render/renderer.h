@@ -110,7 +110,7 @@ struct PrepareReport {
     bool cloudsUpdated = false;          // the cloud volume or weather map was made and uploaded
     bool historyValid = false;           // the previous frame may be reprojected
     bool reducedRate = false;            // the sky was marched at the reduced rate (sky march, temporal, refine)
-    bool stillFrame = false;             // with a history, nothing moved since it: the reconstruction's
+    bool stillFrame = false;             // with a history, nothing moved since it (but the jitter, maybe): the reconstruction's
                                          // still-frame program (render/sky_temporal.frag, STILL_FRAME)
     bool underWater = false;             // the camera under the sea: the sky pass's and the ocean's UNDER_WATER programs
                                          // (render/sky.frag, ocean/ocean.frag)
@@ -167,7 +167,7 @@ public:
     // stills and sequences start exact) or reconstruct from its sparse samples alone (the
     // explorer: a reset costs no more than any other frame, and converges in 16 frames).
     void setFullRateOnReset(bool on) { fullRateOnReset_ = on; }
-    // Frames where nothing moved run the reconstruction's still-frame program (on, the default),
+    // Frames where nothing moved (but the jitter, maybe) run the reconstruction's still-frame program (on, the default),
     // or the general one, which gives the same image at five times the cost on llvmpipe (tests
     // compare the two).
     void setStillFrameProgram(bool on) { stillFrameProgram_ = on; }
@@ -236,7 +236,7 @@ private:
     AtmosphereProgram terrainReflection_;      // their search (ocean/terrain_reflection.comp)
     AtmosphereProgram sky_;  // mode UNDER_WATER: the camera under the sea
     AtmosphereProgram skySparse_;
-    AtmosphereProgram skyTemporal_;  // mode STILL_FRAME: frames where nothing moved
+    AtmosphereProgram skyTemporal_;  // mode STILL_FRAME: frames where nothing moved (but the jitter, maybe)
     AtmosphereProgram skyRefine_;
     FullscreenPass skySpace_;  // space around the air's bound (render/sky_space.frag)
     FullscreenPass antialias_;
