@@ -125,7 +125,8 @@ vec2 previousPixel(vec3 dir, float reprojectionKm, bool cloudy) {
         previousNdc = previousNdcFromWorld(dir * (reprojectionKm * M_PER_KM) - frame.cloudDriftSincePrevious);
     else
         previousNdc = previousNdcFromWorld(dir * (reprojectionKm * M_PER_KM));
-    return (previousNdc.xy * 0.5 + 0.5) * frame.viewportSize - (jitterShift() - historyJitterShift());
+    vec2 jitterTakenOut = frame.viewStillSincePrevious > 0.5 ? jitterShift() : vec2(0.0);  // historyJitterShift
+    return (previousNdc.xy * 0.5 + 0.5) * frame.viewportSize - jitterTakenOut;
 }
 
 // The distance the previous camera had to the surface point `distanceM` along `dir` (0: sky).

@@ -113,6 +113,24 @@ SpatialSum noSamples() {
     return SpatialSum(none, 0.0, none, 0.0, none, -1.0);
 }
 
+// The sample of the block `dxy` blocks from `block` (clamped into the frame), as both programs read
+// it: its T and S (.rgb; .a: the clouds' reprojection distance, km, and opacity), its surface
+// distance and the history's error there (render/sky_sparse.frag), and how far (blocks, each axis)
+// its traced pixel lies from `pixel`.
+struct BlockSample {
+    vec4 inscatter;
+    vec4 transmittance;
+    vec2 distanceError;
+    vec2 offset;
+};
+
+BlockSample blockSample(ivec2 block, ivec2 dxy, ivec2 pixel) {
+    ivec2 b = clamp(block + dxy, ivec2(0), textureSize(sparseInscatter, 0) - 1);
+    return BlockSample(texelFetch(sparseInscatter, b, 0), texelFetch(sparseTransmittance, b, 0),
+                       texelFetch(sparseDistanceError, b, 0).rg,
+                       abs(vec2(sparseTracedPixel(b) - pixel)) / float(SPARSE_BLOCK));
+}
+
 // The tent four pixels wide at a sample `offset` blocks away (each axis).
 float sampleTent(vec2 offset) { return max(1.0 - offset.x, 0.0) * max(1.0 - offset.y, 0.0); }
 
@@ -184,13 +202,11 @@ void main() {
         // Another surface than the history's at this pixel (under the anti-aliasing's jitter, an
         // edge moved across it; without it, none should): no history, as in the general program.
         SpatialSum around = noSamples();
-        ivec2 blocks = textureSize(sparseInscatter, 0);
         for (int dy = -1; dy <= 1; ++dy) {
             for (int dx = -1; dx <= 1; ++dx) {
-                ivec2 b = clamp(block + ivec2(dx, dy), ivec2(0), blocks - 1);
-                SkySample here = SkySample(texelFetch(sparseInscatter, b, 0).rgb, texelFetch(sparseTransmittance, b, 0).rgb);
-                float alike = distanceSimilarity(distance, texelFetch(sparseDistanceError, b, 0).r);
-                addSpatialSample(around, here, alike, abs(vec2(sparseTracedPixel(b) - pixel)) / float(SPARSE_BLOCK));
+                BlockSample a = blockSample(block, ivec2(dx, dy), pixel);
+                addSpatialSample(around, SkySample(a.inscatter.rgb, a.transmittance.rgb),
+                                 distanceSimilarity(distance, a.distanceError.x), a.offset);
             }
         }
         result = traced ? fresh : spatialEstimate(around);
@@ -215,7 +231,6 @@ void main() {
     vec3 behind = behindTheAir(dir, surface, distance);
     // This frame's samples around the pixel.
     ivec2 block = pixel / SPARSE_BLOCK;
-    ivec2 blocks = textureSize(sparseInscatter, 0);
     SpatialSum around = noSamples();
     float reprojectionKm = 0.0;
     bool cloudy = false;  // the clouds dominate the pixel: it moves with the wind
@@ -228,21 +243,18 @@ void main() {
     float gainLog = 0.0, gainWeight = 0.0;  // the nearest samples' log(now / history), weighted
     for (int dy = -1; dy <= 1; ++dy) {
         for (int dx = -1; dx <= 1; ++dx) {
-            ivec2 b = clamp(block + ivec2(dx, dy), ivec2(0), blocks - 1);
-            ivec2 q = sparseTracedPixel(b);
-            vec4 s = texelFetch(sparseInscatter, b, 0);
-            vec4 t = texelFetch(sparseTransmittance, b, 0);
+            BlockSample a = blockSample(block, ivec2(dx, dy), pixel);
+            vec4 s = a.inscatter, t = a.transmittance;
             SkySample here = SkySample(s.rgb, t.rgb);
-            vec2 at = texelFetch(sparseDistanceError, b, 0).rg;  // its surface distance, the history's error
-            float e = at.y;  // (now - then) / max(now, then)
-            float alike = distanceSimilarity(distance, at.x);
-            vec2 offset = abs(vec2(q - pixel)) / float(SPARSE_BLOCK);
+            float e = a.distanceError.y;  // (now - then) / max(now, then)
+            float alike = distanceSimilarity(distance, a.distanceError.x);
+            vec2 offset = a.offset;
             float tent = sampleTent(offset);
             if (addSpatialSample(around, here, alike, offset)) {  // the best match's point
                 reprojectionKm = s.a;
                 cloudy = t.a > CLOUDY_OPACITY;
             }
-            if (q == pixel) {
+            if (offset == vec2(0.0)) {  // the traced pixel itself
                 traced = true;
                 fresh = here;
             }
