@@ -70,6 +70,12 @@ TEST(ShadersOffline, EveryStageValidatesWithGlslang) {
             for (const char* mode : {"#define SEA_REFLECTION_COMPOSE 1\n", "#define SEA_REFLECTION_LIST_ALL 1\n"})
                 for (std::size_t i = 0; i < n; ++i) variants.push_back(variants[i] + mode);
         }
+        // Every program that reads the clouds, in its far-field build (src/render/atmosphere_program.h:
+        // CLOUD_FAR_FIELD_ONLY 1, from high up).
+        if (expanded.text.find("#if CLOUD_FAR_FIELD_ONLY") != std::string::npos) {
+            const std::size_t n = variants.size();
+            for (std::size_t i = 0; i < n; ++i) variants.push_back(variants[i] + "#define CLOUD_FAR_FIELD_ONLY 1\n");
+        }
         for (const std::string& variant : variants) {
             std::string text = expanded.text;
             text.insert(text.find('\n') + 1, variant);  // after #version

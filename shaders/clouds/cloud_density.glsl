@@ -7,11 +7,25 @@
 // swizzles), so that src/clouds/cloud_reference.h compiles this very text in double, with
 // CPU samplers for the volume and the weather map, as the CPU reference of the march.
 
+// CLOUD_FAR_FIELD_ONLY 1: the CPU found that every footprint this frame sees the clouds with is
+// the far field's alone (src/clouds/cloud_block.h, seenInFarFieldOnly: the camera far above the
+// layer and the highest ground, from space), so the volume is never read and the sun's way
+// through the layer is the closed form. A program rather than a branch (src/render/
+// atmosphere_program.h): a software renderer runs the volume's code and the sun samples' first
+// turn for every pixel, masked, even where no pixel takes them.
+#ifndef CLOUD_FAR_FIELD_ONLY
+#define CLOUD_FAR_FIELD_ONLY 0
+#endif
+
 // How far the far field has taken over (0: the volume alone, 1: the far field alone) for a
 // pixel footprint of `footprintKm`: from 2 to 8 voxels, where trilinear sampling starts to
 // alias and where it would be only noise.
 Number CloudFarBlend(Length footprintKm) {
+#if CLOUD_FAR_FIELD_ONLY
+    return 1.0;
+#else
     return smoothstep(2.0 * clouds.voxelKm, 8.0 * clouds.voxelKm, footprintKm);
+#endif
 }
 
 // The volume's mip level for a pixel footprint of `footprintKm`: level 0 up to a voxel, one
@@ -29,7 +43,9 @@ Number CloudVolumeLod(Length footprintKm) {
 Number CloudDensityAt(vec3 point, Length footprintKm) {
     Length r = length(point);
     if (r < clouds.bottomRadius || r > clouds.topRadius) return -1.0;
+#if !CLOUD_FAR_FIELD_ONLY  // (only ever built for a layer that is not of constant density)
     if (clouds.constantDensity != 0) return clouds.densityScale;
+#endif
     Number far = CloudFarBlend(footprintKm);
     // Eq. 12, camera-relative: the tile offset of the camera comes formed in double and
     // GL_REPEAT takes the fract.
@@ -46,10 +62,14 @@ Number CloudDensityAt(vec3 point, Length footprintKm) {
     Number fraction = (r - clouds.bottomRadius) / depth;
     bool typed = clouds.typeProfiles != 0;
     Number h = typed ? CloudTypeHeightSignal(fraction, weather.y) : CloudHeightSignal(r, clouds.bottomRadius, clouds.topRadius);  // Eq. 13
-    Number near = max(CloudDensityFromTexture(CloudCoverageRemap(value, coverage), h), 0.0);  // Eq. 14
     Number column = (2.0 / 3.0) * (typed ? CloudTypeProfileWidth(weather.y) : 1.0);
     Number farDensity = CloudFarFieldDensity(coverage, h, column, depth, clouds.extinction * clouds.densityScale);
+#if CLOUD_FAR_FIELD_ONLY
+    return farDensity * clouds.densityScale;
+#else
+    Number near = max(CloudDensityFromTexture(CloudCoverageRemap(value, coverage), h), 0.0);  // Eq. 14
     return mix(near, farDensity, far) * clouds.densityScale;
+#endif
 }
 
 // A footprint that sees the far field alone (8 voxels), for a caller that wants no volume
@@ -90,6 +110,9 @@ Length CloudDensityPathToSun(vec3 point, vec3 sun, Length maxLength, Length foot
     int count = CloudLayerIntervals(r, dot(point, sun) / r, 1.0e9, clouds.bottomRadius, clouds.topRadius, first, second);
     if (count == 0) return 0.0;
     Length way = min(first.y - first.x, maxLength);
+#if CLOUD_FAR_FIELD_ONLY
+    return CloudFarFieldPathToSun(point + sun * first.x, point + sun * (first.x + way), way);
+#else
     if (CloudFarBlend(footprintKm) >= 1.0 && clouds.constantDensity == 0)
         return CloudFarFieldPathToSun(point + sun * first.x, point + sun * (first.x + way), way);
     Length step = way / Number(max(samples, 1));
@@ -97,6 +120,7 @@ Length CloudDensityPathToSun(vec3 point, vec3 sun, Length maxLength, Length foot
     for (int i = 0; i < samples; ++i)
         path += max(CloudDensityAt(point + sun * (first.x + (Number(i) + 0.5) * step), footprintKm), 0.0) * step;
     return path;
+#endif
 }
 
 // The clouds' transmittance towards the sun (Michelic Eq. 15 along the sun ray: T_sun)

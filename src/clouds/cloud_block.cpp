@@ -60,4 +60,12 @@ CloudBlock makeCloudBlock(const Scene& scene, const Camera& camera, double large
     return b;
 }
 
+bool seenInFarFieldOnly(const CloudBlock& block, double cameraRadiusKm, double highestGroundRadiusKm) {
+    if (block.constantDensity != 0 || !(block.voxelKm < 1.0e20f) || !(block.pixelAngle > 0.0f)) return false;
+    const double nearestKm = cameraRadiusKm - std::max(double(block.topRadius), highestGroundRadiusKm);
+    // A margin over the 8 voxels for the shaders' float rounding of the distances and the blend.
+    constexpr double kFarFieldVoxels = 8.0 * 1.02;
+    return nearestKm * double(block.pixelAngle) >= kFarFieldVoxels * double(block.voxelKm);
+}
+
 }  // namespace planet::clouds

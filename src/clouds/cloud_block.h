@@ -59,4 +59,15 @@ glm::dvec3 windDriftKm(const Scene& scene, double time_s);
 CloudBlock makeCloudBlock(const Scene& scene, const Camera& camera, double largeStepKm, int volumeSize = 0,
                           double pixelAngle = 0.0);
 
+// Whether every footprint a frame sees the clouds with is the far field's alone (shaders/clouds/
+// cloud_density.glsl: CloudFarBlend at 1, from 8 voxels), so that its programs may be built
+// with CLOUD_FAR_FIELD_ONLY. A footprint is a point's distance from the camera times the angle
+// of a pixel (the march's, the surfaces' shadows'; the sea's reflected rays start at the sea,
+// farther still), and every point the clouds are looked up at lies in the layer or on the
+// ground: no nearer than the camera's height above the higher of the layer's top and
+// `highestGroundRadiusKm` (from the planet's centre). Not for a layer of constant density (no
+// far field) or without a volume (voxelKm "none"). `cameraRadiusKm`: the camera's distance
+// from the planet's centre, in double.
+bool seenInFarFieldOnly(const CloudBlock& block, double cameraRadiusKm, double highestGroundRadiusKm);
+
 }  // namespace planet::clouds

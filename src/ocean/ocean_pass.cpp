@@ -105,7 +105,7 @@ std::vector<gl::HotProgram*> OceanPass::builtPrograms() {
     return programs;
 }
 
-void OceanPass::formGridReflection(bool elekTable) {
+void OceanPass::formGridReflection(const AtmosphereVariant& variant) {
     const int points = mesh_.pointCount();
     if (points != gridReflectionPoints_) {
         const int side = mesh_.size();
@@ -121,13 +121,13 @@ void OceanPass::formGridReflection(bool elekTable) {
     mesh_.bindBlock();
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding::BUFFER_OCEAN_GRID_POINTS, mesh_.points().id());
     glBindImageTexture(binding::IMAGE_OCEAN_GRID_REFLECTION, gridReflection_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
-    glUseProgram(gridReflectionProgram_.get(elekTable, false, smoothMirror_ ? kGridSmoothMirrorMode : kGridFlatMirrorMode).id());
+    glUseProgram(gridReflectionProgram_.get(variant, smoothMirror_ ? kGridSmoothMirrorMode : kGridFlatMirrorMode).id());
     glDispatchCompute(static_cast<GLuint>((points + kGridReflectionGroup - 1) / kGridReflectionGroup), 1, 1);
     glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
     glBindTextureUnit(binding::UNIT_OCEAN_GRID_REFLECTION, gridReflection_.id());
 }
 
-void OceanPass::draw(bool elekTable, bool underWater) {
+void OceanPass::draw(const AtmosphereVariant& variant, bool underWater) {
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding::BUFFER_OCEAN_WAVES, waves_.id());
     bindBlock();
     glEnable(GL_DEPTH_TEST);
@@ -135,8 +135,8 @@ void OceanPass::draw(bool elekTable, bool underWater) {
     glDepthMask(GL_TRUE);
     glDisable(GL_CULL_FACE);  // the surface is seen from below too
     const int mode = underWater ? kUnderWaterMode : smoothMirror_ ? kSmoothMirrorMode : flatMirror_ ? kFlatMirrorMode : 0;
-    if (mode == kFlatMirrorMode || mode == kSmoothMirrorMode) formGridReflection(elekTable);
-    glUseProgram(program_.get(elekTable, false, mode).id());
+    if (mode == kFlatMirrorMode || mode == kSmoothMirrorMode) formGridReflection(variant);
+    glUseProgram(program_.get(variant, mode).id());
     if (countPrimitives_) glBeginQuery(GL_PRIMITIVES_GENERATED, primitives_.id());
     mesh_.draw();
     if (countPrimitives_) {

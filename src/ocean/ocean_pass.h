@@ -46,9 +46,10 @@ public:
                  const std::shared_ptr<const noise::CubeMap>& continents);
     // The sea surface into the bound target (surface radiance and distance + the G-buffer's
     // depth, tested and written), reading the seabed copies, the atmosphere and the terrain's
-    // height field (the sea floor), with the program for the table in use.
-    // `underWater`: the camera under the sea (the frame's PrepareReport), the surface seen from below.
-    void draw(bool elekTable, bool underWater);
+    // height field (the sea floor), with the program of the frame's variant (the table in use, the
+    // clouds' far field). `underWater`: the camera under the sea (the frame's PrepareReport), the
+    // surface seen from below.
+    void draw(const AtmosphereVariant& variant, bool underWater);
 
     // Binds the sea's parameters (the last prepare()'s OceanBlock) for a program other than this
     // pass's that reads them: the terrain shadow's samples of the sea's surface.
@@ -90,7 +91,7 @@ public:
 private:
     void uploadWaves(const Scene& scene, const Camera& camera);
     // ocean/grid_reflection.comp over the grid's points, for the program in the flat or smooth mode.
-    void formGridReflection(bool elekTable);
+    void formGridReflection(const AtmosphereVariant& variant);
 
     AtmosphereProgram program_;  // modes OCEAN_FLAT_MIRROR, UNDER_WATER (the surface seen from below), OCEAN_SMOOTH_MIRROR
     FlatMirror flatMirrorMode_ = FlatMirror::Auto;

@@ -1,12 +1,15 @@
-// A program that includes shaders/atmosphere/interface.glsl, in the variant the scene renders
-// with: ELEK_TABLE 0 (Bruneton's 4D table) or 1 (Elek's 3D table; preset
-// atmosphere.elek_3d_table), and for the sky passes LIGHT_SHAFTS_TERRAIN 0 or 1 (preset
-// terrain.light_shafts with terrain.shadows). Programs rather than run-time branches: software
-// renderers execute both sides of even a uniform branch, and a GPU is spared the registers
-// of the unused one (the light shafts' code, its loops at no turns, doubled the sky pass on
-// llvmpipe: docs/PERFORMANCE.md, 2026-12-03). The default variant (4D table, no shafts) is
-// built at once, the others the first time they are asked for. A pass may name modes besides
-// (the constructor's `modes`), built the same way.
+// A program that includes shaders/atmosphere/interface.glsl, in the variant the frame renders
+// with (AtmosphereVariant): ELEK_TABLE 0 (Bruneton's 4D table) or 1 (Elek's 3D table; preset
+// atmosphere.elek_3d_table), for the sky passes LIGHT_SHAFTS_TERRAIN 0 or 1 (preset
+// terrain.light_shafts with terrain.shadows), and CLOUD_FAR_FIELD_ONLY 0 or 1 (every footprint
+// the frame sees the clouds with is the far field's: src/clouds/cloud_block.h,
+// seenInFarFieldOnly). Programs rather than run-time branches: software renderers execute both
+// sides of even a uniform branch, and a GPU is spared the registers of the unused one (the
+// light shafts' code, its loops at no turns, doubled the sky pass on llvmpipe:
+// docs/PERFORMANCE.md, 2026-12-03). The default variant (4D table, no shafts, the clouds' volume
+// read) is built at once, the others the first time they are asked for (a pause while they
+// compile, once: the explorer climbing into the clouds' far field). A pass may name
+// modes besides (the constructor's `modes`), built the same way.
 #pragma once
 
 #include <array>
@@ -21,6 +24,13 @@
 
 namespace planet {
 
+// What the CPU knows of the whole frame that a program reading the atmosphere is built for.
+struct AtmosphereVariant {
+    bool elekTable = false;      // ELEK_TABLE
+    bool lightShafts = false;    // LIGHT_SHAFTS_TERRAIN (the sky passes)
+    bool cloudFarField = false;  // CLOUD_FAR_FIELD_ONLY (shaders/clouds/cloud_density.glsl)
+};
+
 class AtmosphereProgram {
 public:
     // `sources` is the frame's; the atmosphere's table sizes and the variant's #defines are added here.
@@ -30,18 +40,19 @@ public:
     AtmosphereProgram(const gl::ShaderSources& sources, const atmosphere::TableSizes& sizes, gl::ProgramDesc desc,
                       std::vector<std::string> modes = {})
         : sources_(sources), sizes_(sizes), desc_(std::move(desc)), modes_(std::move(modes)),
-          variants_(kTableAndShaftVariants * (modes_.size() + 1)) {
-        variants_[0].emplace(variant(0), desc_);
+          variants_(kVariants * (modes_.size() + 1)) {
+        variants_[0].emplace(sourcesOf(0), desc_);
     }
 
-    gl::HotProgram& get(bool elekTable, bool lightShafts = false, int mode = 0) {
-        const int index = (elekTable ? 1 : 0) + (lightShafts ? 2 : 0) + kTableAndShaftVariants * mode;
+    gl::HotProgram& get(const AtmosphereVariant& v, int mode = 0) {
+        const int index = (v.elekTable ? 1 : 0) + (v.lightShafts ? 2 : 0) + (v.cloudFarField ? 4 : 0) + kVariants * mode;
         if (!variants_.at(static_cast<std::size_t>(index))) {
             gl::ProgramDesc d = desc_;
             if (mode > 0) d.name += " (" + modes_[static_cast<std::size_t>(mode - 1)] + ")";
-            if (elekTable) d.name += " (Elek 3D table)";
-            if (lightShafts) d.name += " (light shafts)";
-            variants_[static_cast<std::size_t>(index)].emplace(variant(index), d);
+            if (v.elekTable) d.name += " (Elek 3D table)";
+            if (v.lightShafts) d.name += " (light shafts)";
+            if (v.cloudFarField) d.name += " (clouds' far field)";
+            variants_[static_cast<std::size_t>(index)].emplace(sourcesOf(index), d);
         }
         return *variants_[static_cast<std::size_t>(index)];
     }
@@ -51,7 +62,7 @@ public:
     void setTableSizes(const atmosphere::TableSizes& sizes) {
         sizes_ = sizes;
         for (std::size_t i = 0; i < variants_.size(); ++i)
-            if (variants_[i]) variants_[i]->setSources(variant(static_cast<int>(i)));
+            if (variants_[i]) variants_[i]->setSources(sourcesOf(static_cast<int>(i)));
     }
     // The programs built so far, for hot reload.
     std::vector<gl::HotProgram*> built() {
@@ -62,13 +73,15 @@ public:
     }
 
 private:
-    static constexpr int kTableAndShaftVariants = 4;  // bit 0: ELEK_TABLE, bit 1: LIGHT_SHAFTS_TERRAIN; then the mode
+    // bit 0: ELEK_TABLE, bit 1: LIGHT_SHAFTS_TERRAIN, bit 2: CLOUD_FAR_FIELD_ONLY; then the mode
+    static constexpr int kVariants = 8;
 
-    gl::ShaderSources variant(int index) const {
-        const int mode = index / kTableAndShaftVariants;
+    gl::ShaderSources sourcesOf(int index) const {
+        const int mode = index / kVariants;
+        const auto flag = [index](int bit) { return (index & bit) ? "1\n" : "0\n"; };
         return {sources_.root, sources_.preamble + atmosphere::atmosphereShaderDefines(sizes_) + "#define ELEK_TABLE " +
-                                   ((index & 1) ? "1" : "0") + "\n#define LIGHT_SHAFTS_TERRAIN " +
-                                   ((index & 2) ? "1" : "0") + "\n" +
+                                   flag(1) + "#define LIGHT_SHAFTS_TERRAIN " + flag(2) + "#define CLOUD_FAR_FIELD_ONLY " +
+                                   flag(4) +
                                    (mode > 0 ? "#define " + modes_[static_cast<std::size_t>(mode - 1)] + " 1\n" : "")};
     }
 

@@ -122,7 +122,8 @@ Renderer::Renderer(const std::filesystem::path& shaderRoot, const atmosphere::Ta
       continents_(continents ? std::move(continents) : std::make_shared<terrain::Continents>()),
       terrain_(sources_),
       terrainShadow_(withAtmosphere(sources_, programTables_), "terrain shadow", "render/terrain_shadow.frag"),
-      surfaceLight_(withAtmosphere(sources_, programTables_), "surface light", "render/surface_light.frag"),
+      surfaceLight_(sources_, programTables_,
+                    gl::ProgramDesc{"surface light", {"common/fullscreen.vert", "render/surface_light.frag"}}),
       ocean_(sources_, programTables_),
       seaReflection_(sources_, programTables_,
                      gl::ProgramDesc{"sea reflection", {"common/fullscreen.vert", "ocean/sea_reflection.frag"}},
@@ -204,10 +205,10 @@ std::vector<Renderer::Pass> Renderer::makePasses() {
                           glBindTextureUnit(binding::UNIT_GBUFFER_DEPTH, g.depth.id());
                           glBindTextureUnit(binding::UNIT_TERRAIN_SHADOW, targets_.terrainShadowSamples().visibility.id());
                           glBindVertexArray(emptyVertexArray_.id());
-                          glUseProgram(surfaceLight_.program().id());
+                          glUseProgram(surfaceLight_.get(AtmosphereVariant{false, false, lastPrepare_.cloudFarField}).id());
                           drawScissored(lastPrepare_.groundBound, targets_.size());  // it discards elsewhere
                       },
-                      [this] { return std::vector<gl::HotProgram*>{&surfaceLight_.program()}; }});
+                      [this] { return builtVariants({&surfaceLight_}); }});
     passes.push_back({{"ocean", {R::GBuffer, R::TerrainShadow, R::SurfaceRadiance}, {R::SurfaceRadiance, R::GBuffer, R::SeaReflection}},
                       [](const Scene& s) { return s.terrain.ocean; },
                       [this](const Scene& s) {
@@ -218,7 +219,7 @@ std::vector<Renderer::Pass> Renderer::makePasses() {
                           glBindTextureUnit(binding::UNIT_SEABED_RADIANCE, targets_.seabedRadiance().id());
                           glBindTextureUnit(binding::UNIT_TERRAIN_SHADOW, targets_.terrainShadowSamples().visibility.id());
                           glBeginQuery(GL_ANY_SAMPLES_PASSED, oceanDrew_.id());
-                          ocean_.draw(s.atmosphere.elek_3d_table, lastPrepare_.underWater);
+                          ocean_.draw(variantFor(s), lastPrepare_.underWater);
                           glEndQuery(GL_ANY_SAMPLES_PASSED);
                       },
                       [this] { return ocean_.builtPrograms(); }});
@@ -245,12 +246,12 @@ std::vector<Renderer::Pass> Renderer::makePasses() {
                           glBindVertexArray(emptyVertexArray_.id());
                           glBeginConditionalRender(oceanDrew_.id(), GL_QUERY_WAIT);
                           glBeginQuery(GL_ANY_SAMPLES_PASSED, landSeen_.id());
-                          glUseProgram(terrainReflectionList_.get(s.atmosphere.elek_3d_table, false, 1).id());
+                          glUseProgram(terrainReflectionList_.get(variantFor(s), 1).id());
                           drawScissored(lastPrepare_.groundBound, targets_.size());  // the sea lies within it
                           glEndQuery(GL_ANY_SAMPLES_PASSED);
                           glEndConditionalRender();
                           glBeginConditionalRender(landSeen_.id(), GL_QUERY_WAIT);
-                          glUseProgram(terrainReflectionList_.get(s.atmosphere.elek_3d_table).id());
+                          glUseProgram(terrainReflectionList_.get(variantFor(s)).id());
                           drawScissored(lastPrepare_.groundBound, targets_.size());
                           glEndConditionalRender();
                           glColorMaski(0, GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
@@ -259,7 +260,7 @@ std::vector<Renderer::Pass> Renderer::makePasses() {
                                              GL_FALSE, 0, GL_READ_WRITE, GL_RGBA16F);
                           glBindImageTexture(binding::IMAGE_SEA_REFLECTION, targets_.seaReflection().id(), 0, GL_FALSE,
                                              0, GL_READ_WRITE, GL_RGBA32F);
-                          glUseProgram(terrainReflection_.get(s.atmosphere.elek_3d_table).id());
+                          glUseProgram(terrainReflection_.get(variantFor(s)).id());
                           dispatchOverList(targets_.terrainReflectionList());
                       },
                       [this] { return builtVariants({&terrainReflectionList_, &terrainReflection_}); }});
@@ -282,7 +283,7 @@ std::vector<Renderer::Pass> Renderer::makePasses() {
                           if (seaReflectionSamples_) {
                               glBindFramebuffer(GL_FRAMEBUFFER, samples.framebuffer.id());
                               glViewport(0, 0, samples.size.x, samples.size.y);
-                              glUseProgram(seaReflection_.get(s.atmosphere.elek_3d_table).id());
+                              glUseProgram(seaReflection_.get(variantFor(s)).id());
                               glDrawArrays(GL_TRIANGLES, 0, 3);
                               glViewport(0, 0, targets_.size().x, targets_.size().y);
                           }
@@ -294,7 +295,7 @@ std::vector<Renderer::Pass> Renderer::makePasses() {
                           glEnablei(GL_BLEND, 0);
                           glBlendFunci(0, GL_ONE, GL_ONE);
                           // Mode SEA_REFLECTION_COMPOSE, or SEA_REFLECTION_LIST_ALL (every pixel listed).
-                          glUseProgram(seaReflection_.get(s.atmosphere.elek_3d_table, false, seaReflectionSamples_ ? 1 : 2).id());
+                          glUseProgram(seaReflection_.get(variantFor(s), seaReflectionSamples_ ? 1 : 2).id());
                           glDrawArrays(GL_TRIANGLES, 0, 3);
                           glDisablei(GL_BLEND, 0);
                           glEndConditionalRender();
@@ -303,7 +304,7 @@ std::vector<Renderer::Pass> Renderer::makePasses() {
                                           GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
                           glBindImageTexture(binding::IMAGE_SURFACE_RADIANCE, targets_.surfaceRadiance().id(), 0,
                                              GL_FALSE, 0, GL_READ_WRITE, GL_RGBA16F);
-                          glUseProgram(seaReflectionListed_.get(s.atmosphere.elek_3d_table).id());
+                          glUseProgram(seaReflectionListed_.get(variantFor(s)).id());
                           dispatchOverList(targets_.seaReflectionList());
                       },
                       [this] { return builtVariants({&seaReflection_, &seaReflectionListed_}); }});
@@ -317,7 +318,7 @@ std::vector<Renderer::Pass> Renderer::makePasses() {
                           glBindVertexArray(emptyVertexArray_.id());
                           const int underWater = lastPrepare_.underWater ? 1 : 0;  // sky_'s mode UNDER_WATER
                           drawSpaceAround(lastPrepare_.skyBound);
-                          glUseProgram(sky_.get(s.atmosphere.elek_3d_table, lightShafts(s), underWater).id());
+                          glUseProgram(sky_.get(skyVariantFor(s), underWater).id());
                           drawScissored(lastPrepare_.skyBound, targets_.size());
                       },
                       [this] { return withProgram(sky_.built(), skySpace_.program()); }});
@@ -332,7 +333,7 @@ std::vector<Renderer::Pass> Renderer::makePasses() {
                           glBindTextureUnit(binding::UNIT_HISTORY_SKY_MEDIUM, history.skyMedium.id());
                           glBindTextureUnit(binding::UNIT_HISTORY_SURFACE_DISTANCE, history.surfaceDistance.id());
                           glBindVertexArray(emptyVertexArray_.id());
-                          glUseProgram(skySparse_.get(s.atmosphere.elek_3d_table, lightShafts(s)).id());
+                          glUseProgram(skySparse_.get(skyVariantFor(s)).id());
                           // The blocks that the reconstruction reads around the pixels it marches.
                           drawScissored(blocksAround(lastPrepare_.skyBound, kSparseBlock, sparse.size), sparse.size);
                           glViewport(0, 0, targets_.size().x, targets_.size().y);
@@ -356,7 +357,7 @@ std::vector<Renderer::Pass> Renderer::makePasses() {
                           glBindVertexArray(emptyVertexArray_.id());
                           const int still = lastPrepare_.stillFrame && stillFrameProgram_ ? 1 : 0;  // STILL_FRAME
                           drawSpaceAround(lastPrepare_.skyBound);
-                          glUseProgram(skyTemporal_.get(s.atmosphere.elek_3d_table, lightShafts(s), still).id());
+                          glUseProgram(skyTemporal_.get(skyVariantFor(s), still).id());
                           drawScissored(lastPrepare_.skyBound, targets_.size());
                       },
                       [this] { return withProgram(skyTemporal_.built(), skySpace_.program()); }});
@@ -370,7 +371,7 @@ std::vector<Renderer::Pass> Renderer::makePasses() {
                                              GL_WRITE_ONLY, GL_RGBA16F);
                           glBindImageTexture(binding::IMAGE_SKY_MEDIUM, targets_.skyMedium().id(), 0, GL_FALSE, 0,
                                              GL_WRITE_ONLY, GL_RGBA32UI);
-                          glUseProgram(skyRefine_.get(s.atmosphere.elek_3d_table, lightShafts(s)).id());
+                          glUseProgram(skyRefine_.get(skyVariantFor(s)).id());
                           // The list and its group counts, written by the reconstruction's fragments.
                           glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT);
                           // One invocation per listed pixel: a software renderer pays for the pixels
@@ -485,14 +486,18 @@ void Renderer::prepare(const Scene& scene, const Camera& camera, glm::ivec2 size
         return screenBounds_ ? sphereScreenBound(clipFromView, viewFromWorld, -camera.position, radius, size)
                              : ScreenRect{{0, 0}, size};
     };
+    const double highestGroundM = scene.planetRadiusM() + scene.ocean.sea_level_m + std::max(scene.terrain.max_height_m, 0.0) +
+                                  1000.0;
     report.skyBound = bound(scene.atmosphere.top_radius_km * 1000.0);
-    report.groundBound = bound(scene.planetRadiusM() + scene.ocean.sea_level_m +
-                               std::max(scene.terrain.max_height_m, 0.0) + 1000.0);
+    report.groundBound = bound(highestGroundM);
     glNamedBufferSubData(frameUniforms_.id(), 0, sizeof uniforms, &uniforms);
     glBindBufferBase(GL_UNIFORM_BUFFER, binding::BLOCK_FRAME, frameUniforms_.id());
     atmosphere_.bind();
     report.cloudsUpdated = clouds_.update(scene, camera, size.y);
     clouds_.bind();
+    report.cloudFarField = cloudFarFieldPrograms_ &&
+                           clouds::seenInFarFieldOnly(clouds_.block(), glm::length(camera.position) / 1000.0,
+                                                      highestGroundM / 1000.0);
     terrain_.prepare(scene, camera, *continents_->map(), camera.fovY_rad / size.y, double(size.x) / size.y);
     if (scene.terrain.ocean) ocean_.prepare(scene, camera, camera.fovY_rad / size.y, double(size.x) / size.y, continents_->map());
     lastPrepare_ = report;
@@ -555,6 +560,16 @@ void Renderer::tonemapRadiance(const ImageRGBAF& radiance) {
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
 }
 
+AtmosphereVariant Renderer::variantFor(const Scene& scene) const {
+    return AtmosphereVariant{scene.atmosphere.elek_3d_table, false, lastPrepare_.cloudFarField};
+}
+
+AtmosphereVariant Renderer::skyVariantFor(const Scene& scene) const {
+    AtmosphereVariant v = variantFor(scene);
+    v.lightShafts = lightShafts(scene);
+    return v;
+}
+
 bool Renderer::matchAtmosphereTables() {
     const atmosphere::TableSizes& sizes = atmosphere_.sizes();
     if (sizes == programTables_) return false;
@@ -562,12 +577,11 @@ bool Renderer::matchAtmosphereTables() {
     // rebuild as a hot reload (a program that fails keeps the last good one and shows its error).
     const auto started = std::chrono::steady_clock::now();
     programTables_ = sizes;
-    surfaceLight_.program().setSources(withAtmosphere(sources_, sizes));
     terrainShadow_.program().setSources(withAtmosphere(sources_, sizes));
-    std::vector<gl::HotProgram*> rebuilt{&terrainShadow_.program(), &surfaceLight_.program()};
+    std::vector<gl::HotProgram*> rebuilt{&terrainShadow_.program()};
     std::vector<AtmosphereProgram*> withTables = ocean_.atmospherePrograms();
-    for (AtmosphereProgram* p : {&seaReflection_, &seaReflectionListed_, &terrainReflectionList_, &terrainReflection_,
-                                 &sky_, &skySparse_, &skyTemporal_, &skyRefine_})
+    for (AtmosphereProgram* p : {&surfaceLight_, &seaReflection_, &seaReflectionListed_, &terrainReflectionList_,
+                                 &terrainReflection_, &sky_, &skySparse_, &skyTemporal_, &skyRefine_})
         withTables.push_back(p);
     for (AtmosphereProgram* p : withTables) {
         p->setTableSizes(sizes);

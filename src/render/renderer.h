@@ -114,6 +114,8 @@ struct PrepareReport {
                                          // still-frame program (render/sky_temporal.frag, STILL_FRAME)
     bool underWater = false;             // the camera under the sea: the sky pass's and the ocean's UNDER_WATER programs
                                          // (render/sky.frag, ocean/ocean.frag)
+    bool cloudFarField = false;          // every footprint the clouds are seen with is the far field's: the programs
+                                         // built with CLOUD_FAR_FIELD_ONLY (clouds/cloud_block.h, seenInFarFieldOnly)
     ScreenRect skyBound;                 // the pixels the sky passes ran their programs on: those that can see the air
                                          // (render/screen_bound.h; the whole frame where it fills it), space elsewhere
     ScreenRect groundBound;              // the pixels the terrain shadow and the surface light ran on: those that can
@@ -171,6 +173,10 @@ public:
     // or the general one, which gives the same image at five times the cost on llvmpipe (tests
     // compare the two).
     void setStillFrameProgram(bool on) { stillFrameProgram_ = on; }
+    // Frames that see the clouds in the far field alone (from space) run programs built for it
+    // (on, the default), or the general ones, which give the same image at more cost on llvmpipe
+    // (tests compare the two).
+    void setCloudFarFieldPrograms(bool on) { cloudFarFieldPrograms_ = on; }
     // The sky passes scissored to the rectangle that holds the air's sphere, space drawn around
     // it by render/sky_space.frag, and the terrain shadow and the surface light to the one that
     // holds the ground's highest sphere (on, the default), or run over the whole frame (tests
@@ -211,6 +217,10 @@ private:
     };
     std::vector<Pass> makePasses();
     void prepare(const Scene& scene, const Camera& camera, glm::ivec2 size);
+    // The variant of the programs that read the atmosphere for this frame (the last prepare()'s),
+    // and the sky passes' (with the terrain's shadows in the air where the preset asks for them).
+    AtmosphereVariant variantFor(const Scene& scene) const;
+    AtmosphereVariant skyVariantFor(const Scene& scene) const;
     bool historyUsable(const Scene& scene, const Camera& camera, bool resized) const;
     // Space around the air's bound where it does not fill the frame (render/sky_space.frag), in
     // up to four scissored bands: the sky passes then run scissored to the bound.
@@ -227,7 +237,7 @@ private:
     clouds::CloudResources clouds_;
     TerrainPass terrain_;
     FullscreenPass terrainShadow_;
-    FullscreenPass surfaceLight_;
+    AtmosphereProgram surfaceLight_;
     OceanPass ocean_;
     AtmosphereProgram seaReflection_;  // mode SEA_REFLECTION_COMPOSE: the samples' spread (ocean/sea_reflection.frag)
     AtmosphereProgram seaReflectionListed_;  // the pixels the spread could not serve (ocean/sea_reflection.comp)
@@ -251,6 +261,7 @@ private:
     int frameIndex_ = 0;
     bool fullRateOnReset_ = true;
     bool stillFrameProgram_ = true;
+    bool cloudFarFieldPrograms_ = true;
     bool seaReflectionSamples_ = true;
     bool screenBounds_ = true;
     // Whether the ocean drew any pixel this frame: the sea reflection pass draws only then
