@@ -39,15 +39,13 @@
 #include "render/sky_air.glsl"
 #include "render/sparse_pattern.glsl"
 #include "render/sky_history.glsl"
+#include "render/sky_spatial.glsl"
 #define PIXEL_LIST_BINDING BUFFER_SKY_REFINE
 #include "render/pixel_list.glsl"
 
 in vec2 vNdc;
 layout(binding = UNIT_SURFACE_RADIANCE) uniform sampler2D surfaceRadiance;
 layout(binding = UNIT_SURFACE_DISTANCE) uniform sampler2D surfaceDistance;
-layout(binding = UNIT_SPARSE_INSCATTER) uniform sampler2D sparseInscatter;
-layout(binding = UNIT_SPARSE_TRANSMITTANCE) uniform sampler2D sparseTransmittance;
-layout(binding = UNIT_SPARSE_DISTANCE_ERROR) uniform sampler2D sparseDistanceError;  // distance m, history error
 
 layout(location = 0) out vec4 outRadiance;
 layout(location = 1) out uvec4 outSkyMedium;  // T, S, samples in the history
@@ -95,73 +93,6 @@ void addSample(inout SkySample result, inout float samples, SkySample fresh) {
     samples += 1.0;
 }
 
-// This frame's samples around a pixel, summed for its spatial estimate: each weighted by its
-// distance in the image (a tent four pixels wide: bilinear between samples) and by how alike its
-// surface distance is; where none within four pixels is alike, those within eight; where none at
-// all is (a thin surface between the samples), the best match: most alike, then nearest.
-struct SpatialSum {
-    SkySample near;
-    float nearWeight;
-    SkySample broad;
-    float broadWeight;
-    SkySample best;
-    float bestRank;
-};
-
-SpatialSum noSamples() {
-    SkySample none = SkySample(vec3(0.0), vec3(0.0));
-    return SpatialSum(none, 0.0, none, 0.0, none, -1.0);
-}
-
-// The sample of the block `dxy` blocks from `block` (clamped into the frame), as both programs read
-// it: its T and S (.rgb; .a: the clouds' reprojection distance, km, and opacity), its surface
-// distance and the history's error there (render/sky_sparse.frag), and how far (blocks, each axis)
-// its traced pixel lies from `pixel`.
-struct BlockSample {
-    vec4 inscatter;
-    vec4 transmittance;
-    vec2 distanceError;
-    vec2 offset;
-};
-
-BlockSample blockSample(ivec2 block, ivec2 dxy, ivec2 pixel) {
-    ivec2 b = clamp(block + dxy, ivec2(0), textureSize(sparseInscatter, 0) - 1);
-    return BlockSample(texelFetch(sparseInscatter, b, 0), texelFetch(sparseTransmittance, b, 0),
-                       texelFetch(sparseDistanceError, b, 0).rg,
-                       abs(vec2(sparseTracedPixel(b) - pixel)) / float(SPARSE_BLOCK));
-}
-
-// The tent four pixels wide at a sample `offset` blocks away (each axis).
-float sampleTent(vec2 offset) { return max(1.0 - offset.x, 0.0) * max(1.0 - offset.y, 0.0); }
-
-// Adds a sample `offset` blocks away whose surface is `alike` the pixel's; true when it is the
-// best match so far.
-bool addSpatialSample(inout SpatialSum sum, SkySample here, float alike, vec2 offset) {
-    float near = sampleTent(offset) * alike;
-    sum.near.inscatter += near * here.inscatter;
-    sum.near.transmittance += near * here.transmittance;
-    sum.nearWeight += near;
-    float wide = sampleTent(0.5 * offset) * alike;  // a tent 8 px wide
-    sum.broad.inscatter += wide * here.inscatter;
-    sum.broad.transmittance += wide * here.transmittance;
-    sum.broadWeight += wide;
-    // (the traced pixel itself, where it is one, ranks first among equally alike ones: its
-    // reprojection distance is the pixel's own)
-    float rank = alike - 1.0e-3 * (offset.x + offset.y);
-    if (rank <= sum.bestRank) return false;
-    sum.bestRank = rank;
-    sum.best = here;
-    return true;
-}
-
-SkySample spatialEstimate(SpatialSum sum) {
-    if (sum.nearWeight > 1.0e-3)
-        return SkySample(sum.near.inscatter / sum.nearWeight, sum.near.transmittance / sum.nearWeight);
-    if (sum.broadWeight > 1.0e-3)
-        return SkySample(sum.broad.inscatter / sum.broadWeight, sum.broad.transmittance / sum.broadWeight);
-    return sum.best;
-}
-
 // The pixel's radiance through the air from its T and S, and T, S and samples for the history.
 void writeSky(vec3 dir, vec3 surface, float distance, SkySample result, float samples) {
     outRadiance = vec4(min(throughAir(dir, surface, distance, result.transmittance, result.inscatter),
@@ -175,12 +106,16 @@ void writeSky(vec3 dir, vec3 surface, float distance, SkySample result, float sa
 // frame.stillSincePrevious and viewStillSincePrevious, with a history, src/render/frame_uniforms.h;
 // src/render/renderer.cpp picks this variant), the anti-aliasing's sub-pixel jitter moving or not.
 // Then every pixel's history is its own texel (render/sky_history.glsl, historyJitterShift) and
-// nothing is clamped or listed, so the general reconstruction below comes down to the history,
+// nothing is clamped or marched again, so the general reconstruction below comes down to the history,
 // and at the traced pixel its running mean with the new sample; and where a pixel's surface
 // changed (an edge that moved with the jitter), to its own new sample or its samples' spatial
-// estimate: this variant is that alone, to the bit. A program, not a branch: a software renderer
-// runs every side of every branch, and the samples' loop and the history's filters were four
-// fifths of the pass (orbit, 480x270, llvmpipe: 12.6 -> 2.7 ms).
+// estimate, which render/sky_refine.comp's STILL_FRAME program forms for the pixels listed here
+// (render/sky_spatial.glsl, surfaceChangedEstimate): this variant and that are the general
+// program alone, to the bit. Programs, not branches: a software renderer runs every side of
+// every branch, and the samples' loop and the history's filters were four fifths of the pass
+// (orbit, 480x270, llvmpipe: 12.6 -> 2.7 ms); the samples' loop for the pixels whose surface
+// changed, behind an if here, still cost half of this program (1280x720: orbit 41 -> 20 ms,
+// space 26 -> 15 ms without it; docs/PERFORMANCE.md, fifteenth session).
 void main() {
     ivec2 pixel = ivec2(gl_FragCoord.xy);
     vec3 dir = worldRayFromNdc(vNdc);
@@ -195,24 +130,15 @@ void main() {
     SkySample result = unpackSkyMedium(texelFetch(historySkyMedium, pixel, 0), samples);
     samples = floor(samples + 0.5);
     ivec2 block = pixel / SPARSE_BLOCK;
-    SkySample fresh = SkySample(texelFetch(sparseInscatter, block, 0).rgb, texelFetch(sparseTransmittance, block, 0).rgb);
-    bool traced = sparseTracedPixel(block) == pixel;
     float expected = previousSurfaceDistance(dir, distance);  // as readHistory is asked (the camera stood, to a millimetre)
     if (distanceSimilarity(expected, texelFetch(historySurfaceDistance, pixel, 0).r) <= 0.05) {
         // Another surface than the history's at this pixel (under the anti-aliasing's jitter, an
-        // edge moved across it; without it, none should): no history, as in the general program.
-        SpatialSum around = noSamples();
-        for (int dy = -1; dy <= 1; ++dy) {
-            for (int dx = -1; dx <= 1; ++dx) {
-                BlockSample a = blockSample(block, ivec2(dx, dy), pixel);
-                addSpatialSample(around, SkySample(a.inscatter.rgb, a.transmittance.rgb),
-                                 distanceSimilarity(distance, a.distanceError.x), a.offset);
-            }
-        }
-        result = traced ? fresh : spatialEstimate(around);
-        samples = traced ? 1.0 : 0.0;
-    } else if (traced) {
-        addSample(result, samples, fresh);
+        // edge moved across it; without it, none should): no history, as in the general program;
+        // render/sky_refine.comp writes it over what this leaves.
+        listPixel(pixel);
+    } else if (sparseTracedPixel(block) == pixel) {
+        addSample(result, samples,
+                  SkySample(texelFetch(sparseInscatter, block, 0).rgb, texelFetch(sparseTransmittance, block, 0).rgb));
     }
     writeSky(dir, surface, distance, result, samples);
 }

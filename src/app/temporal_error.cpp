@@ -8,7 +8,9 @@ namespace planet {
 
 std::vector<std::size_t> refinedPixels(const Renderer& r, glm::ivec2 size) {
     std::vector<std::size_t> marked;
-    if (!r.lastPrepare().reducedRate) return marked;
+    // (A still frame lists the pixels whose surface changed under the anti-aliasing's jitter for their
+    // spatial estimate, not for a march: render/sky_refine.comp's STILL_FRAME program.)
+    if (!r.lastPrepare().reducedRate || r.lastPrepare().stillFrame) return marked;
     for (glm::ivec2 p : r.targets().readSkyRefineList())
         marked.push_back(std::size_t(size.y - 1 - p.y) * std::size_t(size.x) + std::size_t(p.x));  // row 0 the top
     std::sort(marked.begin(), marked.end());

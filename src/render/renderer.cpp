@@ -143,8 +143,7 @@ Renderer::Renderer(const std::filesystem::path& shaderRoot, const atmosphere::Ta
       skyTemporal_(sources_, programTables_,
                    gl::ProgramDesc{"sky temporal", {"common/fullscreen.vert", "render/sky_temporal.frag"}},
                    {"STILL_FRAME"}),
-      skyRefine_(sources_, programTables_,
-                 gl::ProgramDesc{"sky refine", {"render/sky_refine.comp"}}),
+      skyRefine_(sources_, programTables_, gl::ProgramDesc{"sky refine", {"render/sky_refine.comp"}}, {"STILL_FRAME"}),
       skySpace_(withAtmosphere(sources_, programTables_), "sky space", "render/sky_space.frag"),
       antialias_(sources_, "antialias", "render/antialias.frag"),
       tonemap_(sources_, "tonemap", "render/tonemap.frag"),
@@ -355,9 +354,8 @@ std::vector<Renderer::Pass> Renderer::makePasses() {
                           glBindTextureUnit(binding::UNIT_HISTORY_SKY_MEDIUM, history.skyMedium.id());
                           glBindTextureUnit(binding::UNIT_HISTORY_SURFACE_DISTANCE, history.surfaceDistance.id());
                           glBindVertexArray(emptyVertexArray_.id());
-                          const int still = lastPrepare_.stillFrame && stillFrameProgram_ ? 1 : 0;  // STILL_FRAME
                           drawSpaceAround(lastPrepare_.skyBound);
-                          glUseProgram(skyTemporal_.get(skyVariantFor(s), still).id());
+                          glUseProgram(skyTemporal_.get(skyVariantFor(s), stillProgram() ? 1 : 0).id());
                           drawScissored(lastPrepare_.skyBound, targets_.size());
                       },
                       [this] { return withProgram(skyTemporal_.built(), skySpace_.program()); }});
@@ -371,12 +369,19 @@ std::vector<Renderer::Pass> Renderer::makePasses() {
                                              GL_WRITE_ONLY, GL_RGBA16F);
                           glBindImageTexture(binding::IMAGE_SKY_MEDIUM, targets_.skyMedium().id(), 0, GL_FALSE, 0,
                                              GL_WRITE_ONLY, GL_RGBA32UI);
-                          glUseProgram(skyRefine_.get(skyVariantFor(s)).id());
+                          // A still frame's program: the spatial estimate, from the samples, at the
+                          // pixels whose surface changed (STILL_FRAME, render/sky_refine.comp).
+                          const SparseSky& sparse = targets_.sparseSky();
+                          glBindTextureUnit(binding::UNIT_SPARSE_INSCATTER, sparse.inscatter.id());
+                          glBindTextureUnit(binding::UNIT_SPARSE_TRANSMITTANCE, sparse.transmittance.id());
+                          glBindTextureUnit(binding::UNIT_SPARSE_DISTANCE_ERROR, sparse.distanceError.id());
+                          glUseProgram(skyRefine_.get(skyVariantFor(s), stillProgram() ? 1 : 0).id());
                           // The list and its group counts, written by the reconstruction's fragments.
                           glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT);
                           // One invocation per listed pixel: a software renderer pays for the pixels
                           // it marches, not for each marked pixel's 4x4 block (a fragment pass over
-                          // the marks did), and a still frame, which lists none, dispatches nothing.
+                          // the marks did), and a still frame without the anti-aliasing's jitter,
+                          // which lists none, dispatches nothing.
                           glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, targets_.skyRefineList().id());
                           glDispatchComputeIndirect(0);
                           glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, 0);
@@ -559,6 +564,8 @@ void Renderer::tonemapRadiance(const ImageRGBAF& radiance) {
     tonemap_.draw();
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
 }
+
+bool Renderer::stillProgram() const { return lastPrepare_.stillFrame && stillFrameProgram_; }
 
 AtmosphereVariant Renderer::variantFor(const Scene& scene) const {
     return AtmosphereVariant{scene.atmosphere.elek_3d_table, false, lastPrepare_.cloudFarField};

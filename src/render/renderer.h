@@ -221,6 +221,8 @@ private:
     // and the sky passes' (with the terrain's shadows in the air where the preset asks for them).
     AtmosphereVariant variantFor(const Scene& scene) const;
     AtmosphereVariant skyVariantFor(const Scene& scene) const;
+    // Whether the sky's reconstruction and refine run their still-frame programs (STILL_FRAME) this frame.
+    bool stillProgram() const;
     bool historyUsable(const Scene& scene, const Camera& camera, bool resized) const;
     // Space around the air's bound where it does not fill the frame (render/sky_space.frag), in
     // up to four scissored bands: the sky passes then run scissored to the bound.
@@ -247,7 +249,7 @@ private:
     AtmosphereProgram sky_;  // mode UNDER_WATER: the camera under the sea
     AtmosphereProgram skySparse_;
     AtmosphereProgram skyTemporal_;  // mode STILL_FRAME: frames where nothing moved (but the jitter, maybe)
-    AtmosphereProgram skyRefine_;
+    AtmosphereProgram skyRefine_;    // mode STILL_FRAME: a still frame's pixels whose surface changed
     FullscreenPass skySpace_;  // space around the air's bound (render/sky_space.frag)
     FullscreenPass antialias_;
     FullscreenPass tonemap_;
