@@ -573,7 +573,9 @@ TEST_F(TerrainShadowRender, TheSampledShadowIsTheMarchedOneButForSlivers) {
 // cost the ocean pass a quarter of its time): the same frames but for shadows narrower than the
 // samples' spacing. The samples hold both lit and shadowed water on the lake (2366 / 3825).
 // Measured: lake 0.007 % of surface pixels differ, mean under 0.0001 %; beach and sunset 0
-// and 0 (lit water only). Able to fail: samples of the sea that all say "lit" leave the
+// and 0 (lit water only). Since the march runs after the ocean pass at the listed pixels
+// (ocean/sea_terrain_shadow.glsl), taking the hidden sun's share from the lit radiance stored as
+// half floats, a marched pixel is rounded twice: lake 0.15 % differ (by over 1e-3), mean 0.008 %. Able to fail: samples of the sea that all say "lit" leave the
 // range's shadow on the lake lit (55 % of pixels differ, mean 0.90 %: the sea's own light is
 // a small part of its radiance beside the sky it reflects).
 TEST_F(TerrainShadowRender, TheSeaTakesItsShadowFromTheSamplesButForSlivers) {
@@ -595,8 +597,15 @@ TEST_F(TerrainShadowRender, TheSeaTakesItsShadowFromTheSamplesButForSlivers) {
         sampling.render(s->scene, s->camera, size);
         const SampledAgainstMarched sampled = compareSurfaceRadiance(
             readTextureRGBAF(sampling.targets().surfaceRadiance(), size.x, size.y), reference, size);
-        std::printf("%s: sampled: %.3f %% of surface pixels differ, mean %.4f %%\n", name, 100.0 * sampled.differing,
-                    100.0 * sampled.meanRelative);
+        // The pixels whose march ran after the ocean pass (ocean/sea_terrain_shadow.glsl), within the list.
+        const glm::uvec2 listed = sampling.targets().seaTerrainShadowListCount();
+        std::printf("%s: sampled: %.3f %% of surface pixels differ, mean %.4f %%; %u pixels marched after the ocean "
+                    "(capacity %u)\n",
+                    name, 100.0 * sampled.differing, 100.0 * sampled.meanRelative, listed.x, listed.y);
+        EXPECT_LE(listed.x, listed.y);
+        if (s == &lake) {
+            EXPECT_GT(listed.x, 1000u) << "the range's shadow's edges across the lake";
+        }
         EXPECT_LT(sampled.differing, 0.01);
         EXPECT_LT(sampled.meanRelative, 0.005);
         if (s != &lake) continue;

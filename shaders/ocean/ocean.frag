@@ -67,6 +67,7 @@ layout(binding = UNIT_SEABED_DEPTH) uniform sampler2D seabedDepth;         // co
 layout(binding = UNIT_SEABED_RADIANCE) uniform sampler2D seabedRadiance;   // copy of the surface radiance
 layout(binding = UNIT_TERRAIN_SHADOW) uniform sampler2D terrainShadowSamples;  // g: the sea surface's (render/terrain_shadow.frag)
 #include "render/terrain_shadow_samples.glsl"
+#include "ocean/sea_terrain_shadow.glsl"
 
 layout(location = 0) out vec4 outSurfaceRadiance;
 layout(location = 1) out float outSurfaceDistance;
@@ -238,25 +239,25 @@ void main() {
     // march starting at sea level, not on the sea floor), formed once for the light into the
     // water and the glitter.
     float sunVisibility = 1.0;
+    bool marchLater = false;  // the terrain's shadow marched by ocean/sea_terrain_shadow.comp
+    float radius = atmosphereUniforms.sunAngularRadius;
     if (dot(up, sun) > 0.0) {
         sunVisibility = CloudSunTransmittance(point, sun, CLOUD_SHADOW_MAX_KM);
         // The terrain's march only where it may find land and the samples around the pixel do
-        // not agree (a shadow's edge, the shore): a loop of one turn or none, so that the march's
-        // samples take no turn on the open sea nor where the samples decide (a software
-        // renderer runs an if's code for every pixel, masked, but leaves a loop that no pixel of
-        // a group enters: README "Programs, not branches").
+        // not agree (a shadow's edge, the shore), and not here: the pixel is shaded as lit by the
+        // terrain and listed (ocean/sea_terrain_shadow.glsl), since a software renderer runs a
+        // march's first turn for every pixel here, listed or not (README "Programs, not branches").
         bool mayReach = terrainShadowMayReachSea(up, sun, ocean.seaLevel, frame.planetRadius / M_PER_KM,
                                                  ocean.continentLipschitz, ocean.continentSampleSlackRad, terrainShape,
                                                  uContinents);
-        float radius = atmosphereUniforms.sunAngularRadius;
         float clearance = 1.0;  // rad: lit, where no land is within reach
-        int marches = mayReach ? 1 : 0;
+        // (Without shadows, or built without them, the march finds the sun clear.)
+        marchLater = SUN_VISIBILITY_TERRAIN != 0 && mayReach && terrainShadows != 0;
 #if OCEAN_TERRAIN_SHADOW_FROM_SAMPLES && SUN_VISIBILITY_TERRAIN
         if (terrainShadows != 0 && terrainClearanceFromSamples(terrainShadowSamples, pixel, 1, radius, clearance))
-            marches = 0;
+            marchLater = false;
 #endif
-        for (int i = 0; i < marches; ++i) clearance = TerrainShadowClearanceAbove(point, ocean.seaLevel, sun);
-        sunVisibility *= terrainShadowDiscShare(clearance, radius);
+        if (!marchLater) sunVisibility *= terrainShadowDiscShare(clearance, radius);
     }
     vec3 skyIrradiance;
     vec3 sunIrradiance = SunAndSkyIrradianceUnshadowed(point, up, sun, skyIrradiance) * sunVisibility;
@@ -271,5 +272,21 @@ void main() {
     vec3 surface = (1.0 - fresnel) * waterTransmittance * behind + fresnel * sky + glitter +
                    (1.0 - fresnel) * (1.0 - waterTransmittance) * deep;
     surface = mix(surface, foamRadiance(sunIrradiance + skyIrradiance), foam);
-    outSurfaceRadiance = vec4(min(mix(behind, surface, coverage), vec3(MAX_HDR_RADIANCE)), 1.0);
+    vec3 radiance = mix(behind, surface, coverage);
+    if (marchLater) {
+        // What of the radiance the sun's light carries (each term linear in it), for the march to
+        // take away the share its disc is hidden: the glitter, the light scattered up, the foam.
+        vec3 sunShare = coverage * ((1.0 - foam) * (glitter + (1.0 - fresnel) * (1.0 - waterTransmittance) *
+                                                               deepWaterRadiance(sunIrradiance)) +
+                                    foam * foamRadiance(sunIrradiance));
+        // Past the list's capacity, where the radiance is clamped (the sun's glitter beyond what
+        // the target holds), or at a shore fragment behind the land's edge (its pixel keeps the
+        // land's distance), the nearest sample's clearance instead.
+        bool listed = !behindLand && all(lessThanEqual(radiance, vec3(MAX_HDR_RADIANCE))) &&
+                      listSeaTerrainShadow(pixel, seaDistance, sunShare);
+        if (!listed)
+            radiance -= sunShare * (1.0 - terrainShadowDiscShare(
+                                              terrainClearanceNearestSample(terrainShadowSamples, pixel, 1), radius));
+    }
+    outSurfaceRadiance = vec4(min(radiance, vec3(MAX_HDR_RADIANCE)), 1.0);
 }

@@ -33,3 +33,13 @@ bool terrainClearanceFromSamples(sampler2D samples, ivec2 pixel, int channel, fl
     if (agree) clearance = a;
     return agree;
 }
+
+// The clearance of the sample nearest `pixel` (the first corner of its cell) where it shows a
+// surface, else lit (1 rad): a stand-in where no march can be had (ocean/sea_terrain_shadow.glsl).
+float terrainClearanceNearestSample(sampler2D samples, ivec2 pixel, int channel) {
+    ivec2 corners[4];
+    blockSampleCorners(pixel, TERRAIN_SHADOW_SPACING, textureSize(samples, 0) - 1, corners);
+    float a = texelFetch(samples, corners[0], 0)[channel];
+    return a > 0.5 * TERRAIN_SHADOW_NO_SURFACE ? a : 1.0;
+}
+

@@ -13,6 +13,13 @@ namespace {
 #include "shaders/render/sample_spacing.glsl"
 
 constexpr GLsizeiptr kRefineListHeaderBytes = 16;  // render/pixel_list.glsl: groups x, y, z, count
+// ocean/sea_terrain_shadow.glsl: groups x, y, z, count, capacity, 3 unused; a uvec4 an entry.
+constexpr GLsizeiptr kSeaTerrainShadowHeaderBytes = 32;
+constexpr GLsizeiptr kSeaTerrainShadowEntryBytes = 16;
+// Every pixel of the frame (16 bytes a pixel): at a low sun over water among mountains most of
+// the sea may be listed (a quarter of the frame in the flooded valley's test), and with the
+// samples off (OCEAN_TERRAIN_SHADOW_FROM_SAMPLES 0) all of it.
+GLuint seaTerrainShadowCapacity(glm::ivec2 size) { return GLuint(std::max(1, size.x * size.y)); }
 
 gl::Texture makeTexture(GLenum format, glm::ivec2 size, const char* label) {
     gl::Texture t(GL_TEXTURE_2D);
@@ -104,6 +111,12 @@ bool RenderTargets::resize(glm::ivec2 size) {
                                              nullptr, "sparse sky T, S, distance, history error");
     skyRefineList_ = makePixelList("sky refine list");
     seaReflectionList_ = makePixelList("sea reflection list");
+    seaTerrainShadowList_ = gl::Buffer();
+    glNamedBufferStorage(seaTerrainShadowList_.id(),
+                         kSeaTerrainShadowHeaderBytes + kSeaTerrainShadowEntryBytes * GLsizeiptr(seaTerrainShadowCapacity(size_)),
+                         nullptr, GL_DYNAMIC_STORAGE_BIT);
+    seaTerrainShadowList_.label("sea terrain shadow list");
+    clearSeaTerrainShadowList();
     terrainReflectionList_ = makePixelList("terrain reflection list");
     ldr_ = makeTexture(GL_RGBA8, size, "ldr");
     ldrFramebuffer_ = makeFramebuffer({&ldr_}, nullptr, "ldr");
@@ -149,6 +162,18 @@ gl::Buffer RenderTargets::makePixelList(const char* label) const {
     list.label(label);
     clearPixelList(list);
     return list;
+}
+
+void RenderTargets::clearSeaTerrainShadowList() const {
+    const GLuint header[8] = {0, 1, 1, 0, seaTerrainShadowCapacity(size_), 0, 0, 0};
+    glNamedBufferSubData(seaTerrainShadowList_.id(), 0, sizeof header, header);
+}
+
+glm::uvec2 RenderTargets::seaTerrainShadowListCount() const {
+    glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+    GLuint header[8] = {};
+    glGetNamedBufferSubData(seaTerrainShadowList_.id(), 0, sizeof header, header);
+    return {header[3], header[4]};
 }
 
 void RenderTargets::clearPixelList(const gl::Buffer& list) {

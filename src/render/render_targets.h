@@ -113,6 +113,12 @@ public:
     // The pixels listed for refinement (x, y), read back (a test's or bench's look, it waits).
     std::vector<glm::ivec2> readSkyRefineList() const { return readPixelList(skyRefineList_); }
     // The sea's pixels that march their own reflection (ocean/sea_reflection.frag), as above.
+    // The sea's pixels whose terrain shadow is marched after the ocean pass, with their points and
+    // sun shares (shaders/ocean/sea_terrain_shadow.glsl): as many as the frame has pixels.
+    const gl::Buffer& seaTerrainShadowList() const { return seaTerrainShadowList_; }
+    void clearSeaTerrainShadowList() const;
+    // How many pixels asked to be listed in the last frame (beyond the capacity too), and the capacity.
+    glm::uvec2 seaTerrainShadowListCount() const;
     const gl::Buffer& seaReflectionList() const { return seaReflectionList_; }
     void clearSeaReflectionList() const { clearPixelList(seaReflectionList_); }
     std::vector<glm::ivec2> readSeaReflectionList() const { return readPixelList(seaReflectionList_); }
@@ -168,6 +174,7 @@ private:
     gl::Framebuffer surfaceRadianceFramebuffer_;
     gl::Buffer skyRefineList_;
     gl::Buffer seaReflectionList_;
+    gl::Buffer seaTerrainShadowList_;
     gl::Buffer terrainReflectionList_;
     gl::Framebuffer surfaceFramebuffer_;
     gl::Framebuffer hdrFramebuffer_;

@@ -65,6 +65,12 @@ std::vector<gl::HotProgram*> builtVariants(std::initializer_list<AtmosphereProgr
     return all;
 }
 
+// A pass's programs and more, for its hot-reload list.
+std::vector<gl::HotProgram*> withPrograms(std::vector<gl::HotProgram*> programs, const std::vector<gl::HotProgram*>& more) {
+    programs.insert(programs.end(), more.begin(), more.end());
+    return programs;
+}
+
 // A pass's programs and one more, for its hot-reload list.
 std::vector<gl::HotProgram*> withProgram(std::vector<gl::HotProgram*> programs, gl::HotProgram& more) {
     programs.push_back(&more);
@@ -128,6 +134,8 @@ Renderer::Renderer(const std::filesystem::path& shaderRoot, const atmosphere::Ta
       seaReflection_(sources_, programTables_,
                      gl::ProgramDesc{"sea reflection", {"common/fullscreen.vert", "ocean/sea_reflection.frag"}},
                      {"SEA_REFLECTION_COMPOSE", "SEA_REFLECTION_LIST_ALL"}),
+      seaTerrainShadow_(sources_, programTables_,
+                        gl::ProgramDesc{"sea terrain shadow, listed pixels", {"ocean/sea_terrain_shadow.comp"}}),
       seaReflectionListed_(sources_, programTables_,
                            gl::ProgramDesc{"sea reflection, listed pixels", {"ocean/sea_reflection.comp"}}),
       terrainReflectionList_(sources_, programTables_,
@@ -217,11 +225,24 @@ std::vector<Renderer::Pass> Renderer::makePasses() {
                           glBindTextureUnit(binding::UNIT_SEABED_DEPTH, targets_.seabedDepth().id());
                           glBindTextureUnit(binding::UNIT_SEABED_RADIANCE, targets_.seabedRadiance().id());
                           glBindTextureUnit(binding::UNIT_TERRAIN_SHADOW, targets_.terrainShadowSamples().visibility.id());
+                          targets_.clearSeaTerrainShadowList();
+                          glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding::BUFFER_SEA_TERRAIN_SHADOW_LIST,
+                                           targets_.seaTerrainShadowList().id());
                           glBeginQuery(GL_ANY_SAMPLES_PASSED, oceanDrew_.id());
                           ocean_.draw(variantFor(s), lastPrepare_.underWater);
                           glEndQuery(GL_ANY_SAMPLES_PASSED);
+                          // The terrain's shadow at the pixels the sea listed (a shadow's edge near
+                          // land), marched each on its own and taken from the radiance in place.
+                          glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT |
+                                          GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
+                          glBindImageTexture(binding::IMAGE_SURFACE_RADIANCE, targets_.surfaceRadiance().id(), 0,
+                                             GL_FALSE, 0, GL_READ_WRITE, GL_RGBA16F);
+                          glBindTextureUnit(binding::UNIT_SURFACE_DISTANCE, targets_.surfaceDistance().id());
+                          ocean_.bindBlock();
+                          glUseProgram(seaTerrainShadow_.get(variantFor(s)).id());
+                          dispatchOverList(targets_.seaTerrainShadowList());
                       },
-                      [this] { return ocean_.builtPrograms(); }});
+                      [this] { return withPrograms(ocean_.builtPrograms(), seaTerrainShadow_.built()); }});
     // The terrain in the sea's reflection: searched at the pixels where the ocean found that land
     // may lie within the reflected ray's reach (ocean/terrain_reflection.glsl), a fifth of the sea
     // from orbit, and only where some ground above the sea is on screen.
@@ -587,7 +608,7 @@ bool Renderer::matchAtmosphereTables() {
     terrainShadow_.program().setSources(withAtmosphere(sources_, sizes));
     std::vector<gl::HotProgram*> rebuilt{&terrainShadow_.program()};
     std::vector<AtmosphereProgram*> withTables = ocean_.atmospherePrograms();
-    for (AtmosphereProgram* p : {&surfaceLight_, &seaReflection_, &seaReflectionListed_, &terrainReflectionList_,
+    for (AtmosphereProgram* p : {&surfaceLight_, &seaTerrainShadow_, &seaReflection_, &seaReflectionListed_, &terrainReflectionList_,
                                  &terrainReflection_, &sky_, &skySparse_, &skyTemporal_, &skyRefine_})
         withTables.push_back(p);
     for (AtmosphereProgram* p : withTables) {

@@ -242,6 +242,7 @@ private:
     AtmosphereProgram surfaceLight_;
     OceanPass ocean_;
     AtmosphereProgram seaReflection_;  // mode SEA_REFLECTION_COMPOSE: the samples' spread (ocean/sea_reflection.frag)
+    AtmosphereProgram seaTerrainShadow_;  // the terrain's shadow at the sea's listed pixels (ocean/sea_terrain_shadow.comp)
     AtmosphereProgram seaReflectionListed_;  // the pixels the spread could not serve (ocean/sea_reflection.comp)
     AtmosphereProgram terrainReflectionList_;  // the sea's pixels that may reflect the terrain (ocean/terrain_reflection_list.frag);
                                                // mode TERRAIN_REFLECTION_LAND_SEEN: whether any ground above the sea is on screen
