@@ -37,7 +37,7 @@ TEST(CloudFarField, HoldsWhereTheNearestPointsFootprintSpansEightVoxels) {
     EXPECT_FALSE(clouds::seenInFarFieldOnly(b, 8380.0, 6380.0));
     EXPECT_FALSE(clouds::seenInFarFieldOnly(b, 8419.0, 6380.0));
     EXPECT_TRUE(clouds::seenInFarFieldOnly(b, 8421.0, 6380.0));
-    EXPECT_TRUE(clouds::seenInFarFieldOnly(b, 1.0e9, 6380.0));  // a light-year is far too
+    EXPECT_TRUE(clouds::seenInFarFieldOnly(b, 1.0e9, 6380.0));  // a billion km: far too
     // The ground lower than the layer's top: the top decides, 6375 + 2040 km.
     EXPECT_FALSE(clouds::seenInFarFieldOnly(b, 8414.0, 6371.0));
     EXPECT_TRUE(clouds::seenInFarFieldOnly(b, 8416.0, 6371.0));

@@ -91,8 +91,9 @@ const float SHORE_FADE_M = 0.5;  // water path over which the sea fades in at th
 // Off (0), no foam where the waves break at the shore (tests compare the two).
 #define OCEAN_FOAM 1
 // 1: the terrain's shadow on the water from the terrain shadow's samples of the sea's surface
-// where they agree (render/terrain_shadow_samples.glsl), marched here otherwise; 0: marched at
-// every pixel where land may be within reach (tests compare the two).
+// where they agree (render/terrain_shadow_samples.glsl), marched otherwise (after this pass:
+// ocean/sea_terrain_shadow.glsl); 0: marched at every pixel where land may be within reach
+// (tests compare the two).
 #define OCEAN_TERRAIN_SHADOW_FROM_SAMPLES 1
 
 // The sky the sea reflects along `reflected` from `point` (km from the planet centre; this
@@ -240,6 +241,7 @@ void main() {
     // water and the glitter.
     float sunVisibility = 1.0;
     bool marchLater = false;  // the terrain's shadow marched by ocean/sea_terrain_shadow.comp
+    float meanClearance = 1.0;  // the samples' mean clearance (rad), where no march can be had
     float radius = atmosphereUniforms.sunAngularRadius;
     if (dot(up, sun) > 0.0) {
         sunVisibility = CloudSunTransmittance(point, sun, CLOUD_SHADOW_MAX_KM);
@@ -253,9 +255,9 @@ void main() {
         float clearance = 1.0;  // rad: lit, where no land is within reach
         // (Without shadows, or built without them, the march finds the sun clear.)
         marchLater = SUN_VISIBILITY_TERRAIN != 0 && mayReach && terrainShadows != 0;
-#if OCEAN_TERRAIN_SHADOW_FROM_SAMPLES && SUN_VISIBILITY_TERRAIN
-        if (terrainShadows != 0 && terrainClearanceFromSamples(terrainShadowSamples, pixel, 1, radius, clearance))
-            marchLater = false;
+#if SUN_VISIBILITY_TERRAIN
+        bool agree = terrainClearanceFromSamples(terrainShadowSamples, pixel, 1, radius, clearance, meanClearance);
+        if (OCEAN_TERRAIN_SHADOW_FROM_SAMPLES != 0 && terrainShadows != 0 && agree) marchLater = false;
 #endif
         if (!marchLater) sunVisibility *= terrainShadowDiscShare(clearance, radius);
     }
@@ -274,19 +276,22 @@ void main() {
     surface = mix(surface, foamRadiance(sunIrradiance + skyIrradiance), foam);
     vec3 radiance = mix(behind, surface, coverage);
     if (marchLater) {
-        // What of the radiance the sun's light carries (each term linear in it), for the march to
-        // take away the share its disc is hidden: the glitter, the light scattered up, the foam.
+        // What of the radiance the sun's light carries (each term linear in it): the glitter, the
+        // light scattered up, the foam. The march after this pass takes away the share of it that
+        // the terrain hides from the lit radiance kept here, or where it is most of the radiance
+        // (a bright glitter, which would swamp what stays in full shadow in the half-float target)
+        // adds the share it leaves to the rest kept here.
         vec3 sunShare = coverage * ((1.0 - foam) * (glitter + (1.0 - fresnel) * (1.0 - waterTransmittance) *
                                                                deepWaterRadiance(sunIrradiance)) +
                                     foam * foamRadiance(sunIrradiance));
-        // Past the list's capacity, where the radiance is clamped (the sun's glitter beyond what
-        // the target holds), or at a shore fragment behind the land's edge (its pixel keeps the
-        // land's distance), the nearest sample's clearance instead.
-        bool listed = !behindLand && all(lessThanEqual(radiance, vec3(MAX_HDR_RADIANCE))) &&
-                      listSeaTerrainShadow(pixel, seaDistance, sunShare);
+        bool keepRest = dot(sunShare, vec3(1.0)) > 0.5 * dot(radiance, vec3(1.0));
+        // At a shore fragment behind the land's edge (its pixel keeps the land's distance) or past
+        // the list's capacity, the samples' mean visibility instead.
+        bool listed = !behindLand && listSeaTerrainShadow(pixel, seaDistance, sunShare, keepRest);
         if (!listed)
-            radiance -= sunShare * (1.0 - terrainShadowDiscShare(
-                                              terrainClearanceNearestSample(terrainShadowSamples, pixel, 1), radius));
+            radiance -= sunShare * (1.0 - terrainShadowDiscShare(meanClearance, radius));
+        else if (keepRest)
+            radiance = max(radiance - sunShare, vec3(0.0));
     }
     outSurfaceRadiance = vec4(min(radiance, vec3(MAX_HDR_RADIANCE)), 1.0);
 }

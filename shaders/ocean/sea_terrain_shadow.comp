@@ -1,7 +1,8 @@
 // The terrain's shadow on the sea at the pixels the ocean listed (ocean/sea_terrain_shadow.glsl):
 // the march from the sea's point towards the sun (as ocean.frag marched it), and the share of the
-// radiance the hidden part of the sun's disc carried taken away. One invocation per listed pixel,
-// dispatched indirectly with as many groups as the list needs: nothing where none is listed.
+// radiance the sun's light carries set for the part of its disc the terrain leaves. One
+// invocation per listed pixel, dispatched indirectly with as many groups as the list needs:
+// nothing where none is listed.
 #include "common/frame_uniforms.glsl"
 #define SUN_VISIBILITY_TERRAIN 1
 #include "atmosphere/interface.glsl"
@@ -23,10 +24,12 @@ void main() {
     ivec2 pixel = ivec2(entry.x & 0xffffu, entry.x >> 16);
     float seaDistance = uintBitsToFloat(entry.y);
     if (texelFetch(surfaceDistance, pixel, 0).r != seaDistance) return;  // a nearer fragment drew over it
-    vec3 sunShare = vec3(unpackHalf2x16(entry.z), unpackHalf2x16(entry.w).x);
+    vec3 sunShare = unpackSunShare(entry.zw);
     vec3 point = cameraFromPlanetCentreKm() + pixelRay(pixel) * (seaDistance / M_PER_KM);  // as ocean.frag's
     float clearance = TerrainShadowClearanceAbove(point, ocean.seaLevel, frame.sunDirection);
     float visibility = terrainShadowDiscShare(clearance, atmosphereUniforms.sunAngularRadius);
     vec4 radiance = imageLoad(surfaceRadiance, pixel);
-    imageStore(surfaceRadiance, pixel, vec4(max(radiance.rgb - sunShare * (1.0 - visibility), vec3(0.0)), radiance.a));
+    bool keptRest = (entry.w & 0x80000000u) != 0u;
+    vec3 updated = keptRest ? radiance.rgb + sunShare * visibility : radiance.rgb - sunShare * (1.0 - visibility);
+    imageStore(surfaceRadiance, pixel, vec4(clamp(updated, vec3(0.0), vec3(MAX_HDR_RADIANCE)), radiance.a));
 }

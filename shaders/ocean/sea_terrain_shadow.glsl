@@ -3,21 +3,22 @@
 // terrain shadow's samples around the pixel disagree (a shadow's edge, the shore). In the ocean's
 // fragment shader the march's code ran for every sea pixel, masked, marched or not (a software
 // renderer runs the first turn of a loop for every group of pixels: README "Programs, not
-// branches"): at 1280x720 a sixth of the ocean pass at orbit. The ocean shades such a pixel as
-// lit by the terrain and lists the point it marches from and the share of its radiance that the
-// sun's light on it carries (every such term is linear in the sun's visibility: the glitter, the
-// light scattered up by the water, the foam); the compute pass marches and takes away what the
-// terrain's shadow hides: L = L_lit - share x (1 - v).
-//
+// branches"): at 1280x720 a sixth of the ocean pass at orbit. The ocean lists such a pixel with
+// the sea's distance along its ray and the share of its radiance that the sun's light on it
+// carries (every such term is linear in the sun's visibility v: the glitter, the light scattered
+// up by the water, the foam), and keeps its lit radiance, or where the share is most of it the rest
+// (the radiance less the share); the compute pass marches from the sea's point and takes share x
+// (1 - v) away from the lit radiance, or adds share x v to the rest. Either way a pixel the march
+// finds at the kept side (lit; in full shadow) is the value the ocean would have written.
 //
 // The list holds at most `capacity` entries (src/render/render_targets.cpp: as many as the frame
 // has pixels, 16 bytes each; the flooded valley in the range's shadow at a 5 degree sun lists a
-// quarter of them); a fragment beyond it (where sea fragments overlap) takes the nearest
-// sample's clearance instead (listSeaTerrainShadow returns false), as does a shore fragment
-// behind the land's edge. Each entry holds the pixel,
-// the sea's distance along its ray (the compute pass marches from there, and marches only where
-// the surface distance is still that: the fragment was not hidden by a later one) and the sun's
-// share. Its header is the indirect dispatch's group counts, as render/pixel_list.glsl's;
+// fifth of them). A fragment beyond it (where sea fragments overlap) takes the samples' mean
+// visibility instead (listSeaTerrainShadow returns false), as does a shore fragment behind the
+// land's edge. The compute pass marches only where the pixel's surface distance is still the
+// listed one (no later fragment drew over it); two fragments of one pixel at the same distance,
+// bit for bit, would both add their share (sea triangles do not overlap on screen). Its header
+// is the indirect dispatch's group counts, as render/pixel_list.glsl's;
 // RenderTargets::clearSeaTerrainShadowList resets it before the ocean.
 const uint SEA_TERRAIN_SHADOW_GROUP_SIZE = 64u;
 
@@ -30,14 +31,30 @@ layout(std430, binding = BUFFER_SEA_TERRAIN_SHADOW_LIST) buffer SeaTerrainShadow
     uint unused0;
     uint unused1;
     uint unused2;
-    uvec4 entries[];  // x | y << 16; the sea's distance, m (float bits); the sun's share (half floats)
+    uvec4 entries[];  // x | y << 16; the sea's distance, m (float bits); the sun's share (packSunShare)
 } seaTerrainShadowList;
 
-bool listSeaTerrainShadow(ivec2 pixel, float seaDistanceM, vec3 sunShare) {
+// The sun's share (three floats >= 0) in 64 bits: each float's top 21 bits (its exponent and 13 bits
+// of mantissa, rounded: 1.2e-4 relative; half floats' 4.9e-4 made a lit pixel's radiance differ
+// from the march in place by over 1e-3 at 2 % of the flooded valley's pixels).
+uint sunShareBits(float x) { return min((floatBitsToUint(max(x, 0.0)) + 0x200u) >> 10, 0x1fffffu); }
+float sunShareValue(uint bits) { return uintBitsToFloat((bits & 0x1fffffu) << 10); }
+uvec2 packSunShare(vec3 share) {
+    uint r = sunShareBits(share.r), g = sunShareBits(share.g), b = sunShareBits(share.b);
+    return uvec2(r | (g << 21), (g >> 11) | (b << 10));
+}
+vec3 unpackSunShare(uvec2 bits) {
+    return vec3(sunShareValue(bits.x), sunShareValue((bits.x >> 21) | (bits.y << 11)), sunShareValue((bits.y >> 10) & 0x1fffffu));
+}
+
+// `keptRest`: the pixel keeps the radiance less the sun's share (the march adds share x v), else the
+// lit radiance (the march takes share x (1 - v) away); in the entry's top bit.
+bool listSeaTerrainShadow(ivec2 pixel, float seaDistanceM, vec3 sunShare, bool keptRest) {
     uint i = atomicAdd(seaTerrainShadowList.count, 1u);
     if (i >= seaTerrainShadowList.capacity) return false;
+    uvec2 share = packSunShare(sunShare);
     seaTerrainShadowList.entries[i] = uvec4(uint(pixel.x) | (uint(pixel.y) << 16), floatBitsToUint(seaDistanceM),
-                                            packHalf2x16(sunShare.rg), packHalf2x16(vec2(sunShare.b, 0.0)));
+                                            share.x, share.y | (keptRest ? 0x80000000u : 0u));
     if (i % SEA_TERRAIN_SHADOW_GROUP_SIZE == 0u) atomicAdd(seaTerrainShadowList.groupsX, 1u);  // the first of a new group
     return true;
 }

@@ -16,7 +16,8 @@ const float TERRAIN_SHADOW_LIT_MARGIN = 0.03;
 // no surface (an edge on screen): the caller marches there. A shadow narrower than the samples'
 // spacing that falls between samples which clear the margin is missed, as the march misses a
 // ridge narrower than its own step.
-bool terrainClearanceFromSamples(sampler2D samples, ivec2 pixel, int channel, float radius, inout float clearance) {
+bool terrainClearanceFromSamples(sampler2D samples, ivec2 pixel, int channel, float radius, inout float clearance,
+                                 out float meanClearance) {
     ivec2 corners[4];
     blockSampleCorners(pixel, TERRAIN_SHADOW_SPACING, textureSize(samples, 0) - 1, corners);
     float a = texelFetch(samples, corners[0], 0)[channel];
@@ -31,15 +32,15 @@ bool terrainClearanceFromSamples(sampler2D samples, ivec2 pixel, int channel, fl
     bool onASample = corners[0] == corners[3] && surface;
     bool agree = lit || shadowed || onASample;
     if (agree) clearance = a;
+    // The mean over the samples that show a surface (lit, 1 rad, where none does): a stand-in where
+    // no march can be had (ocean/sea_terrain_shadow.glsl).
+    vec4 shows = vec4(greaterThan(vec4(a, b, c, d), vec4(0.5 * TERRAIN_SHADOW_NO_SURFACE)));
+    float count = dot(shows, vec4(1.0));
+    meanClearance = count > 0.0 ? dot(shows, vec4(a, b, c, d)) / count : 1.0;
     return agree;
 }
 
-// The clearance of the sample nearest `pixel` (the first corner of its cell) where it shows a
-// surface, else lit (1 rad): a stand-in where no march can be had (ocean/sea_terrain_shadow.glsl).
-float terrainClearanceNearestSample(sampler2D samples, ivec2 pixel, int channel) {
-    ivec2 corners[4];
-    blockSampleCorners(pixel, TERRAIN_SHADOW_SPACING, textureSize(samples, 0) - 1, corners);
-    float a = texelFetch(samples, corners[0], 0)[channel];
-    return a > 0.5 * TERRAIN_SHADOW_NO_SURFACE ? a : 1.0;
+bool terrainClearanceFromSamples(sampler2D samples, ivec2 pixel, int channel, float radius, inout float clearance) {
+    float mean;
+    return terrainClearanceFromSamples(samples, pixel, channel, radius, clearance, mean);
 }
-

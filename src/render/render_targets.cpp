@@ -17,7 +17,7 @@ constexpr GLsizeiptr kRefineListHeaderBytes = 16;  // render/pixel_list.glsl: gr
 constexpr GLsizeiptr kSeaTerrainShadowHeaderBytes = 32;
 constexpr GLsizeiptr kSeaTerrainShadowEntryBytes = 16;
 // Every pixel of the frame (16 bytes a pixel): at a low sun over water among mountains most of
-// the sea may be listed (a quarter of the frame in the flooded valley's test), and with the
+// the sea may be listed (a fifth of the frame in the flooded valley's test), and with the
 // samples off (OCEAN_TERRAIN_SHADOW_FROM_SAMPLES 0) all of it.
 GLuint seaTerrainShadowCapacity(glm::ivec2 size) { return GLuint(std::max(1, size.x * size.y)); }
 

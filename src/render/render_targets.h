@@ -112,13 +112,13 @@ public:
     void clearSkyRefineList() const { clearPixelList(skyRefineList_); }
     // The pixels listed for refinement (x, y), read back (a test's or bench's look, it waits).
     std::vector<glm::ivec2> readSkyRefineList() const { return readPixelList(skyRefineList_); }
-    // The sea's pixels that march their own reflection (ocean/sea_reflection.frag), as above.
-    // The sea's pixels whose terrain shadow is marched after the ocean pass, with their points and
-    // sun shares (shaders/ocean/sea_terrain_shadow.glsl): as many as the frame has pixels.
+    // The sea's pixels whose terrain shadow is marched after the ocean pass, with their distances
+    // and sun shares (shaders/ocean/sea_terrain_shadow.glsl): as many as the frame has pixels.
     const gl::Buffer& seaTerrainShadowList() const { return seaTerrainShadowList_; }
     void clearSeaTerrainShadowList() const;
     // How many pixels asked to be listed in the last frame (beyond the capacity too), and the capacity.
     glm::uvec2 seaTerrainShadowListCount() const;
+    // The sea's pixels that march their own reflection (ocean/sea_reflection.frag), as above.
     const gl::Buffer& seaReflectionList() const { return seaReflectionList_; }
     void clearSeaReflectionList() const { clearPixelList(seaReflectionList_); }
     std::vector<glm::ivec2> readSeaReflectionList() const { return readPixelList(seaReflectionList_); }

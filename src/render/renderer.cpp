@@ -212,6 +212,7 @@ std::vector<Renderer::Pass> Renderer::makePasses() {
                           glBindTextureUnit(binding::UNIT_GBUFFER_DEPTH, g.depth.id());
                           glBindTextureUnit(binding::UNIT_TERRAIN_SHADOW, targets_.terrainShadowSamples().visibility.id());
                           glBindVertexArray(emptyVertexArray_.id());
+                          // (The 4D table's program: it reads no scattering table, only the clouds.)
                           glUseProgram(surfaceLight_.get(AtmosphereVariant{false, false, lastPrepare_.cloudFarField}).id());
                           drawScissored(lastPrepare_.groundBound, targets_.size());  // it discards elsewhere
                       },
@@ -239,7 +240,8 @@ std::vector<Renderer::Pass> Renderer::makePasses() {
                                              GL_FALSE, 0, GL_READ_WRITE, GL_RGBA16F);
                           glBindTextureUnit(binding::UNIT_SURFACE_DISTANCE, targets_.surfaceDistance().id());
                           ocean_.bindBlock();
-                          glUseProgram(seaTerrainShadow_.get(variantFor(s)).id());
+                          // (It reads neither the clouds nor the scattering table: one program.)
+                          glUseProgram(seaTerrainShadow_.get(AtmosphereVariant{}).id());
                           dispatchOverList(targets_.seaTerrainShadowList());
                       },
                       [this] { return withPrograms(ocean_.builtPrograms(), seaTerrainShadow_.built()); }});
@@ -380,7 +382,7 @@ std::vector<Renderer::Pass> Renderer::makePasses() {
                           drawScissored(lastPrepare_.skyBound, targets_.size());
                       },
                       [this] { return withProgram(skyTemporal_.built(), skySpace_.program()); }});
-    passes.push_back({{"sky refine", {R::SurfaceRadiance, R::SkyRefine}, {R::HdrRadiance}}, reducedRate,
+    passes.push_back({{"sky refine", {R::SurfaceRadiance, R::SparseSky, R::SkyRefine}, {R::HdrRadiance}}, reducedRate,
                       [this](const Scene& s) {
                           glBindTextureUnit(binding::UNIT_SURFACE_RADIANCE, targets_.surfaceRadiance().id());
                           glBindTextureUnit(binding::UNIT_SURFACE_DISTANCE, targets_.surfaceDistance().id());
