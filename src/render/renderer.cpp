@@ -71,12 +71,6 @@ std::vector<gl::HotProgram*> withPrograms(std::vector<gl::HotProgram*> programs,
     return programs;
 }
 
-// A pass's programs and one more, for its hot-reload list.
-std::vector<gl::HotProgram*> withProgram(std::vector<gl::HotProgram*> programs, gl::HotProgram& more) {
-    programs.push_back(&more);
-    return programs;
-}
-
 // The bound program's full-screen triangle on the pixels of `rect` alone (scissored; nothing
 // when it is empty): on a software renderer the pixels outside cost nothing.
 void drawScissored(const ScreenRect& rect, glm::ivec2 size) {
@@ -343,7 +337,7 @@ std::vector<Renderer::Pass> Renderer::makePasses() {
                           glUseProgram(sky_.get(skyVariantFor(s), underWater).id());
                           drawScissored(lastPrepare_.skyBound, targets_.size());
                       },
-                      [this] { return withProgram(sky_.built(), skySpace_.program()); }});
+                      [this] { return withPrograms(sky_.built(), {&skySpace_.program()}); }});
     passes.push_back({{"sky march", {R::SurfaceRadiance}, {R::SparseSky}}, reducedRate,
                       [this](const Scene& s) {
                           const SparseSky& sparse = targets_.sparseSky();
@@ -381,7 +375,7 @@ std::vector<Renderer::Pass> Renderer::makePasses() {
                           glUseProgram(skyTemporal_.get(skyVariantFor(s), stillProgram() ? 1 : 0).id());
                           drawScissored(lastPrepare_.skyBound, targets_.size());
                       },
-                      [this] { return withProgram(skyTemporal_.built(), skySpace_.program()); }});
+                      [this] { return withPrograms(skyTemporal_.built(), {&skySpace_.program()}); }});
     passes.push_back({{"sky refine", {R::SurfaceRadiance, R::SparseSky, R::SkyRefine}, {R::HdrRadiance}}, reducedRate,
                       [this](const Scene& s) {
                           glBindTextureUnit(binding::UNIT_SURFACE_RADIANCE, targets_.surfaceRadiance().id());
