@@ -116,3 +116,65 @@ TEST_F(CloudFarFieldFrame, UnderTheCloudsTheGeneralProgramsRun) {
     EXPECT_FALSE(renderer->lastPrepare().cloudFarField) << "the camera under the layer";
     EXPECT_EQ(allowed.pixels, general.pixels);
 }
+
+namespace {
+
+// How a frame comes to have no cloud layer: the preset's clouds off (the sky at full rate), or
+// on with no coverage (the cloud block's `enabled` 0 all the same; the reduced rate runs).
+enum class NoClouds { PresetOff, NoCoverage };
+
+class CloudsOffFrame : public test::GLTest {
+protected:
+    // One frame of `view` without clouds, with the CLOUDS_OFF programs allowed or not, from a
+    // renderer of its own; with no coverage the temporal march's second frame (from the history).
+    ImageRGBAF render(const std::string& view, NoClouds how, bool offPrograms) {
+        renderer = std::make_unique<Renderer>(test::repoPaths().shaders(), atmosphere::TableSizes::reduced());
+        Session s = loadSession(test::repoPaths(), "earth", view);
+        if (how == NoClouds::PresetOff) s.scene.clouds.enabled = false;
+        else s.scene.clouds.coverage = 0.0;
+        s.scene.render.temporal = true;
+        renderer->setCloudsOffPrograms(offPrograms);
+        renderer->render(s.scene, s.camera, kSize);
+        if (how == NoClouds::NoCoverage) renderer->render(s.scene, s.camera, kSize);
+        return readTextureRGBAF(renderer->targets().hdr(), kSize.x, kSize.y);
+    }
+    std::unique_ptr<Renderer> renderer;
+};
+
+}  // namespace
+
+// Issue 15: a frame without clouds runs every program that reads them built without their code
+// (CLOUDS_OFF): the clear sky pass at `orbit` on llvmpipe, which ran the layer's code for every
+// pixel behind the test of `enabled`, costs half as much (docs/PERFORMANCE.md, sixteenth). The
+// frame is the general programs' (on llvmpipe to the bit; the bounds leave another driver its
+// rounding), from orbit and at the beach (sea, land, sky), at full rate and at the reduced rate.
+TEST_F(CloudsOffFrame, WithoutCloudsTheProgramsBuiltWithoutThemGiveTheGeneralProgramsFrame) {
+    for (const std::string view : {"orbit", "beach"}) {
+        for (const NoClouds how : {NoClouds::PresetOff, NoClouds::NoCoverage}) {
+            const char* name = how == NoClouds::PresetOff ? "clouds off" : "no coverage";
+            const ImageRGBAF general = render(view, how, false);
+            EXPECT_FALSE(renderer->lastPrepare().cloudsOff);
+            EXPECT_EQ(renderer->lastPrepare().reducedRate, how == NoClouds::NoCoverage) << view << " " << name;
+            const ImageRGBAF off = render(view, how, true);
+            EXPECT_TRUE(renderer->lastPrepare().cloudsOff) << view << " " << name << ": no cloud layer";
+            EXPECT_FALSE(renderer->lastPrepare().cloudFarField) << "never with the far field's programs";
+            const ImageComparison c = compareImages(off, general);
+            std::printf("%s, %s: programs without clouds against the general ones: mean %.6f %%, max %.4f %%\n",
+                        view.c_str(), name, 100.0 * c.meanRelativeError, 100.0 * c.maxRelativeError);
+            EXPECT_EQ(c.nonFinitePixels, 0u);
+            EXPECT_LT(c.meanRelativeError, 1e-6) << view << " " << name;
+            EXPECT_LT(c.maxRelativeError, 1e-4) << view << " " << name;
+        }
+    }
+}
+
+// With clouds the general programs run: the programs without them are never picked for a frame
+// that has a layer (they would draw a clear sky: the orbit frame's clouds are a third of it).
+TEST_F(CloudsOffFrame, WithCloudsTheGeneralProgramsRun) {
+    for (const std::string view : {"orbit", "cumulus"}) {
+        renderer = std::make_unique<Renderer>(test::repoPaths().shaders(), atmosphere::TableSizes::reduced());
+        Session s = loadSession(test::repoPaths(), "earth", view);
+        renderer->render(s.scene, s.camera, kSize);
+        EXPECT_FALSE(renderer->lastPrepare().cloudsOff) << view;
+    }
+}

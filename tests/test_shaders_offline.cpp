@@ -71,10 +71,12 @@ TEST(ShadersOffline, EveryStageValidatesWithGlslang) {
                 for (std::size_t i = 0; i < n; ++i) variants.push_back(variants[i] + mode);
         }
         // Every program that reads the clouds, in its far-field build (src/render/atmosphere_program.h:
-        // CLOUD_FAR_FIELD_ONLY 1, from high up).
+        // CLOUD_FAR_FIELD_ONLY 1, from high up) and in its build for a frame without clouds (CLOUDS_OFF 1,
+        // never with the far field's).
         if (expanded.text.find("#if CLOUD_FAR_FIELD_ONLY") != std::string::npos) {
             const std::size_t n = variants.size();
             for (std::size_t i = 0; i < n; ++i) variants.push_back(variants[i] + "#define CLOUD_FAR_FIELD_ONLY 1\n");
+            for (std::size_t i = 0; i < n; ++i) variants.push_back(variants[i] + "#define CLOUDS_OFF 1\n");
         }
         for (const std::string& variant : variants) {
             std::string text = expanded.text;

@@ -16,6 +16,14 @@
 #ifndef CLOUD_FAR_FIELD_ONLY
 #define CLOUD_FAR_FIELD_ONLY 0
 #endif
+// CLOUDS_OFF 1: the CPU found no cloud layer in this frame (the block's `enabled` 0: the preset's
+// clouds off, no coverage or density, no volume), so no code that reads the clouds is built: the
+// sun's way through the layer is clear and the view ray crosses no layer (clouds/cloud_march.glsl).
+// What `enabled` 0 gives, exactly, without a software renderer running the layer's code for every
+// pixel, masked, behind the test of `enabled` (the clear sky pass at `orbit`: about half its cost).
+#ifndef CLOUDS_OFF
+#define CLOUDS_OFF 0
+#endif
 
 // How far the far field has taken over (0: the volume alone, 1: the far field alone) for a
 // pixel footprint of `footprintKm`: from 2 to 8 voxels, where trilinear sampling starts to
@@ -103,6 +111,9 @@ Length CloudFarFieldPathToSun(vec3 a, vec3 b, Length way) {
 // `footprintKm` (the view sample's); in closed form where that footprint sees the far field
 // alone. 0 without clouds.
 Length CloudDensityPathToSun(vec3 point, vec3 sun, Length maxLength, Length footprintKm, int samples) {
+#if CLOUDS_OFF
+    return 0.0;
+#else
     if (clouds.enabled == 0) return 0.0;
     Length r = length(point);
     vec2 first;
@@ -121,6 +132,7 @@ Length CloudDensityPathToSun(vec3 point, vec3 sun, Length maxLength, Length foot
         path += max(CloudDensityAt(point + sun * (first.x + (Number(i) + 0.5) * step), footprintKm), 0.0) * step;
     return path;
 #endif
+#endif  // CLOUDS_OFF
 }
 
 // The clouds' transmittance towards the sun (Michelic Eq. 15 along the sun ray: T_sun)

@@ -183,6 +183,8 @@ ViewMarch MarchViewFrom(vec3 origin, vec3 up, Length altitude, bool inside, vec3
     Number cloudTransmittance = 1.0;
     Length depthSum = 0.0;
     bool toSpace = distance <= 0.0;
+    Length t = 0.0;
+#if !CLOUDS_OFF  // (a program built for a frame without clouds crosses no layer: see cloud_density.glsl)
     vec2 crossings[2];
     int count = 0;
     if (clouds.enabled != 0) {
@@ -190,7 +192,6 @@ ViewMarch MarchViewFrom(vec3 origin, vec3 up, Length altitude, bool inside, vec3
         count = CloudLayerIntervals(r, dot(origin, dir) / r, toSpace ? 1.0e9 : distance, clouds.bottomRadius,
                                     clouds.topRadius, crossings[0], crossings[1]);
     }
-    Length t = 0.0;
     for (int k = 0; k < count; ++k) {
         vec2 crossing = crossings[k];
         if (crossing.x > t) {  // air up to the layer: one slice, T_C = 1, I_C = 0 (Eq. 17-18)
@@ -213,6 +214,7 @@ ViewMarch MarchViewFrom(vec3 origin, vec3 up, Length altitude, bool inside, vec3
         }
         t = crossing.y;
     }
+#endif
     // The rest: air to the surface point, or the sky beyond.
     AirSlice rest;
     ViewRay restRay = AirRayFrom(up, altitude, inside, origin, dir, t, sun);

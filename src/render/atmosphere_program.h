@@ -1,9 +1,10 @@
 // A program that includes shaders/atmosphere/interface.glsl, in the variant the frame renders
 // with (AtmosphereVariant): ELEK_TABLE 0 (Bruneton's 4D table) or 1 (Elek's 3D table; preset
 // atmosphere.elek_3d_table), for the sky passes LIGHT_SHAFTS_TERRAIN 0 or 1 (preset
-// terrain.light_shafts with terrain.shadows), and CLOUD_FAR_FIELD_ONLY 0 or 1 (every footprint
+// terrain.light_shafts with terrain.shadows), CLOUD_FAR_FIELD_ONLY 0 or 1 (every footprint
 // the frame sees the clouds with is the far field's: src/clouds/cloud_block.h,
-// seenInFarFieldOnly). Programs rather than run-time branches: software renderers execute both
+// seenInFarFieldOnly) and CLOUDS_OFF 0 or 1 (no cloud layer this frame: the cloud block's
+// `enabled` 0, shaders/clouds/cloud_density.glsl). Programs rather than run-time branches: software renderers execute both
 // sides of even a uniform branch, and a GPU is spared the registers of the unused one (the
 // light shafts' code, its loops at no turns, doubled the sky pass on llvmpipe:
 // docs/PERFORMANCE.md, 2026-12-03). The default variant (4D table, no shafts, the clouds' volume
@@ -29,6 +30,7 @@ struct AtmosphereVariant {
     bool elekTable = false;      // ELEK_TABLE
     bool lightShafts = false;    // LIGHT_SHAFTS_TERRAIN (the sky passes)
     bool cloudFarField = false;  // CLOUD_FAR_FIELD_ONLY (shaders/clouds/cloud_density.glsl)
+    bool cloudsOff = false;      // CLOUDS_OFF (shaders/clouds/cloud_density.glsl)
 };
 
 class AtmosphereProgram {
@@ -45,13 +47,15 @@ public:
     }
 
     gl::HotProgram& get(const AtmosphereVariant& v, int mode = 0) {
-        const int index = (v.elekTable ? 1 : 0) + (v.lightShafts ? 2 : 0) + (v.cloudFarField ? 4 : 0) + kVariants * mode;
+        const int index = (v.elekTable ? 1 : 0) + (v.lightShafts ? 2 : 0) + (v.cloudFarField ? 4 : 0) + (v.cloudsOff ? 8 : 0) +
+                          kVariants * mode;
         if (!variants_.at(static_cast<std::size_t>(index))) {
             gl::ProgramDesc d = desc_;
             if (mode > 0) d.name += " (" + modes_[static_cast<std::size_t>(mode - 1)] + ")";
             if (v.elekTable) d.name += " (Elek 3D table)";
             if (v.lightShafts) d.name += " (light shafts)";
             if (v.cloudFarField) d.name += " (clouds' far field)";
+            if (v.cloudsOff) d.name += " (no clouds)";
             variants_[static_cast<std::size_t>(index)].emplace(sourcesOf(index), d);
         }
         return *variants_[static_cast<std::size_t>(index)];
@@ -73,15 +77,15 @@ public:
     }
 
 private:
-    // bit 0: ELEK_TABLE, bit 1: LIGHT_SHAFTS_TERRAIN, bit 2: CLOUD_FAR_FIELD_ONLY; then the mode
-    static constexpr int kVariants = 8;
+    // bit 0: ELEK_TABLE, bit 1: LIGHT_SHAFTS_TERRAIN, bit 2: CLOUD_FAR_FIELD_ONLY, bit 3: CLOUDS_OFF; then the mode
+    static constexpr int kVariants = 16;
 
     gl::ShaderSources sourcesOf(int index) const {
         const int mode = index / kVariants;
         const auto flag = [index](int bit) { return (index & bit) ? "1\n" : "0\n"; };
         return {sources_.root, sources_.preamble + atmosphere::atmosphereShaderDefines(sizes_) + "#define ELEK_TABLE " +
                                    flag(1) + "#define LIGHT_SHAFTS_TERRAIN " + flag(2) + "#define CLOUD_FAR_FIELD_ONLY " +
-                                   flag(4) +
+                                   flag(4) + "#define CLOUDS_OFF " + flag(8) +
                                    (mode > 0 ? "#define " + modes_[static_cast<std::size_t>(mode - 1)] + " 1\n" : "")};
     }
 

@@ -196,7 +196,7 @@ std::vector<Renderer::Pass> Renderer::makePasses() {
     // block's terrainShadows), which is when that pass runs; so does the ocean (their g: the
     // sea's surface).
     passes.push_back({{"surface light", {R::GBuffer, R::TerrainShadow}, {R::SurfaceRadiance}}, always,
-                      [this](const Scene&) {
+                      [this](const Scene& s) {
                           targets_.clearSurface();
                           glBindFramebuffer(GL_FRAMEBUFFER, targets_.surfaceFramebuffer());
                           const GBuffer& g = targets_.gbuffer();
@@ -207,7 +207,9 @@ std::vector<Renderer::Pass> Renderer::makePasses() {
                           glBindTextureUnit(binding::UNIT_TERRAIN_SHADOW, targets_.terrainShadowSamples().visibility.id());
                           glBindVertexArray(emptyVertexArray_.id());
                           // (The 4D table's program: it reads no scattering table, only the clouds.)
-                          glUseProgram(surfaceLight_.get(AtmosphereVariant{false, false, lastPrepare_.cloudFarField}).id());
+                          AtmosphereVariant variant = variantFor(s);
+                          variant.elekTable = false;
+                          glUseProgram(surfaceLight_.get(variant).id());
                           drawScissored(lastPrepare_.groundBound, targets_.size());  // it discards elsewhere
                       },
                       [this] { return builtVariants({&surfaceLight_}); }});
@@ -517,7 +519,8 @@ void Renderer::prepare(const Scene& scene, const Camera& camera, glm::ivec2 size
     atmosphere_.bind();
     report.cloudsUpdated = clouds_.update(scene, camera, size.y);
     clouds_.bind();
-    report.cloudFarField = cloudFarFieldPrograms_ &&
+    report.cloudsOff = cloudsOffPrograms_ && clouds_.block().enabled == 0;
+    report.cloudFarField = !report.cloudsOff && cloudFarFieldPrograms_ &&
                            clouds::seenInFarFieldOnly(clouds_.block(), glm::length(camera.position) / 1000.0,
                                                       highestGroundM / 1000.0);
     terrain_.prepare(scene, camera, *continents_->map(), camera.fovY_rad / size.y, double(size.x) / size.y);
@@ -585,7 +588,7 @@ void Renderer::tonemapRadiance(const ImageRGBAF& radiance) {
 bool Renderer::stillProgram() const { return lastPrepare_.stillFrame && stillFrameProgram_; }
 
 AtmosphereVariant Renderer::variantFor(const Scene& scene) const {
-    return AtmosphereVariant{scene.atmosphere.elek_3d_table, false, lastPrepare_.cloudFarField};
+    return AtmosphereVariant{scene.atmosphere.elek_3d_table, false, lastPrepare_.cloudFarField, lastPrepare_.cloudsOff};
 }
 
 AtmosphereVariant Renderer::skyVariantFor(const Scene& scene) const {

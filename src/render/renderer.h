@@ -116,6 +116,8 @@ struct PrepareReport {
                                          // (render/sky.frag, ocean/ocean.frag)
     bool cloudFarField = false;          // every footprint the clouds are seen with is the far field's: the programs
                                          // built with CLOUD_FAR_FIELD_ONLY (clouds/cloud_block.h, seenInFarFieldOnly)
+    bool cloudsOff = false;              // no cloud layer this frame (the cloud block's enabled 0): the programs built
+                                         // with CLOUDS_OFF (clouds/cloud_density.glsl), and never the far field's
     ScreenRect skyBound;                 // the pixels the sky passes ran their programs on: those that can see the air
                                          // (render/screen_bound.h; the whole frame where it fills it), space elsewhere
     ScreenRect groundBound;              // the pixels the terrain shadow and the surface light ran on: those that can
@@ -177,6 +179,9 @@ public:
     // (on, the default), or the general ones, which give the same image at more cost on llvmpipe
     // (tests compare the two).
     void setCloudFarFieldPrograms(bool on) { cloudFarFieldPrograms_ = on; }
+    // Whether a frame without clouds runs the programs built without their code (CLOUDS_OFF; on by
+    // default), for the tests that compare the two.
+    void setCloudsOffPrograms(bool on) { cloudsOffPrograms_ = on; }
     // The sky passes scissored to the rectangle that holds the air's sphere, space drawn around
     // it by render/sky_space.frag, and the terrain shadow and the surface light to the one that
     // holds the ground's highest sphere (on, the default), or run over the whole frame (tests
@@ -265,6 +270,7 @@ private:
     bool fullRateOnReset_ = true;
     bool stillFrameProgram_ = true;
     bool cloudFarFieldPrograms_ = true;
+    bool cloudsOffPrograms_ = true;
     bool seaReflectionSamples_ = true;
     bool screenBounds_ = true;
     // Whether the ocean drew any pixel this frame: the sea reflection pass draws only then
