@@ -211,3 +211,52 @@ TEST_F(SeaAndLand, TheDarkDepthsOfTheSeaFloorAreNotLitAndThatChangesNoPixel) {
         EXPECT_LT(cmp.maxRelativeError, 1e-4);
     }
 }
+
+// Issue 15: the surface light marks the sea floor's dark depths in a stencil first (render/
+// sea_floor_dark.frag) and runs its lighting program only on the rest, its dark depths' program
+// (SEA_FLOOR_DARK: their distance, no light) only on them, so that a software renderer no longer
+// shades the whole sea floor masked (`orbit` 1280x720: 30 -> 13 ms, `sea` 71 -> 32;
+// docs/PERFORMANCE.md, sixteenth). The surface radiance before the sea and the frame are those
+// of the lighting program alone, to the bit; and the lighting program never runs on a dark pixel:
+// a copy of it that paints the pixels it leaves dark 1000 paints none with the stencil, and
+// thousands without it (the test's way to fail: a stencil that keeps nothing off).
+TEST_F(SeaAndLand, TheSurfaceLightsStencilKeepsItsLightingOffTheDarkDepthsAndChangesNoPixel) {
+    using namespace planet;
+    const std::string lit =
+        "    if (underSea < SEA_FLOOR_DARK_DEPTH_M) outSurfaceRadiance = vec4(surfaceRadiance(pixel, surface, underSea), 1.0);";
+    const std::filesystem::path painting =
+        test::shadersWith("planet_test_dark_painted", "render/surface_light.frag", lit,
+                          lit + "\n    else outSurfaceRadiance = vec4(1000.0);");
+    const glm::ivec2 size{160, 90};
+    for (const char* view : {"sea", "orbit", "beach"}) {
+        SCOPED_TRACE(view);
+        Session s = loadSession(test::repoPaths(), "earth", view);
+        struct Frame {
+            ImageRGBAF seabed, hdr;
+        };
+        auto render = [&](const std::filesystem::path& root, bool stencil) {
+            Renderer r(root, atmosphere::TableSizes::reduced(), s.continents);
+            r.setSeaFloorDarkStencil(stencil);
+            r.render(s.scene, s.camera, size);
+            return Frame{readTextureRGBAF(r.targets().seabedRadiance(), size.x, size.y),
+                         readTextureRGBAF(r.targets().hdr(), size.x, size.y)};
+        };
+        auto painted = [](const ImageRGBAF& image) {
+            int n = 0;
+            for (std::size_t i = 0; i < image.pixels.size(); i += 4) n += image.pixels[i] == 1000.0f;
+            return n;
+        };
+        const Frame apart = render(test::repoPaths().shaders(), true);
+        const Frame together = render(test::repoPaths().shaders(), false);
+        EXPECT_EQ(apart.seabed.pixels, together.seabed.pixels);
+        EXPECT_EQ(apart.hdr.pixels, together.hdr.pixels);
+        const int paintedApart = painted(render(painting, true).seabed);
+        const int paintedTogether = painted(render(painting, false).seabed);
+        std::printf("%s: the dark depths painted by the lighting program: %d pixels with the stencil, %d without\n",
+                    view, paintedApart, paintedTogether);
+        EXPECT_EQ(paintedApart, 0);
+        if (std::string(view) != "beach") {
+            EXPECT_GT(paintedTogether, size.x * size.y / 10);  // the open sea's floor
+        }
+    }
+}

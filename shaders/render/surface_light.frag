@@ -25,6 +25,14 @@
 // 1: the terrain's shadow from the sparse samples where they agree (render/terrain_shadow.frag);
 // 0: marched at every pixel (tests compare the two).
 #define TERRAIN_SHADOW_FROM_SAMPLES 1
+// 1: the program for the sea floor's dark depths alone (the pixels render/sea_floor_dark.frag
+// marked in the stencil, src/render/renderer.cpp): their distance and no light, what this
+// program's test gives them below, while the lighting program runs only on the rest, kept off
+// them by the stencil before it runs, where its `if` would not (a software renderer runs the body
+// for every pixel, masked: at `orbit` the sea floor is half of the ground, at `sea` nearly all).
+#ifndef SEA_FLOOR_DARK
+#define SEA_FLOOR_DARK 0
+#endif
 
 layout(binding = UNIT_GBUFFER_NORMAL) uniform sampler2D gNormal;
 layout(binding = UNIT_GBUFFER_ALBEDO) uniform sampler2D gAlbedo;
@@ -99,5 +107,7 @@ void main() {
     // The sea floor's dark depths are not lit (ocean/water.glsl): there the terrain shadow's and
     // the clouds' marches take no step (a software renderer still runs the rest of the body for
     // every pixel of a group, masked: on the `sea` view this pass went from 114 to 75 ms).
+#if !SEA_FLOOR_DARK
     if (underSea < SEA_FLOOR_DARK_DEPTH_M) outSurfaceRadiance = vec4(surfaceRadiance(pixel, surface, underSea), 1.0);
+#endif
 }

@@ -44,7 +44,7 @@ void copyImage(const gl::Texture& from, const gl::Texture& to, glm::ivec2 size) 
 }
 
 gl::Framebuffer makeFramebuffer(std::initializer_list<const gl::Texture*> colours, const gl::Texture* depth,
-                                const char* name) {
+                                const char* name, const gl::Texture* stencil = nullptr) {
     gl::Framebuffer fb;
     GLenum buffers[8];
     GLsizei count = 0;
@@ -54,6 +54,7 @@ gl::Framebuffer makeFramebuffer(std::initializer_list<const gl::Texture*> colour
         ++count;
     }
     if (depth) glNamedFramebufferTexture(fb.id(), GL_DEPTH_ATTACHMENT, depth->id(), 0);
+    if (stencil) glNamedFramebufferTexture(fb.id(), GL_STENCIL_ATTACHMENT, stencil->id(), 0);
     glNamedFramebufferDrawBuffers(fb.id(), count, buffers);
     fb.label(name);
     checkComplete(fb, name);
@@ -82,8 +83,9 @@ bool RenderTargets::resize(glm::ivec2 size) {
                                            &gbuffer_.depth, "gbuffer");
     surfaceRadiance_ = makeTexture(GL_RGBA16F, size, "surface radiance");
     surfaceDistance_ = makeTexture(GL_R32F, size, "surface distance");
-    surfaceFramebuffer_ =
-        makeFramebuffer({&surfaceRadiance_, &surfaceDistance_}, &gbuffer_.depth, "surface radiance + depth");
+    surfaceStencil_ = makeTexture(GL_STENCIL_INDEX8, size, "surface stencil");
+    surfaceFramebuffer_ = makeFramebuffer({&surfaceRadiance_, &surfaceDistance_}, nullptr, "surface radiance + stencil",
+                                          &surfaceStencil_);
     // Full floats: the terrain reflection pass searches along the reflected ray from the sea's
     // distance, where half floats would move its vanishing point by up to a pixel.
     seaReflection_ = makeTexture(GL_RGBA32F, size, "sea reflection");
@@ -140,6 +142,8 @@ void RenderTargets::clearSurface() const {
     const float zero[4] = {0, 0, 0, 0};
     glClearNamedFramebufferfv(surfaceFramebuffer_.id(), GL_COLOR, 0, zero);
     glClearNamedFramebufferfv(surfaceFramebuffer_.id(), GL_COLOR, 1, zero);
+    const GLint clear = 0;
+    glClearNamedFramebufferiv(surfaceFramebuffer_.id(), GL_STENCIL, 0, &clear);
 }
 
 void RenderTargets::clearSeaReflection() const {

@@ -5,7 +5,8 @@
 //   surface   surfaceRadiance (RGBA16F): the radiance leaving the surface point towards the
 //             camera, no air in it; surfaceDistance (R32F): metres along the view ray to that
 //             point, 0 where there is none. Written by the surface light and the ocean
-//             (surfaceFramebuffer, with the G-buffer's depth for the sea).
+//             (surfaceFramebuffer, with a stencil: 1 where the surface light found the sea
+//             floor's dark depths, so that its lighting program skips them before it runs).
 //   seabed    copies of the G-buffer depth and of the surface radiance taken before the
 //             ocean, which reads them while drawing over them
 //   hdr       RGBA16F linear radiance arriving at the camera (what `render --out x.exr` writes),
@@ -176,6 +177,7 @@ private:
     gl::Buffer seaReflectionList_;
     gl::Buffer seaTerrainShadowList_;
     gl::Buffer terrainReflectionList_;
+    gl::Texture surfaceStencil_{GL_TEXTURE_2D};
     gl::Framebuffer surfaceFramebuffer_;
     gl::Framebuffer hdrFramebuffer_;
     gl::Framebuffer ldrFramebuffer_;

@@ -122,8 +122,10 @@ Renderer::Renderer(const std::filesystem::path& shaderRoot, const atmosphere::Ta
       continents_(continents ? std::move(continents) : std::make_shared<terrain::Continents>()),
       terrain_(sources_),
       terrainShadow_(withAtmosphere(sources_, programTables_), "terrain shadow", "render/terrain_shadow.frag"),
+      seaFloorDark_(withAtmosphere(sources_, programTables_), "sea floor dark", "render/sea_floor_dark.frag"),
       surfaceLight_(sources_, programTables_,
-                    gl::ProgramDesc{"surface light", {"common/fullscreen.vert", "render/surface_light.frag"}}),
+                    gl::ProgramDesc{"surface light", {"common/fullscreen.vert", "render/surface_light.frag"}},
+                    {"SEA_FLOOR_DARK"}),
       ocean_(sources_, programTables_),
       seaReflection_(sources_, programTables_,
                      gl::ProgramDesc{"sea reflection", {"common/fullscreen.vert", "ocean/sea_reflection.frag"}},
@@ -209,10 +211,36 @@ std::vector<Renderer::Pass> Renderer::makePasses() {
                           // (The 4D table's program: it reads no scattering table, only the clouds.)
                           AtmosphereVariant variant = variantFor(s);
                           variant.elekTable = false;
+                          // The sea floor's dark depths marked in the stencil first (render/
+                          // sea_floor_dark.frag): the lighting program runs on the rest, the dark
+                          // depths' program (SEA_FLOOR_DARK: their distance, no light) on them, each
+                          // kept off the other's pixels by the early stencil test, before it runs.
+                          const bool darkApart = seaFloorDarkStencil_ && s.terrain.ocean;
+                          if (darkApart) {
+                              glEnable(GL_STENCIL_TEST);
+                              glStencilFunc(GL_ALWAYS, 1, 0xFF);
+                              glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
+                              glUseProgram(seaFloorDark_.program().id());
+                              drawScissored(lastPrepare_.groundBound, targets_.size());
+                              glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
+                              glStencilMask(0);  // a test alone, which may run before the shader
+                              glStencilFunc(GL_EQUAL, 1, 0xFF);
+                              glUseProgram(surfaceLight_.get(variant, 1).id());
+                              drawScissored(lastPrepare_.groundBound, targets_.size());
+                              glStencilFunc(GL_EQUAL, 0, 0xFF);
+                          }
                           glUseProgram(surfaceLight_.get(variant).id());
                           drawScissored(lastPrepare_.groundBound, targets_.size());  // it discards elsewhere
+                          if (darkApart) {
+                              glStencilMask(0xFF);
+                              glDisable(GL_STENCIL_TEST);
+                          }
                       },
-                      [this] { return builtVariants({&surfaceLight_}); }});
+                      [this] {
+                          std::vector<gl::HotProgram*> p = builtVariants({&surfaceLight_});
+                          p.push_back(&seaFloorDark_.program());
+                          return p;
+                      }});
     passes.push_back({{"ocean", {R::GBuffer, R::TerrainShadow, R::SurfaceRadiance}, {R::SurfaceRadiance, R::GBuffer, R::SeaReflection}},
                       [](const Scene& s) { return s.terrain.ocean; },
                       [this](const Scene& s) {

@@ -182,6 +182,9 @@ public:
     // Whether a frame without clouds runs the programs built without their code (CLOUDS_OFF; on by
     // default), for the tests that compare the two.
     void setCloudsOffPrograms(bool on) { cloudsOffPrograms_ = on; }
+    // Whether the surface light draws the sea floor's dark depths first and keeps its lighting off
+    // them by the stencil (on by default), for the tests that compare the two.
+    void setSeaFloorDarkStencil(bool on) { seaFloorDarkStencil_ = on; }
     // The sky passes scissored to the rectangle that holds the air's sphere, space drawn around
     // it by render/sky_space.frag, and the terrain shadow and the surface light to the one that
     // holds the ground's highest sphere (on, the default), or run over the whole frame (tests
@@ -244,6 +247,7 @@ private:
     clouds::CloudResources clouds_;
     TerrainPass terrain_;
     FullscreenPass terrainShadow_;
+    FullscreenPass seaFloorDark_;  // the surface light's stencil of the sea floor's dark depths (render/sea_floor_dark.frag)
     AtmosphereProgram surfaceLight_;
     OceanPass ocean_;
     AtmosphereProgram seaReflection_;  // mode SEA_REFLECTION_COMPOSE: the samples' spread (ocean/sea_reflection.frag)
@@ -271,6 +275,7 @@ private:
     bool stillFrameProgram_ = true;
     bool cloudFarFieldPrograms_ = true;
     bool cloudsOffPrograms_ = true;
+    bool seaFloorDarkStencil_ = true;
     bool seaReflectionSamples_ = true;
     bool screenBounds_ = true;
     // Whether the ocean drew any pixel this frame: the sea reflection pass draws only then
