@@ -7,6 +7,8 @@
 #include <random>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 
 #include "app/session.h"
 #include "gl_test_support.h"
@@ -136,4 +138,74 @@ TEST_F(OceanCulling, WhereTheWavesCannotShowTheSeaTakesLargerTriangles) {
         EXPECT_LT(c.meanRelativeError, 0.001) << view;
         EXPECT_LT(c.errorPercentile(99), 0.01) << view;
     }
+}
+
+// Issue 15: where the sea is drawn over the ground from above, the terrain leaves out the sea
+// floor's dark depths (shaders/terrain/terrain.tesc; src/ocean/land_cull.h's
+// darkFloorContinentThreshold): the frame is the one with the whole floor drawn, to the bit on
+// llvmpipe (the ocean's water path there from the depth below the sea), with none of the open
+// sea's floor drawn and part of the beach's (from orbit the grid's patches, hundreds of kilometres
+// across, are too large for the map's slope bound: none is left out). Able to fail: a threshold
+// that lets the shelf go shows its floor missing through the shallow water (the beach), and a
+// water path left at 1e30 m where no floor was drawn cancelled to none (orbit: the open sea
+// 12 % darker).
+TEST_F(OceanCulling, TheDarkDepthsOfTheSeaFloorAreNotDrawnAndThatChangesNoPixel) {
+    for (const std::string view : {"orbit", "sea", "beach"}) {
+        SCOPED_TRACE(view);
+        long long primitives = 0;
+        renderer->terrain().setStatistics(true);
+        renderer->setDarkFloorCulling(false);
+        const ImageRGBAF whole = render(view, true, primitives);
+        const long long wholePatches = renderer->terrain().lastStatistics().patches;
+        const long long wholeFragments = renderer->terrain().lastStatistics().fragments;
+        renderer->setDarkFloorCulling(true);
+        const ImageRGBAF culled = render(view, true, primitives);
+        const long long culledFragments = renderer->terrain().lastStatistics().fragments;
+        const ImageComparison c = compareImages(culled, whole);
+        std::printf("%-6s terrain fragments %lld with the whole floor, %lld without its dark depths (%lld patches); "
+                    "mean %.6f %%, max %.4f %%\n",
+                    view.c_str(), wholeFragments, culledFragments, wholePatches, 100.0 * c.meanRelativeError,
+                    100.0 * c.maxRelativeError);
+        EXPECT_EQ(c.nonFinitePixels, 0u);
+        EXPECT_LT(c.meanRelativeError, 1e-6);
+        EXPECT_LT(c.maxRelativeError, 1e-4);
+        if (view == "sea") {
+            EXPECT_LT(culledFragments, wholeFragments / 10) << "the open sea's floor is dark";
+        } else if (view == "beach") {
+            EXPECT_LT(culledFragments, wholeFragments) << "the sea floor beyond the shelf is dark";
+            EXPECT_GT(culledFragments, wholeFragments / 2) << "the beach's floor is shallow";
+        } else {  // from orbit the grid's patches are too large for the map's slope bound: none is left out
+            EXPECT_EQ(culledFragments, wholeFragments);
+        }
+    }
+    renderer->terrain().setStatistics(false);
+}
+
+TEST_F(OceanCulling, TheDarkFloorsThresholdHoldsOnTheHeightField) {
+    Session s = loadSession(test::repoPaths(), "earth", "beach");
+    const double threshold = ocean::darkFloorContinentThreshold(s.scene.terrain, 0.0);
+    std::printf("the sea floor is dark (%.0f m down) below e = %.5f\n", ocean::kSeaFloorDarkDepthM, threshold);
+    ASSERT_GT(threshold, -1.0);
+    ASSERT_LT(threshold, 0.0);
+    // Below it the ground is deeper than the dark depth; just above it, not (the bound is tight).
+    const noise::CubeMap& map = s.ground.continents();
+    std::mt19937 rng(16);
+    std::uniform_real_distribution<double> unit(-1.0, 1.0);
+    int dark = 0;
+    for (int i = 0; i < 20000; ++i) {
+        const glm::vec3 d(glm::normalize(glm::dvec3(unit(rng), unit(rng), unit(rng))));
+        if (terrain::continentValue(d, map) >= threshold) continue;
+        ++dark;
+        EXPECT_LT(terrain::terrainHeight(d, s.ground.shape(), map), -ocean::kSeaFloorDarkDepthM);
+    }
+    EXPECT_GT(dark, 1000);
+    terrain::TerrainShape shape = s.ground.shape();
+    noise::CubeMap uniform;
+    uniform.size = 1;
+    uniform.texels.assign(6, glm::vec4(float(threshold + 0.01), 0.0f, 0.0f, 0.0f));
+    EXPECT_GT(terrain::terrainHeight(glm::vec3(0, 0, 1), shape, uniform), -ocean::kSeaFloorDarkDepthM);
+    // The shader's constant is this one.
+    std::ifstream water(test::repoPaths().shaders() / "ocean/water.glsl");
+    const std::string text((std::istreambuf_iterator<char>(water)), std::istreambuf_iterator<char>());
+    EXPECT_NE(text.find("const float SEA_FLOOR_DARK_DEPTH_M = 400.0;"), std::string::npos);
 }

@@ -195,10 +195,14 @@ TEST_F(SeaAndLand, TheDarkDepthsOfTheSeaFloorAreNotLitAndThatChangesNoPixel) {
             }
             ASSERT_GT(cameraDepthBelowSeaM(s.scene, s.camera), 0.0);
         }
+        // The floor drawn where the sea covers it (the terrain leaves out its dark depths where its
+        // patches are small enough for the bound, test_ocean_culling.cpp; not from orbit).
         Renderer skipping(test::repoPaths().shaders(), atmosphere::TableSizes::reduced(), s.continents);
+        skipping.setDarkFloorCulling(false);
         skipping.render(s.scene, s.camera, size);
         const ImageRGBAF image = readTextureRGBAF(skipping.targets().hdr(), size.x, size.y);
         Renderer lighting(litEverywhere, atmosphere::TableSizes::reduced(), s.continents);
+        lighting.setDarkFloorCulling(false);
         lighting.render(s.scene, s.camera, size);
         const ImageComparison cmp = compareImages(image, readTextureRGBAF(lighting.targets().hdr(), size.x, size.y));
         const int skipped = unmarched(skipping), sky = unmarched(lighting);
@@ -237,6 +241,7 @@ TEST_F(SeaAndLand, TheSurfaceLightsStencilKeepsItsLightingOffTheDarkDepthsAndCha
         auto render = [&](const std::filesystem::path& root, bool stencil) {
             Renderer r(root, atmosphere::TableSizes::reduced(), s.continents);
             r.setSeaFloorDarkStencil(stencil);
+            r.setDarkFloorCulling(false);  // the floor drawn where the sea covers it (not from orbit anyway)
             r.render(s.scene, s.camera, size);
             return Frame{readTextureRGBAF(r.targets().seabedRadiance(), size.x, size.y),
                          readTextureRGBAF(r.targets().hdr(), size.x, size.y)};

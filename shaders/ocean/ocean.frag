@@ -213,8 +213,11 @@ void main() {
 
     // Water between the surface and the seabed along this pixel's ray: from the depth
     // buffer near the camera, from the depth below the surface where the meshes sag.
-    float meshPath = max(seabedDistance - surfaceDistance, 0.0);
     float depthPath = max(waterDepth, 0.0) / cosIncidence;
+    // (With no floor drawn behind, the depth's path: the terrain leaves out the dark depths where
+    // the sea covers them, terrain/terrain.tesc, and its chords may sag off the limb. A path of
+    // 1e30 m here cancelled in the mix below where farness is 1 and left no water at all.)
+    float meshPath = seabed > 0.0 ? max(seabedDistance - surfaceDistance, 0.0) : depthPath;
     float waterPath = mix(meshPath, depthPath, farness);
     vec3 behind = texelFetch(seabedRadiance, pixel, 0).rgb;
 

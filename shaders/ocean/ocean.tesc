@@ -19,20 +19,13 @@ out vec2 tcGrid[];
 out ivec2 tcPoint[];
 
 // Whether the patch lies over land throughout (src/ocean/land_cull.h): the continent value at
-// its centre, less the map's steepest slope times the patch's angular radius, above the value
-// at which the ground surely stands above the highest crest. The radius is the farthest of the
-// corners, the edges' midpoints and the centre on the grid (the grid's lines curve between
-// vertices; a stride's patch spans several cells), times 1.25 for what lies between them.
+// its centre, less the map's steepest slope times the patch's angular radius (terrain/grid.glsl),
+// above the value at which the ground surely stands above the highest crest.
 bool overLand(dvec3 directions[4]) {
     if (ocean.landCulling == 0) return false;
-    vec3 centre = normalize(vec3(directions[0] + directions[1] + directions[2] + directions[3]));
-    float chord = length(vec3(gridDirection(0.25 * (vGrid[0] + vGrid[1] + vGrid[2] + vGrid[3]))) - centre);
-    for (int i = 0; i < 4; ++i) {
-        chord = max(chord, length(vec3(directions[i]) - centre));
-        vec3 mid = vec3(gridDirection(mix(vGrid[i], vGrid[(i + 1) % 4], 0.5)));
-        chord = max(chord, length(mid - centre));
-    }
-    float radius = 1.25 * 2.0 * asin(min(0.5 * chord, 1.0)) + 1e-6;
+    vec2 g[4] = vec2[4](vGrid[0], vGrid[1], vGrid[2], vGrid[3]);
+    vec3 centre;
+    float radius = patchAngularRadius(g, directions, centre);
     float e = continentValue(centre, uContinents);
     return e - ocean.continentLipschitz * radius > ocean.patchLandContinent;
 }

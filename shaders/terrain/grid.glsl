@@ -39,6 +39,22 @@ dvec3 gridDirection(vec2 g) {
     return normalize(worldFromGrid() * dvec3(gx, gy, hemisphere + grid.zShift));                                 // Eq. 4, 1
 }
 
+// A patch's centre direction (unit, from the planet centre) and its angular radius, rad, from its
+// corners' grid coordinates `g` and directions `d`: the farthest of the corners, the edges'
+// midpoints and the centre on the grid (the grid's lines curve between vertices; a stride's patch
+// spans several cells), times 1.25 for what lies between them. For the continents map's slope
+// bounds over a whole patch (src/ocean/land_cull.h): the sea over land, the ground under the sea.
+float patchAngularRadius(vec2 g[4], dvec3 d[4], out vec3 centre) {
+    centre = normalize(vec3(d[0] + d[1] + d[2] + d[3]));
+    float chord = length(vec3(gridDirection(0.25 * (g[0] + g[1] + g[2] + g[3]))) - centre);
+    for (int i = 0; i < 4; ++i) {
+        chord = max(chord, length(vec3(d[i]) - centre));
+        vec3 mid = vec3(gridDirection(mix(g[i], g[(i + 1) % 4], 0.5)));
+        chord = max(chord, length(mid - centre));
+    }
+    return 1.25 * 2.0 * asin(min(0.5 * chord, 1.0)) + 1e-6;
+}
+
 // The grid coordinate of a place on the grid given in point indices (i, j), fractional:
 // src/grid/projected_grid.h's gridVertexCoordinate between the points, so a patch of several
 // cells (the grids' stride, src/grid/grid_stride.h) puts its vertices where the grid's own

@@ -25,6 +25,40 @@ out ivec2 tcPoint[];
 
 #include "terrain/terrain_block.glsl"
 
+// Whether the patch lies under the sea floor's dark depths throughout, where the sea is drawn over
+// it from above (terrainDarkFloorCulling; src/ocean/land_cull.h): its centre's continent value plus
+// the map's steepest slope times its angular radius (terrain/grid.glsl) below the value under
+// which the ground is surely SEA_FLOOR_DARK_DEPTH_M under the sea (ocean/water.glsl). Its light
+// through that much water is none, the ocean's water path there comes from the depth below the
+// sea, and the passes after the ocean see the sea: not drawing it changes no pixel (tests), and
+// spares the terrain, its shadow's samples and the surface light the sea floor seen from orbit.
+bool underDarkSea() {
+    if (terrainDarkFloorCulling == 0) return false;
+    vec2 g[4] = vec2[4](vGrid[0], vGrid[1], vGrid[2], vGrid[3]);
+    dvec3 d[4] = dvec3[4](gridDirection(g[0]), gridDirection(g[1]), gridDirection(g[2]), gridDirection(g[3]));
+    vec3 centre;
+    float radius = patchAngularRadius(g, d, centre);
+    float e = continentValue(centre, uContinents);
+    float bound = e + terrainContinentLipschitz * radius;
+    // A patch too large for one sample's bound (from orbit the grid's stride makes them hundreds of
+    // kilometres across, and the bound's slope is 70 per radian) is bounded by its 4x4 parts, each
+    // by its own centre and a radius of 1.5 / 4 of the patch's: where its centre is dark itself,
+    // and the first bound did not settle it (a loop that other patches do not enter: land, the
+    // shelf). Corners 0, 1, 2, 3 go round the patch (grid/tessellation.glsl).
+    for (int k = 0; k < (bound >= terrainPatchDarkContinent && e < terrainPatchDarkContinent ? 1 : 0); ++k) {
+        float highest = -1.0e30;
+        for (int j = 0; j < 4; ++j) {
+            for (int i = 0; i < 4; ++i) {
+                vec2 f = (vec2(i, j) + 0.5) / 4.0;
+                vec2 part = mix(mix(g[0], g[1], f.x), mix(g[3], g[2], f.x), f.y);
+                highest = max(highest, continentValue(vec3(gridDirection(part)), uContinents));
+            }
+        }
+        bound = highest + terrainContinentLipschitz * (1.5 / 4.0) * radius;
+    }
+    return bound < terrainPatchDarkContinent;
+}
+
 void main() {
     tcGrid[gl_InvocationID] = vGrid[gl_InvocationID];
     tcPoint[gl_InvocationID] = vPoint[gl_InvocationID];
@@ -38,7 +72,7 @@ void main() {
         corners[i + 4] = vHigh[i];
     }
     raiseOuterCorners(corners, patchBulgeM(ground, frame.planetRadius));
-    if (outsideFrustum(corners)) {
+    if (outsideFrustum(corners) || underDarkSea()) {
         cullPatch();
         return;
     }

@@ -11,6 +11,12 @@ layout(std140, binding = BLOCK_TERRAIN) uniform TerrainBlock {
     int terrainShadows;             // 1: the terrain casts shadows (terrain/terrain_shadow.glsl)
     int terrainPadding0;            // (the ground detail is the program's TERRAIN_DETAIL: terrain/terrain.frag)
     int terrainLightShafts;         // 1: the terrain's shadows in the air (atmosphere/interface.glsl)
+    // The sea floor's dark depths not drawn where the sea covers them from above (terrain/
+    // terrain.tesc; src/terrain/terrain_block.h): below this continent value, by the map's slope bound.
+    float terrainPatchDarkContinent;
+    float terrainContinentLipschitz;
+    int terrainDarkFloorCulling;    // 0: off
+    int terrainPadding1;
 };
 // The height field near the camera, formed in double each frame (terrain/height.glsl
 // TerrainNear; C++: terrain::makeTerrainNear).

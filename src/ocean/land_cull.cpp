@@ -71,6 +71,31 @@ double landContinentThreshold(const TerrainParams& terrain, double seaLevelM, do
     return hi;
 }
 
+double darkFloorContinentThreshold(const TerrainParams& terrain, double seaLevelM) {
+    constexpr double kNone = -2.0;
+    terrain::TerrainShape shape = terrain::makeTerrainShape(terrain);
+    shape.mountainOctaves = 0;  // (under the sea there are none anyway)
+    noise::CubeMap uniform;
+    uniform.size = 1;
+    uniform.texels.assign(6, glm::vec4(0.0f));
+    const glm::vec3 up(0.0f, 0.0f, 1.0f);
+    auto height = [&](double e) {
+        for (glm::vec4& t : uniform.texels) t.x = static_cast<float>(e);
+        return static_cast<double>(terrain::terrainHeight(up, shape, uniform));
+    };
+    const double needed = seaLevelM - kSeaFloorDarkDepthM - kMarginM;
+    if (!(height(-1.0) < needed)) return kNone;
+    double lo = -1.0, hi = 0.0;
+    for (int i = 0; i < 60 && hi > lo; ++i) {
+        const double mid = 0.5 * (lo + hi);
+        (height(mid) < needed ? lo : hi) = mid;
+    }
+    // Below lo the ramp must stay below (it falls monotonically with e); else cull nothing.
+    for (int i = 0; i <= 256; ++i)
+        if (!(height(lo - (lo + 1.0) * i / 256.0) < needed)) return kNone;
+    return lo;
+}
+
 double continentSampleSlackRad(const noise::CubeMap& map) { return map.size < 1 ? 0.0 : (2.0 / map.size) / 32.0; }
 
 double continentSampleSlack(const noise::CubeMap& map, double lipschitz) {

@@ -29,6 +29,21 @@ double continentLipschitz(const noise::CubeMap& map);
 // margin (m); 2 (above any value of the map, so nothing is culled) when no such value exists.
 double landContinentThreshold(const TerrainParams& terrain, double seaLevelM, double maxWaveHeightM);
 
+// The depth below the sea surface from which the sea floor is dark, m: the light that reaches it
+// has crossed that much water (shaders/ocean/water.glsl's SEA_FLOOR_DARK_DEPTH_M, the same value;
+// a test compares them). Seen from above through the sea, such ground is not drawn at all where
+// the sea is (darkFloorContinentThreshold).
+inline constexpr double kSeaFloorDarkDepthM = 400.0;
+
+// The continent value below which the ground is surely deeper than kSeaFloorDarkDepthM (and a
+// margin) under a sea at seaLevelM: under the sea the height is the shelf's ramp of e alone (no
+// mountains; terrain/height.glsl), found by bisection on the terrain's own height function and
+// checked monotonic below it; -2 (below any value of the map, so nothing is culled) when no such
+// value exists. The terrain's control stage drops a patch whose centre value plus the slope bound
+// times its radius is below it less the filter's slack (shaders/terrain/terrain.tesc), where the
+// ocean is drawn over it from above.
+double darkFloorContinentThreshold(const TerrainParams& terrain, double seaLevelM);
+
 // How far the GPU's filter may move a sample's place, radians: its weight rounding, 1/32 of the
 // largest texel's angle (2 / size radians).
 double continentSampleSlackRad(const noise::CubeMap& map);

@@ -81,6 +81,7 @@ void OceanPass::prepare(const Scene& scene, const Camera& camera, double radians
         sampleSlack_ = continents ? ocean::continentSampleSlack(*continents, lipschitz_) : 0.0;
     }
     landContinent_ = continents ? ocean::landContinentThreshold(scene.terrain, scene.ocean.sea_level_m, maxHeight) : 2.0;
+    darkContinent_ = continents ? ocean::darkFloorContinentThreshold(scene.terrain, scene.ocean.sea_level_m) : -2.0;
     block.landContinent = static_cast<float>(landContinent_);
     block.patchLandContinent = static_cast<float>(landContinent_ + sampleSlack_);
     block.continentLipschitz = static_cast<float>(lipschitz_);

@@ -75,6 +75,11 @@ public:
     // under land or behind the terrain discarded before the water is shaded. Off only to
     // compare with (tests): the pixels are the same either way.
     void setLandCulling(bool on) { landCulling_ = on; }
+    // Where the terrain may leave out the sea floor's dark depths under this sea (src/ocean/
+    // land_cull.h, darkFloorContinentThreshold), from the last prepare(): whether it may (land
+    // culling on, such a value exists), the patch's bound with the filter's slack, the map's slope.
+    bool darkFloorCulling() const { return landCulling_ && darkContinent_ >= -1.0; }
+    double patchDarkContinent() const { return darkContinent_ - sampleSlack_; }
     // Tests: the patches' stride forced (1, 2, 4 or 8), or 0 (the default) to let the grid's cells
     // on screen decide above the terrain detail's reach (grid/grid_stride.h); the last prepared frame's.
     void setStrideOverride(int stride) { strideOverride_ = stride; }
@@ -110,6 +115,7 @@ private:
     GridStride stride_;
     int strideOverride_ = 0;
     bool landCulling_ = true;
+    double darkContinent_ = -2.0;
     bool countPrimitives_ = false;
     long long lastPrimitives_ = -1;
     gl::Query primitives_{GL_PRIMITIVES_GENERATED};

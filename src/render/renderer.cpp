@@ -553,6 +553,11 @@ void Renderer::prepare(const Scene& scene, const Camera& camera, glm::ivec2 size
                                                       highestGroundM / 1000.0);
     terrain_.prepare(scene, camera, *continents_->map(), camera.fovY_rad / size.y, double(size.x) / size.y);
     if (scene.terrain.ocean) ocean_.prepare(scene, camera, camera.fovY_rad / size.y, double(size.x) / size.y, continents_->map());
+    // Where the sea is drawn over the ground from above, the ground under its dark depths is not
+    // drawn (terrain/terrain.tesc): the light through that much water is none, and every pass
+    // after the ocean sees the sea there (tests: the same frame).
+    if (scene.terrain.ocean && !report.underWater && darkFloorCulling_ && ocean_.darkFloorCulling())
+        terrain_.setDarkFloorCulling(ocean_.patchDarkContinent(), ocean_.continentLipschitz());
     lastPrepare_ = report;
 }
 

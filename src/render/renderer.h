@@ -185,6 +185,9 @@ public:
     // Whether the surface light draws the sea floor's dark depths first and keeps its lighting off
     // them by the stencil (on by default), for the tests that compare the two.
     void setSeaFloorDarkStencil(bool on) { seaFloorDarkStencil_ = on; }
+    // Whether the terrain leaves out the sea floor's dark depths where the sea covers them (on by
+    // default), for the tests that compare the two.
+    void setDarkFloorCulling(bool on) { darkFloorCulling_ = on; }
     // The sky passes scissored to the rectangle that holds the air's sphere, space drawn around
     // it by render/sky_space.frag, and the terrain shadow and the surface light to the one that
     // holds the ground's highest sphere (on, the default), or run over the whole frame (tests
@@ -276,6 +279,7 @@ private:
     bool cloudFarFieldPrograms_ = true;
     bool cloudsOffPrograms_ = true;
     bool seaFloorDarkStencil_ = true;
+    bool darkFloorCulling_ = true;
     bool seaReflectionSamples_ = true;
     bool screenBounds_ = true;
     // Whether the ocean drew any pixel this frame: the sea reflection pass draws only then

@@ -20,11 +20,20 @@ struct TerrainBlock {
     int shadows;                      // 1: the terrain casts shadows (terrain/terrain_shadow.glsl)
     int padding0;                     // (the ground detail is a program of its own: TERRAIN_DETAIL, terrain_pass.h)
     int lightShafts;                  // 1: the terrain's shadows in the air (atmosphere/interface.glsl)
+    // The sea floor's dark depths not drawn where the sea is drawn over them from above (issue 15;
+    // src/ocean/land_cull.h, darkFloorContinentThreshold): a patch is dropped where its centre's
+    // continent value plus continentLipschitz times its angular radius is below patchDarkContinent.
+    // Set each frame by the renderer after the ocean's prepare (TerrainPass::setDarkFloorCulling).
+    float patchDarkContinent;
+    float continentLipschitz;         // per radian, the ocean's (src/ocean/land_cull.h)
+    int darkFloorCulling;             // 0: off (no sea drawn, the camera under it, tests)
+    int padding1;
 };
 static_assert(offsetof(TerrainBlock, lowlandAlbedo) == 48 && offsetof(TerrainBlock, targetEdgePixels) == 60 &&
                   offsetof(TerrainBlock, hasOcean) == 64 &&
                   offsetof(TerrainBlock, shadows) == 68 && offsetof(TerrainBlock, padding0) == 72 &&
-                  offsetof(TerrainBlock, lightShafts) == 76 && sizeof(TerrainBlock) == 80,
+                  offsetof(TerrainBlock, lightShafts) == 76 && offsetof(TerrainBlock, patchDarkContinent) == 80 &&
+                  offsetof(TerrainBlock, darkFloorCulling) == 88 && sizeof(TerrainBlock) == 96,
               "TerrainBlock must match std140 (shaders/terrain/terrain_block.glsl)");
 
 inline TerrainBlock makeTerrainBlock(const Scene& scene) {

@@ -171,6 +171,14 @@ void TerrainPass::draw() {
     glDisable(GL_DEPTH_TEST);
 }
 
+void TerrainPass::setDarkFloorCulling(double patchDarkContinent, double continentLipschitz) {
+    struct {
+        float patchDarkContinent, continentLipschitz;
+        int darkFloorCulling;
+    } cull{static_cast<float>(patchDarkContinent), static_cast<float>(continentLipschitz), 1};
+    glNamedBufferSubData(block_.id(), offsetof(terrain::TerrainBlock, patchDarkContinent), sizeof cull, &cull);
+}
+
 std::vector<gl::HotProgram*> TerrainPass::programs() {
     std::vector<gl::HotProgram*> built{&plain_};
     if (detailed_) built.push_back(&*detailed_);

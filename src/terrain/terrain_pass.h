@@ -61,6 +61,11 @@ public:
         long long fragments = -1;   // fragment-stage invocations
     };
     void setStatistics(bool on) { statistics_ = on; }
+    // After prepare(), where the sea is drawn over the ground from above: patches surely under the
+    // sea floor's dark depths (their continent values below patchDarkContinent by the map's slope
+    // bound, per radian) are not drawn this frame (shaders/terrain/terrain.tesc). Off again at the
+    // next prepare().
+    void setDarkFloorCulling(double patchDarkContinent, double continentLipschitz);
     // Whether the last prepared frame draws with the ground detail's program: terrain.detail on
     // and the camera close enough to the ground for any of it to show (detailInReach).
     bool detailDrawn() const { return detailPatches_ > 0; }
