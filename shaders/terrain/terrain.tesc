@@ -24,6 +24,7 @@ out vec2 tcGrid[];
 out ivec2 tcPoint[];
 
 #include "terrain/terrain_block.glsl"
+#include "terrain/patch_continents.glsl"
 
 // Whether the patch lies under the sea floor's dark depths throughout, where the sea is drawn over
 // it from above (terrainDarkFloorCulling; src/ocean/land_cull.h): its centre's continent value plus
@@ -40,21 +41,11 @@ bool underDarkSea() {
     float radius = patchAngularRadius(g, d, centre);
     float e = continentValue(centre, uContinents);
     float bound = e + terrainContinentLipschitz * radius;
-    // A patch too large for one sample's bound (from orbit the grid's stride makes them hundreds of
-    // kilometres across, and the bound's slope is 70 per radian) is bounded by its 4x4 parts, each
-    // by its own centre and a radius of 1.5 / 4 of the patch's: where its centre is dark itself,
-    // and the first bound did not settle it (a loop that other patches do not enter: land, the
-    // shelf). Corners 0, 1, 2, 3 go round the patch (grid/tessellation.glsl).
+    // A patch too large for that bound (from orbit) by its 4x4 parts, where its centre is dark
+    // itself (terrain/patch_continents.glsl; a loop that other patches do not enter: land, the shelf).
     for (int k = 0; k < (bound >= terrainPatchDarkContinent && e < terrainPatchDarkContinent ? 1 : 0); ++k) {
-        float highest = -1.0e30;
-        for (int j = 0; j < 4; ++j) {
-            for (int i = 0; i < 4; ++i) {
-                vec2 f = (vec2(i, j) + 0.5) / 4.0;
-                vec2 part = mix(mix(g[0], g[1], f.x), mix(g[3], g[2], f.x), f.y);
-                highest = max(highest, continentValue(vec3(gridDirection(part)), uContinents));
-            }
-        }
-        bound = highest + terrainContinentLipschitz * (1.5 / 4.0) * radius;
+        float lowest;
+        patchContinentRange(g, radius, terrainContinentLipschitz, lowest, bound);
     }
     return bound < terrainPatchDarkContinent;
 }
