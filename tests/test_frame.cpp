@@ -313,6 +313,10 @@ TEST_F(FrameTest, BlockMirrorsMatchTheDriversLayoutAndBindings) {
     const BlockLayout terrainBlock = blockLayout(p, "TerrainBlock");
     EXPECT_EQ(terrainBlock.binding, binding::BLOCK_TERRAIN);
     EXPECT_EQ(terrainBlock.size, static_cast<GLint>(sizeof(terrain::TerrainBlock)));
+    const gl::Program terrainProgram = gl::buildProgram(
+        sources, {"terrain", {"terrain/terrain.vert", "terrain/terrain.tesc", "terrain/terrain.tese", "terrain/terrain.frag"}});
+    EXPECT_EQ(memberOffset(terrainProgram.id(), "terrainDarkFloorCulling"),
+              static_cast<GLint>(offsetof(terrain::TerrainBlock, darkFloorCulling)));
     const BlockLayout oceanBlock = blockLayout(p, "OceanBlock");
     EXPECT_EQ(oceanBlock.binding, binding::BLOCK_OCEAN);
     EXPECT_EQ(oceanBlock.size, static_cast<GLint>(sizeof(ocean::OceanBlock)));

@@ -100,18 +100,9 @@ vec3 surfaceRadiance(ivec2 pixel, SurfacePoint surface, float depthBelowSea) {
 void main() {
     ivec2 pixel = ivec2(gl_FragCoord.xy);
     SurfacePoint surface;
-    bool drawn = surfacePointAt(pixel, surface);
-#if SEA_FLOOR_DARK
-    // Nothing drawn here (the sea floor the terrain left out under the sea, the sky): what the
-    // targets were cleared to, written rather than discarded (llvmpipe left this program's discard
-    // without effect behind the early stencil test: the pixels took (0, 0, 0, 1)).
-    if (!drawn) {
-        outSurfaceDistance = 0.0;
-        outSurfaceRadiance = vec4(0.0);
-        return;
-    }
-#endif
-    if (!drawn) discard;  // nothing drawn: the sky pass shows the sky here
+    // Nothing drawn: the sky pass shows the sky here (in the SEA_FLOOR_DARK program too: the pixels
+    // with no ground are marked with the dark depths, render/sea_floor_dark.frag).
+    if (!surfacePointAt(pixel, surface)) discard;
     outSurfaceDistance = surface.rayDistance;
     outSurfaceRadiance = vec4(0.0, 0.0, 0.0, 1.0);
     float underSea = depthBelowSea(surface);

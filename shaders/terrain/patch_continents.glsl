@@ -7,7 +7,9 @@
 // coordinates `g` (0, 1, 2, 3 round it) and whose angular radius is `radius`: the values at the
 // centres of its 4x4 parts, less and plus the map's slope bound (`lipschitz`, per radian) times
 // 1.5 / 4 of the radius (a part's half-diagonal is a quarter of the patch's where the grid is
-// affine across it; the rest is margin for its warp). Where one sample's bound over the whole
+// affine across it; the rest is margin for its warp: the parts' centres are placed by straight
+// lines between the corners' grid coordinates, not by the warp a stride's patch follows
+// (terrain/grid.glsl gridCoordinateAt), about 2 % of the patch off). Where one sample's bound over the whole
 // patch is too loose: from orbit the grid's stride makes patches hundreds of kilometres across,
 // and the bound's slope is 70 per radian.
 void patchContinentRange(vec2 g[4], float radius, float lipschitz, out float lowest, out float highest) {

@@ -6,7 +6,7 @@
 //             camera, no air in it; surfaceDistance (R32F): metres along the view ray to that
 //             point, 0 where there is none. Written by the surface light and the ocean
 //             (surfaceFramebuffer, with a stencil: 1 where the surface light found the sea
-//             floor's dark depths, so that its lighting program skips them before it runs).
+//             floor's dark depths or no ground, so that its lighting program skips them before it runs).
 //   seabed    copies of the G-buffer depth and of the surface radiance taken before the
 //             ocean, which reads them while drawing over them
 //   hdr       RGBA16F linear radiance arriving at the camera (what `render --out x.exr` writes),

@@ -220,8 +220,10 @@ std::vector<Renderer::Pass> Renderer::makePasses() {
                               glEnable(GL_STENCIL_TEST);
                               glStencilFunc(GL_ALWAYS, 1, 0xFF);
                               glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
+                              glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);  // the stencil alone
                               glUseProgram(seaFloorDark_.program().id());
                               drawScissored(lastPrepare_.groundBound, targets_.size());
+                              glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
                               glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
                               glStencilMask(0);  // a test alone, which may run before the shader
                               glStencilFunc(GL_EQUAL, 1, 0xFF);
@@ -233,6 +235,7 @@ std::vector<Renderer::Pass> Renderer::makePasses() {
                           drawScissored(lastPrepare_.groundBound, targets_.size());  // it discards elsewhere
                           if (darkApart) {
                               glStencilMask(0xFF);
+                              glStencilFunc(GL_ALWAYS, 0, 0xFF);
                               glDisable(GL_STENCIL_TEST);
                           }
                       },
@@ -638,7 +641,8 @@ bool Renderer::matchAtmosphereTables() {
     const auto started = std::chrono::steady_clock::now();
     programTables_ = sizes;
     terrainShadow_.program().setSources(withAtmosphere(sources_, sizes));
-    std::vector<gl::HotProgram*> rebuilt{&terrainShadow_.program()};
+    seaFloorDark_.program().setSources(withAtmosphere(sources_, sizes));
+    std::vector<gl::HotProgram*> rebuilt{&terrainShadow_.program(), &seaFloorDark_.program()};
     std::vector<AtmosphereProgram*> withTables = ocean_.atmospherePrograms();
     for (AtmosphereProgram* p : {&surfaceLight_, &seaTerrainShadow_, &seaReflection_, &seaReflectionListed_, &terrainReflectionList_,
                                  &terrainReflection_, &sky_, &skySparse_, &skyTemporal_, &skyRefine_})

@@ -22,7 +22,8 @@ struct TerrainBlock {
     int lightShafts;                  // 1: the terrain's shadows in the air (atmosphere/interface.glsl)
     // The sea floor's dark depths not drawn where the sea is drawn over them from above (issue 15;
     // src/ocean/land_cull.h, darkFloorContinentThreshold): a patch is dropped where its centre's
-    // continent value plus continentLipschitz times its angular radius is below patchDarkContinent.
+    // continent value plus continentLipschitz times its angular radius is below patchDarkContinent,
+    // or, where its centre is dark, the same bound over its 4x4 parts (terrain/patch_continents.glsl).
     // Set each frame by the renderer after the ocean's prepare (TerrainPass::setDarkFloorCulling).
     float patchDarkContinent;
     float continentLipschitz;         // per radian, the ocean's (src/ocean/land_cull.h)
