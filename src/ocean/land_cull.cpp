@@ -15,6 +15,26 @@ constexpr double kSafety = 2.5;     // bilinear cells (sqrt 2) and skewed texels
 constexpr double kMarginM = 0.5;    // above the highest crest, for the GPU's own rounding of the height
 constexpr double kDisabled = 2.0;   // above any continent value: nothing culled
 
+// The terrain's height (m, the GPU's own function in float) where the continent value is e
+// everywhere, the mountains off: the ramps of e alone (the lowlands on land, the shelf at sea),
+// on which the thresholds below are found.
+class RampHeight {
+public:
+    explicit RampHeight(const TerrainParams& terrain) : shape_(terrain::makeTerrainShape(terrain)) {
+        shape_.mountainOctaves = 0;  // on land they only add height; under the sea there are none
+        map_.size = 1;
+        map_.texels.assign(6, glm::vec4(0.0f));
+    }
+    double operator()(double e) {
+        for (glm::vec4& t : map_.texels) t.x = static_cast<float>(e);
+        return static_cast<double>(terrain::terrainHeight(glm::vec3(0.0f, 0.0f, 1.0f), shape_, map_));
+    }
+
+private:
+    terrain::TerrainShape shape_;
+    noise::CubeMap map_;
+};
+
 double angle(const glm::dvec3& a, const glm::dvec3& b) { return 2.0 * std::asin(std::min(glm::length(a - b) * 0.5, 1.0)); }
 }  // namespace
 
@@ -46,16 +66,7 @@ double continentLipschitz(const noise::CubeMap& map) {
 }
 
 double landContinentThreshold(const TerrainParams& terrain, double seaLevelM, double maxWaveHeightM) {
-    terrain::TerrainShape shape = terrain::makeTerrainShape(terrain);
-    shape.mountainOctaves = 0;  // the lowlands alone: the mountains only add height
-    noise::CubeMap uniform;
-    uniform.size = 1;
-    uniform.texels.assign(6, glm::vec4(0.0f));
-    const glm::vec3 up(0.0f, 0.0f, 1.0f);
-    auto lowland = [&](double e) {
-        for (glm::vec4& t : uniform.texels) t.x = static_cast<float>(e);
-        return static_cast<double>(terrain::terrainHeight(up, shape, uniform));
-    };
+    RampHeight lowland(terrain);  // the mountains only add height
     const double needed = seaLevelM + maxWaveHeightM + kMarginM;
     if (!(lowland(1.0) > needed)) return kDisabled;
     double lo = 0.0, hi = 1.0;
@@ -73,16 +84,7 @@ double landContinentThreshold(const TerrainParams& terrain, double seaLevelM, do
 
 double darkFloorContinentThreshold(const TerrainParams& terrain, double seaLevelM) {
     constexpr double kNone = -2.0;
-    terrain::TerrainShape shape = terrain::makeTerrainShape(terrain);
-    shape.mountainOctaves = 0;  // (under the sea there are none anyway)
-    noise::CubeMap uniform;
-    uniform.size = 1;
-    uniform.texels.assign(6, glm::vec4(0.0f));
-    const glm::vec3 up(0.0f, 0.0f, 1.0f);
-    auto height = [&](double e) {
-        for (glm::vec4& t : uniform.texels) t.x = static_cast<float>(e);
-        return static_cast<double>(terrain::terrainHeight(up, shape, uniform));
-    };
+    RampHeight height(terrain);
     const double needed = seaLevelM - kSeaFloorDarkDepthM - kMarginM;
     if (!(height(-1.0) < needed)) return kNone;
     double lo = -1.0, hi = 0.0;
