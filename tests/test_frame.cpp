@@ -293,8 +293,8 @@ GLint memberOffset(GLuint program, const char* name) {
 }  // namespace
 
 TEST_F(FrameTest, BlockMirrorsMatchTheDriversLayoutAndBindings) {
-    // Programs that declare every block (the ocean reads all five); std140 is what the C++
-    // static_asserts assume, and this asks the driver itself.
+    // Programs that declare every block (the ocean's mesh and its light read all six between
+    // them); std140 is what the C++ static_asserts assume, and this asks the driver itself.
     const gl::ShaderSources sources{test::repoPaths().shaders(),
                                     gl::shaderPreamble() +
                                         atmosphere::atmosphereShaderDefines(atmosphere::TableSizes::reduced())};
@@ -306,10 +306,12 @@ TEST_F(FrameTest, BlockMirrorsMatchTheDriversLayoutAndBindings) {
     EXPECT_EQ(frame.size, static_cast<GLint>(sizeof(FrameUniforms)));
     EXPECT_EQ(memberOffset(p, "FrameBlock.cameraDepthBelowSea"), static_cast<GLint>(offsetof(FrameUniforms, cameraDepthBelowSea)));
     EXPECT_EQ(memberOffset(p, "FrameBlock.nearPlane"), static_cast<GLint>(offsetof(FrameUniforms, nearPlane)));
-    const BlockLayout atmosphereBlock = blockLayout(p, "AtmosphereBlock");
+    const gl::Program seaLight = gl::buildProgram(sources, {"sea light", {"common/fullscreen.vert", "ocean/sea_light.frag"}});
+    const BlockLayout atmosphereBlock = blockLayout(seaLight.id(), "AtmosphereBlock");
     EXPECT_EQ(atmosphereBlock.binding, binding::BLOCK_ATMOSPHERE);
     EXPECT_EQ(atmosphereBlock.size, static_cast<GLint>(sizeof(atmosphere::AtmosphereUniforms)));
-    EXPECT_EQ(memberOffset(p, "AtmosphereBlock.muSMin"), static_cast<GLint>(offsetof(atmosphere::AtmosphereUniforms, muSMin)));
+    EXPECT_EQ(memberOffset(seaLight.id(), "AtmosphereBlock.muSMin"),
+              static_cast<GLint>(offsetof(atmosphere::AtmosphereUniforms, muSMin)));
     const BlockLayout terrainBlock = blockLayout(p, "TerrainBlock");
     EXPECT_EQ(terrainBlock.binding, binding::BLOCK_TERRAIN);
     EXPECT_EQ(terrainBlock.size, static_cast<GLint>(sizeof(terrain::TerrainBlock)));

@@ -215,3 +215,62 @@ TEST_F(OceanCulling, TheDarkFloorsThresholdHoldsOnTheHeightField) {
     const std::string text((std::istreambuf_iterator<char>(water)), std::istreambuf_iterator<char>());
     EXPECT_NE(text.find("const float SEA_FLOOR_DARK_DEPTH_M = 400.0;"), std::string::npos);
 }
+
+// The water's light (ocean/sea_light.frag) runs once per pixel where the ocean's mesh left the
+// sea as the nearest surface, not on the mesh's fragments (a software renderer shades a 4x4 block
+// for every triangle that touches it: orbit 1280x720 had 983 344 fragment invocations for its
+// sea's pixels) and not on the rest of the ground's rectangle: a copy of the program that counts
+// its invocations (an atomic add into a buffer of the test's) counts exactly the pixels the mesh
+// marked in the sea surface's G-buffer (a coverage above 0), with the early stencil test. Able
+// to fail: without `early_fragment_tests` llvmpipe tests the stencil after a shader that writes
+// memory has run, and the copy counts every pixel of the rectangle (checked below).
+TEST_F(OceanCulling, TheSeasLightRunsOncePerSeaPixel) {
+    const std::string early = "layout(early_fragment_tests) in;";
+    const std::string counting = "layout(std430, binding = 15) buffer TestCount { uint testInvocations; };\n"
+                                 "void main() {\n    atomicAdd(testInvocations, 1u);\n    seaLight();\n}\n";
+    auto countingCopy = [&](const std::string& name, bool earlyTests) {
+        const std::filesystem::path root =
+            test::shadersWith(name, "ocean/sea_light.frag", "void main() {", "void seaLight() {");
+        std::ofstream(root / "ocean/sea_light.frag", std::ios::app) << counting;
+        if (!earlyTests) {  // the same file without the early test
+            std::ifstream in(root / "ocean/sea_light.frag");
+            std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+            const std::size_t at = text.find(early);
+            EXPECT_NE(at, std::string::npos);
+            if (at != std::string::npos) text.erase(at, early.size());
+            std::ofstream(root / "ocean/sea_light.frag") << text;
+        }
+        return root;
+    };
+    gl::Buffer count;
+    glNamedBufferStorage(count.id(), sizeof(GLuint), nullptr, GL_DYNAMIC_STORAGE_BIT);
+    const std::filesystem::path withEarly = countingCopy("planet_test_sea_light_counted", true);
+    const std::filesystem::path withoutEarly = countingCopy("planet_test_sea_light_counted_late", false);
+    for (const std::string view : {"orbit", "beach"}) {
+        SCOPED_TRACE(view);
+        Session s = loadSession(test::repoPaths(), "earth", view);
+        s.scene.render.temporal = false;
+        auto invocations = [&](const std::filesystem::path& root, long long& marked) {
+            Renderer r(root, atmosphere::TableSizes::reduced(), s.continents);
+            const GLuint zero = 0;
+            glNamedBufferSubData(count.id(), 0, sizeof zero, &zero);
+            glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 15, count.id());
+            r.render(s.scene, s.camera, kSize);
+            GLuint n = 0;
+            glGetNamedBufferSubData(count.id(), 0, sizeof n, &n);
+            const ImageRGBAF surface = readTextureRGBAF(r.targets().seaSurface()[2], kSize.x, kSize.y);
+            marked = 0;
+            for (std::size_t i = 0; i < surface.pixels.size(); i += 4) marked += surface.pixels[i] != 0.0f;
+            return static_cast<long long>(n);
+        };
+        long long marked = 0, markedLate = 0;
+        const long long once = invocations(withEarly, marked);
+        const long long late = invocations(withoutEarly, markedLate);
+        std::printf("%-6s the sea's light ran %lld times for %lld sea pixels (%lld with the stencil tested late)\n",
+                    view.c_str(), once, marked, late);
+        EXPECT_GT(marked, kSize.x * kSize.y / 10);
+        EXPECT_EQ(once, marked);
+        EXPECT_EQ(markedLate, marked);
+        EXPECT_GT(late, marked + kSize.x * kSize.y / 20);  // the check above can fail
+    }
+}

@@ -297,7 +297,7 @@ TEST_F(OceanRender, FromSpaceTheCoastlineFollowsTheHeightField) {
 // (ocean/waves.h, foamCover) gives their depths (a white of 0.6 over a sea of a few per cent).
 // Able to fail: without the foam nothing changes; foam in the open sea breaks the first check.
 TEST_F(OceanRender, FoamBrightensTheSurfAndNothingElse) {
-    Renderer off(test::shadersWith("planet_test_foam_off", "ocean/ocean.frag", "#define OCEAN_FOAM 1",
+    Renderer off(test::shadersWith("planet_test_foam_off", "ocean/sea_light.frag", "#define OCEAN_FOAM 1",
                                    "#define OCEAN_FOAM 0"),
                  atmosphere::TableSizes::reduced());
     int deep = 0, deepChanged = 0, surf = 0;

@@ -390,10 +390,10 @@ Session lakeAtALowSun(double sunAzimuthDeg) {
     return s;
 }
 
-// The shader tree with the sea's terrain shadows compiled out (ocean.frag's
+// The shader tree with the sea's terrain shadows compiled out (ocean/sea_light.frag's
 // SUN_VISIBILITY_TERRAIN 0; the sea floor under it keeps its own), in a temporary folder.
 std::filesystem::path shadersWithoutSeaShadows() {
-    return test::shadersWith("planet_test_sea_shadows_off", "ocean/ocean.frag", "#define SUN_VISIBILITY_TERRAIN 1",
+    return test::shadersWith("planet_test_sea_shadows_off", "ocean/sea_light.frag", "#define SUN_VISIBILITY_TERRAIN 1",
                              "#define SUN_VISIBILITY_TERRAIN 0");
 }
 
@@ -566,7 +566,7 @@ TEST_F(TerrainShadowRender, TheSampledShadowIsTheMarchedOneButForSlivers) {
 
 // The sea's surface takes the terrain's shadow from the samples' g channel (the march from sea
 // level where each sample's ray meets the sea, render/terrain_shadow.frag) where those around a
-// pixel agree, and marches elsewhere (ocean.frag's OCEAN_TERRAIN_SHADOW_FROM_SAMPLES). Against
+// pixel agree, and marches elsewhere (ocean/sea_light.frag's OCEAN_TERRAIN_SHADOW_FROM_SAMPLES). Against
 // the march at every pixel that land may shadow (built with it 0), on the flooded valley at a
 // 5 deg sun with the range's shadow across the water (lakeAtALowSun, 320x180), and in `beach`
 // and `sunset` (the shore beside the camera: every sea pixel within land's reach, where the march
@@ -581,7 +581,7 @@ TEST_F(TerrainShadowRender, TheSampledShadowIsTheMarchedOneButForSlivers) {
 // a small part of its radiance beside the sky it reflects).
 TEST_F(TerrainShadowRender, TheSeaTakesItsShadowFromTheSamplesButForSlivers) {
     const std::filesystem::path marched =
-        test::shadersWith("planet_test_sea_shadow_marched", "ocean/ocean.frag",
+        test::shadersWith("planet_test_sea_shadow_marched", "ocean/sea_light.frag",
                           "#define OCEAN_TERRAIN_SHADOW_FROM_SAMPLES 1", "#define OCEAN_TERRAIN_SHADOW_FROM_SAMPLES 0");
     const std::filesystem::path allLit = test::shadersWith(
         "planet_test_sea_samples_lit", "render/terrain_shadow.frag",

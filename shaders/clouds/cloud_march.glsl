@@ -24,7 +24,7 @@
 // (AirRay, SkyRadianceOfRay, SkyRadianceToPointOfRay) bound to the atmosphere's CPU model.
 
 // How finely a caller marches: the sky pass gives the preset's (MarchQualityOf), the sea's
-// reflection less (ocean.frag), the probes the preset's with jitter 1/2.
+// reflection less (ocean/sea_light.frag), the probes the preset's with jitter 1/2.
 struct MarchQuality {
     int slicesPerCrossing;  // atmosphere slices per crossing of the layer (Eq. 17-18)
     int stepBudget;         // small cloud steps at most, over the whole ray

@@ -1,4 +1,4 @@
-// The sky and the clouds along the sea's reflected rays (ocean.frag), and the clouds' share of
+// The sky and the clouds along the sea's reflected rays (ocean/sea_light.frag), and the clouds' share of
 // it formed once per point of the sea's projected grid where the sea is a flat mirror to every
 // pixel (ocean.vert; issue 15: marched in every pixel, the reflection was most of the ocean
 // pass from orbit).

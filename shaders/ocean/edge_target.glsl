@@ -6,7 +6,7 @@
 // mesh only has to follow the sphere, and the edge aims at up to OCEAN_FAR_EDGE_FACTOR times
 // ocean.targetEdgePixels (continuously: the factor grows with the distance from where the waves
 // fall under a quarter of a pixel). The normals, and so the light, come from the fragments' own
-// waves (ocean/ocean.frag); a sphere's chord of 32 pixels at the limb from 400 km sags 0.03 pixel.
+// waves (ocean/sea_light.frag); a sphere's chord of 32 pixels at the limb from 400 km sags 0.03 pixel.
 // A software renderer shades a 4x4 block of pixels for each triangle that touches it, so 8-pixel
 // triangles cost it about three blocks' pixels for one triangle's (orbit, 1280x720: the ocean's
 // fragments 158 -> 109 ms with 24-pixel triangles). ocean.tesc aims each edge at the target of

@@ -32,7 +32,7 @@ bool overLand(dvec3 directions[4]) {
 
 // The edge's level for the target at its nearer end (ocean/edge_target.glsl). Depends on the
 // edge's two points only, as edgeLevel: neighbouring patches agree.
-// No sag bound in metres: far away ocean.frag shades the sphere itself, not the chord.
+// No sag bound in metres: far away ocean.frag takes the sphere itself, not the chord.
 const float OCEAN_MAX_SAG_M = 1.0e30;
 float oceanEdgeLevel(vec3 a, vec3 b) {
     return edgeLevel(a, b, oceanEdgeTargetPixels(max(min(length(a), length(b)), 1e-3)), OCEAN_MAX_SAG_M);

@@ -17,14 +17,14 @@ in ivec2 tcPoint[];
 out vec3 tePosition;   // camera-relative, m
 out vec3 teDirection;  // unit direction of the undisplaced point
 out vec3 teOffset;     // teDirection - camera direction (gerstner.glsl's dv)
-out vec2 teGridPoint;  // the place on the grid in point indices (i, j), for the grid's reflection (ocean.frag)
+out vec2 teGridPoint;  // the place on the grid in point indices (i, j), for the grid's reflection (ocean/sea_light.frag)
 
 #include "terrain/terrain_block.glsl"
 
 void main() {
     vec2 uv = gl_TessCoord.xy;
     // With a stride the vertex is where the grid's warp puts teGridPoint, so the grid's reflection
-    // read there (ocean.frag) is the reflection of this very place.
+    // read there (ocean/sea_light.frag) is the reflection of this very place.
     teGridPoint = patchGridPoint(tcPoint[0], tcPoint[2], uv);
     vec2 g = patchGridCoordinate(tcGrid[0], tcGrid[1], tcGrid[2], tcGrid[3], tcPoint[0], tcPoint[2], uv);
     dvec3 direction = gridDirection(g);

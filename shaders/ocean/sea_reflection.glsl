@@ -28,7 +28,7 @@
 #define PIXEL_LIST_BINDING BUFFER_SEA_REFLECTION_LIST
 #include "render/pixel_list.glsl"
 
-layout(binding = UNIT_SEA_REFLECTION) uniform sampler2D seaReflection;      // ray, weight (ocean.frag)
+layout(binding = UNIT_SEA_REFLECTION) uniform sampler2D seaReflection;      // ray, weight (ocean/sea_light.frag)
 layout(binding = UNIT_SURFACE_DISTANCE) uniform sampler2D surfaceDistance;  // m along the view ray
 
 // A sample's change is taken for a pixel in proportion to how near its reflected ray passes to

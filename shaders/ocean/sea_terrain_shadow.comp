@@ -1,6 +1,6 @@
 // The terrain's shadow on the sea at the pixels the ocean listed (ocean/sea_terrain_shadow.glsl):
-// the march from the sea's point towards the sun (as ocean.frag marched it), and the share of the
-// radiance the sun's light carries set for the part of its disc the terrain leaves. One
+// the march from the sea's point towards the sun (as ocean/sea_light.frag would march it), and
+// the share of the radiance the sun's light carries set for the part of its disc the terrain leaves. One
 // invocation per listed pixel, dispatched indirectly with as many groups as the list needs:
 // nothing where none is listed.
 #include "common/frame_uniforms.glsl"
@@ -23,9 +23,9 @@ void main() {
     uvec4 entry = seaTerrainShadowList.entries[i];
     ivec2 pixel = ivec2(entry.x & 0xffffu, entry.x >> 16);
     float seaDistance = uintBitsToFloat(entry.y);
-    if (texelFetch(surfaceDistance, pixel, 0).r != seaDistance) return;  // a nearer fragment drew over it
+    if (texelFetch(surfaceDistance, pixel, 0).r != seaDistance) return;  // (a safeguard: the sea's light lists each pixel once)
     vec3 sunShare = unpackSunShare(entry.zw);
-    vec3 point = cameraFromPlanetCentreKm() + pixelRay(pixel) * (seaDistance / M_PER_KM);  // as ocean.frag's
+    vec3 point = cameraFromPlanetCentreKm() + pixelRay(pixel) * (seaDistance / M_PER_KM);  // as ocean/sea_light.frag's
     float clearance = TerrainShadowClearanceAbove(point, ocean.seaLevel, frame.sunDirection);
     float visibility = terrainShadowDiscShare(clearance, atmosphereUniforms.sunAngularRadius);
     vec4 radiance = imageLoad(surfaceRadiance, pixel);

@@ -4,7 +4,7 @@
 
 layout(local_size_x = 64, local_size_y = 1, local_size_z = 1) in;  // PIXEL_LIST_GROUP_SIZE
 layout(binding = IMAGE_SURFACE_RADIANCE, rgba16f) uniform image2D surfaceRadiance;
-layout(binding = IMAGE_SEA_REFLECTION, rgba32f) uniform image2D seaReflection;  // ray, weight (ocean.frag)
+layout(binding = IMAGE_SEA_REFLECTION, rgba32f) uniform image2D seaReflection;  // ray, weight (ocean/sea_light.frag)
 layout(binding = UNIT_SEABED_DEPTH) uniform sampler2D seabedDepth;        // the G-buffer depth before the sea
 layout(binding = UNIT_SEABED_RADIANCE) uniform sampler2D seabedRadiance;  // the surface radiance before the sea
 

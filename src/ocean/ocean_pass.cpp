@@ -24,9 +24,10 @@ constexpr int kGridReflectionGroup = 64;  // ocean/grid_reflection.comp's local_
 }  // namespace
 
 OceanPass::OceanPass(const gl::ShaderSources& sources, const atmosphere::TableSizes& tables)
-    : program_(sources, tables,
-               gl::ProgramDesc{"ocean", {"ocean/ocean.vert", "ocean/ocean.tesc", "ocean/ocean.tese", "ocean/ocean.frag"}},
-               {"OCEAN_FLAT_MIRROR", "UNDER_WATER", "OCEAN_SMOOTH_MIRROR"}),
+    : surface_(sources,
+               gl::ProgramDesc{"ocean", {"ocean/ocean.vert", "ocean/ocean.tesc", "ocean/ocean.tese", "ocean/ocean.frag"}}),
+      light_(sources, tables, gl::ProgramDesc{"sea light", {"common/fullscreen.vert", "ocean/sea_light.frag"}},
+             {"OCEAN_FLAT_MIRROR", "UNDER_WATER", "OCEAN_SMOOTH_MIRROR"}),
       gridReflectionProgram_(sources, tables, gl::ProgramDesc{"ocean grid reflection", {"ocean/grid_reflection.comp"}},
                              {"OCEAN_FLAT_MIRROR", "OCEAN_SMOOTH_MIRROR"}) {
     waves_.label("ocean waves");
@@ -100,7 +101,7 @@ void OceanPass::prepare(const Scene& scene, const Camera& camera, double radians
 void OceanPass::bindBlock() const { glBindBufferBase(GL_UNIFORM_BUFFER, binding::BLOCK_OCEAN, block_.id()); }
 
 std::vector<gl::HotProgram*> OceanPass::builtPrograms() {
-    std::vector<gl::HotProgram*> programs;
+    std::vector<gl::HotProgram*> programs{&surface_};
     for (AtmosphereProgram* a : atmospherePrograms())
         for (gl::HotProgram* p : a->built()) programs.push_back(p);
     return programs;
@@ -128,16 +129,14 @@ void OceanPass::formGridReflection(const AtmosphereVariant& variant) {
     glBindTextureUnit(binding::UNIT_OCEAN_GRID_REFLECTION, gridReflection_.id());
 }
 
-void OceanPass::draw(const AtmosphereVariant& variant, bool underWater) {
+void OceanPass::drawSurface() {
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding::BUFFER_OCEAN_WAVES, waves_.id());
     bindBlock();
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_GREATER);  // reversed-Z
     glDepthMask(GL_TRUE);
     glDisable(GL_CULL_FACE);  // the surface is seen from below too
-    const int mode = underWater ? kUnderWaterMode : smoothMirror_ ? kSmoothMirrorMode : flatMirror_ ? kFlatMirrorMode : 0;
-    if (mode == kFlatMirrorMode || mode == kSmoothMirrorMode) formGridReflection(variant);
-    glUseProgram(program_.get(variant, mode).id());
+    glUseProgram(surface_.id());
     if (countPrimitives_) glBeginQuery(GL_PRIMITIVES_GENERATED, primitives_.id());
     mesh_.draw();
     if (countPrimitives_) {
@@ -147,6 +146,14 @@ void OceanPass::draw(const AtmosphereVariant& variant, bool underWater) {
         lastPrimitives_ = static_cast<long long>(count);
     }
     glDisable(GL_DEPTH_TEST);
+}
+
+void OceanPass::useLightProgram(const AtmosphereVariant& variant, bool underWater) {
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding::BUFFER_OCEAN_WAVES, waves_.id());
+    bindBlock();
+    const int mode = underWater ? kUnderWaterMode : smoothMirror_ ? kSmoothMirrorMode : flatMirror_ ? kFlatMirrorMode : 0;
+    if (mode == kFlatMirrorMode || mode == kSmoothMirrorMode) formGridReflection(variant);
+    glUseProgram(light_.get(variant, mode).id());
 }
 
 }  // namespace planet

@@ -1,22 +1,26 @@
 // The ocean pass: spherical Gerstner waves (Michelic §4) on the ocean's own persistent
-// projected grid (src/grid), tessellated, displaced and shaded as water, drawn into the
-// surface radiance and distance targets over the sea floor's (see shaders/ocean/ocean.frag).
+// projected grid (src/grid), tessellated and displaced, then shaded as water over the sea
+// floor's surface radiance (see shaders/ocean/sea_light.frag), in two draws:
 //
-//   ocean.vert   grid coordinates of the N x N vertices; seen from high up (flat_mirror.h), the
-//                clouds' change to the sea's reflection at each (ocean/cloud_reflection.glsl)
+//   ocean.vert   grid coordinates of the N x N vertices
 //   ocean.tesc   frustum culling with the highest crest and lowest trough, patches over land
 //                dropped (land_cull.h), levels from edge size
 //   ocean.tese   grid -> sea sphere direction (double) -> Eq. 8 displacement (in shallow water
 //                each wave no higher than 0.78 x depth) -> camera-relative position
 //   ocean.frag   fragments under land or behind the terrain discarded first (cheap tests that
-//                give the same pixels), then Eq. 10 normal per pixel (from below, with the camera
-//                under the sea: a program of its own, UNDER_WATER), Fresnel sky reflection
-//                (the reflected ray marched through the clouds, or from high up the clear sky plus
-//                the grid's change for the clouds), sun glitter, water body
+//                give the same pixels), the shore's coverage, the water's depth and path, the
+//                far field's sphere: the sea surface's G-buffer (ocean/sea_surface.glsl) and the
+//                depth, the stencil set where the sea is the nearest surface
+//   sea_light.frag  over the whole frame where the stencil is set, once per pixel (a software
+//                renderer shades a 4x4 block for each triangle touching it: the mesh's fragments
+//                were two to three times the sea's pixels): Eq. 10 normal (from below, with the
+//                camera under the sea: a program of its own, UNDER_WATER), Fresnel sky
+//                reflection (from high up the clear sky plus the grid's change for the clouds,
+//                ocean/grid_reflection.comp, or all of it from the grid), sun glitter, water body
 //
 // prepare() (before the frame's passes) uploads the waves (a shader storage buffer at
 // BUFFER_OCEAN_WAVES, one record per wave, refreshed every frame with the camera's phases:
-// ocean/ocean_gpu.h), the grid's projection and the OceanBlock; draw() only draws. The water
+// ocean/ocean_gpu.h), the grid's projection and the OceanBlock; the draws only draw. The water
 // between a submerged camera and what it sees is the sky pass's (render/sky.frag).
 #pragma once
 
@@ -44,21 +48,25 @@ public:
     // `aspect`, the view's, for the grid's stride (grid/grid_stride.h).
     void prepare(const Scene& scene, const Camera& camera, double radiansPerPixel, double aspect,
                  const std::shared_ptr<const noise::CubeMap>& continents);
-    // The sea surface into the bound target (surface radiance and distance + the G-buffer's
-    // depth, tested and written), reading the seabed copies, the atmosphere and the terrain's
-    // height field (the sea floor), with the program of the frame's variant (the table in use, the
-    // clouds' far field). `underWater`: the camera under the sea (the frame's PrepareReport), the
-    // surface seen from below.
-    void draw(const AtmosphereVariant& variant, bool underWater);
+    // The sea's mesh into the bound targets (the surface distance and the sea surface's G-buffer:
+    // RenderTargets::seaSurfaceFramebuffer, the G-buffer's depth tested and written), reading the
+    // seabed depth's copy and the terrain's height field (the sea floor); the stencil's ops are the
+    // caller's (it marks the pixels where a fragment is written).
+    void drawSurface();
+    // Binds the program for the water's light (ocean/sea_light.frag) of the frame's variant (the
+    // table in use, the clouds' far field) and the sea's buffers, first forming the grid's
+    // reflection where the sea is a flat or smooth mirror; the caller draws its full-screen
+    // triangle over the pixels drawSurface() marked. `underWater`: the camera under the sea (the
+    // frame's PrepareReport), the surface seen from below.
+    void useLightProgram(const AtmosphereVariant& variant, bool underWater);
 
     // Binds the sea's parameters (the last prepare()'s OceanBlock) for a program other than this
     // pass's that reads them: the terrain shadow's samples of the sea's surface.
     void bindBlock() const;
 
-    AtmosphereProgram& program() { return program_; }
-    // Its programs that read the atmosphere's tables (the sea's, and the grid's reflection), and
-    // those of their variants built so far (hot reload).
-    std::vector<AtmosphereProgram*> atmospherePrograms() { return {&program_, &gridReflectionProgram_}; }
+    // Its programs that read the atmosphere's tables (the sea's light, and the grid's reflection),
+    // and those of their variants built so far with the mesh's (hot reload).
+    std::vector<AtmosphereProgram*> atmospherePrograms() { return {&light_, &gridReflectionProgram_}; }
     std::vector<gl::HotProgram*> builtPrograms();
 
     // The program's mode OCEAN_FLAT_MIRROR (the clouds' share of the reflection from the grid's
@@ -98,7 +106,8 @@ private:
     // ocean/grid_reflection.comp over the grid's points, for the program in the flat or smooth mode.
     void formGridReflection(const AtmosphereVariant& variant);
 
-    AtmosphereProgram program_;  // modes OCEAN_FLAT_MIRROR, UNDER_WATER (the surface seen from below), OCEAN_SMOOTH_MIRROR
+    gl::HotProgram surface_;    // the mesh (ocean/ocean.vert, .tesc, .tese, .frag)
+    AtmosphereProgram light_;  // modes OCEAN_FLAT_MIRROR, UNDER_WATER (the surface seen from below), OCEAN_SMOOTH_MIRROR
     FlatMirror flatMirrorMode_ = FlatMirror::Auto;
     bool flatMirror_ = false;
     bool smoothMirror_ = false;

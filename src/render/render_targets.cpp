@@ -53,7 +53,8 @@ gl::Framebuffer makeFramebuffer(std::initializer_list<const gl::Texture*> colour
         buffers[count] = GL_COLOR_ATTACHMENT0 + count;
         ++count;
     }
-    if (depth) glNamedFramebufferTexture(fb.id(), GL_DEPTH_ATTACHMENT, depth->id(), 0);
+    // The G-buffer's depth has a stencil beside it (DEPTH32F_STENCIL8): attached whole.
+    if (depth) glNamedFramebufferTexture(fb.id(), GL_DEPTH_STENCIL_ATTACHMENT, depth->id(), 0);
     if (stencil) glNamedFramebufferTexture(fb.id(), GL_STENCIL_ATTACHMENT, stencil->id(), 0);
     glNamedFramebufferDrawBuffers(fb.id(), count, buffers);
     fb.label(name);
@@ -78,7 +79,8 @@ bool RenderTargets::resize(glm::ivec2 size) {
     gbuffer_.normal = makeTexture(GL_RGBA16F, size, "gbuffer.normal");
     gbuffer_.albedo = makeTexture(GL_RGBA8, size, "gbuffer.albedo");
     gbuffer_.material = makeTexture(GL_RGBA8, size, "gbuffer.material");
-    gbuffer_.depth = makeTexture(GL_DEPTH_COMPONENT32F, size, "gbuffer.depth");
+    // With a stencil: 1 where the ocean's mesh left the sea as the nearest surface (its light runs there).
+    gbuffer_.depth = makeTexture(GL_DEPTH32F_STENCIL8, size, "gbuffer.depth + sea stencil");
     gbuffer_.framebuffer = makeFramebuffer({&gbuffer_.normal, &gbuffer_.albedo, &gbuffer_.material},
                                            &gbuffer_.depth, "gbuffer");
     surfaceRadiance_ = makeTexture(GL_RGBA16F, size, "surface radiance");
@@ -90,8 +92,12 @@ bool RenderTargets::resize(glm::ivec2 size) {
     // distance, where half floats would move its vanishing point by up to a pixel.
     seaReflection_ = makeTexture(GL_RGBA32F, size, "sea reflection");
     seaSkyReflection_ = makeTexture(GL_RGBA32F, size, "sea sky reflection");
-    oceanFramebuffer_ = makeFramebuffer({&surfaceRadiance_, &surfaceDistance_, &seaReflection_, &seaSkyReflection_},
-                                        &gbuffer_.depth, "surface radiance + sea reflection + depth");
+    for (int i = 0; i < 3; ++i)
+        seaSurface_[i] = makeTexture(GL_RGBA32F, size, ("sea surface " + std::to_string(i)).c_str());
+    seaSurfaceFramebuffer_ = makeFramebuffer({&surfaceDistance_, &seaSurface_[0], &seaSurface_[1], &seaSurface_[2]},
+                                             &gbuffer_.depth, "surface distance + sea surface + depth, stencil");
+    oceanFramebuffer_ = makeFramebuffer({&surfaceRadiance_, &seaReflection_, &seaSkyReflection_}, &gbuffer_.depth,
+                                        "surface radiance + sea reflection + depth, stencil");
     surfaceRadianceFramebuffer_ = makeFramebuffer({&surfaceRadiance_}, nullptr, "surface radiance");
     seaReflectionSamples_.size = (size + SEA_REFLECTION_SPACING - 1) / SEA_REFLECTION_SPACING;
     seaReflectionSamples_.change = makeTexture(GL_RGBA16F, seaReflectionSamples_.size, "sea reflection samples");
@@ -122,7 +128,7 @@ bool RenderTargets::resize(glm::ivec2 size) {
     terrainReflectionList_ = makePixelList("terrain reflection list");
     ldr_ = makeTexture(GL_RGBA8, size, "ldr");
     ldrFramebuffer_ = makeFramebuffer({&ldr_}, nullptr, "ldr");
-    seabedDepth_ = makeTexture(GL_DEPTH_COMPONENT32F, size, "seabed depth");
+    seabedDepth_ = makeTexture(GL_DEPTH32F_STENCIL8, size, "seabed depth");  // the G-buffer's format (a copy)
     // Read between texels by the sea's screen-space reflections (its depth is affine on screen).
     glTextureParameteri(seabedDepth_.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
     glTextureParameteri(seabedDepth_.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
@@ -148,8 +154,13 @@ void RenderTargets::clearSurface() const {
 
 void RenderTargets::clearSeaReflection() const {
     const float zero[4] = {0, 0, 0, 0};
+    glClearNamedFramebufferfv(oceanFramebuffer_.id(), GL_COLOR, 1, zero);
     glClearNamedFramebufferfv(oceanFramebuffer_.id(), GL_COLOR, 2, zero);
-    glClearNamedFramebufferfv(oceanFramebuffer_.id(), GL_COLOR, 3, zero);
+}
+
+void RenderTargets::clearSeaStencil() const {
+    const GLint clear = 0;
+    glClearNamedFramebufferiv(seaSurfaceFramebuffer_.id(), GL_STENCIL, 0, &clear);
 }
 
 void RenderTargets::copySeabed() const {

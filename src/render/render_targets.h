@@ -1,7 +1,8 @@
 // The frame's render targets.
 //
 //   gbuffer   normal (RGBA16F, world axes), albedo (RGBA8, linear), material
-//             (RGBA8: id/255, roughness), depth (DEPTH32F, reversed-Z)
+//             (RGBA8: id/255, roughness), depth (DEPTH32F, reversed-Z) with a stencil beside it
+//             (1 where the ocean's mesh left the sea as the nearest surface: its light runs there)
 //   surface   surfaceRadiance (RGBA16F): the radiance leaving the surface point towards the
 //             camera, no air in it; surfaceDistance (R32F): metres along the view ray to that
 //             point, 0 where there is none. Written by the surface light and the ocean
@@ -12,9 +13,12 @@
 //   hdr       RGBA16F linear radiance arriving at the camera (what `render --out x.exr` writes),
 //             with the sky passes' T and S beside it (skyMedium: RGBA32UI, T, S and the samples
 //             in the temporal history as half floats, render/sky_medium.glsl)
-//   sea reflection  RGBA16F: the sea's reflected ray at each pixel and the weight the clouds'
-//             change to its radiance takes there (ocean/ocean.frag writes it beside the surface
-//             targets: oceanFramebuffer); its samples, RGBA16F at 1 / SEA_REFLECTION_SPACING of the
+//   sea surface  three RGBA32F: where the sea is the nearest surface, what the ocean's mesh
+//             leaves for its light (ocean/sea_surface.glsl; ocean/ocean.frag writes them beside
+//             the surface distance: seaSurfaceFramebuffer)
+//   sea reflection  RGBA32F: the sea's reflected ray at each pixel and the weight the clouds'
+//             change to its radiance takes there (ocean/sea_light.frag writes it beside the
+//             surface radiance: oceanFramebuffer); its samples, RGBA16F at 1 / SEA_REFLECTION_SPACING of the
 //             size: that change marched at one pixel of each block (ocean/sea_reflection.frag),
 //             added back into the surface radiance by the same file's compose program
 //             (surfaceRadianceFramebuffer, additive)
@@ -38,6 +42,7 @@
 // changes (which drops the history); a 0x0 size (minimised window) holds no textures.
 #pragma once
 
+#include <array>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -133,8 +138,13 @@ public:
     GLuint ldrFramebuffer() const { return ldrFramebuffer_.id(); }
     // surface radiance + distance with the G-buffer's depth attached.
     GLuint surfaceFramebuffer() const { return surfaceFramebuffer_.id(); }
-    // ... and the sea reflection and sea sky reflection beside them (the ocean's;
-    // clearSeaReflection() empties both).
+    // The ocean's mesh's targets: the surface distance and the sea surface's G-buffer, with the
+    // G-buffer's depth and its stencil (clearSeaStencil() sets it to 0).
+    GLuint seaSurfaceFramebuffer() const { return seaSurfaceFramebuffer_.id(); }
+    void clearSeaStencil() const;
+    const std::array<gl::Texture, 3>& seaSurface() const { return seaSurface_; }
+    // The sea's light's: the surface radiance, the sea reflection and sea sky reflection beside
+    // it (clearSeaReflection() empties both), the G-buffer's depth and stencil (its test).
     GLuint oceanFramebuffer() const { return oceanFramebuffer_.id(); }
     void clearSeaReflection() const;
     // The surface radiance alone (passes that add to it).
@@ -171,6 +181,9 @@ private:
     gl::Texture seaReflection_{GL_TEXTURE_2D};
     gl::Texture seaSkyReflection_{GL_TEXTURE_2D};
     SeaReflectionSamples seaReflectionSamples_;
+    std::array<gl::Texture, 3> seaSurface_{gl::Texture(GL_TEXTURE_2D), gl::Texture(GL_TEXTURE_2D),
+                                           gl::Texture(GL_TEXTURE_2D)};
+    gl::Framebuffer seaSurfaceFramebuffer_;
     gl::Framebuffer oceanFramebuffer_;
     gl::Framebuffer surfaceRadianceFramebuffer_;
     gl::Buffer skyRefineList_;

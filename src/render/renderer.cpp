@@ -249,16 +249,39 @@ std::vector<Renderer::Pass> Renderer::makePasses() {
                       [this](const Scene& s) {
                           targets_.copySeabed();
                           targets_.clearSeaReflection();
-                          glBindFramebuffer(GL_FRAMEBUFFER, targets_.oceanFramebuffer());
+                          targets_.clearSeaStencil();
+                          // The sea's mesh first: which pixels show the sea and where its water is
+                          // (the sea surface's G-buffer), marked in the stencil; then the water's
+                          // light once per marked pixel, kept off the others by the early stencil
+                          // test (a software renderer shades a 4x4 block for each triangle that
+                          // touches it: the mesh's fragments are two to three times the sea's pixels).
+                          glBindFramebuffer(GL_FRAMEBUFFER, targets_.seaSurfaceFramebuffer());
                           glBindTextureUnit(binding::UNIT_SEABED_DEPTH, targets_.seabedDepth().id());
+                          glEnable(GL_STENCIL_TEST);
+                          glStencilFunc(GL_ALWAYS, 1, 0xFF);
+                          glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
+                          glBeginQuery(GL_ANY_SAMPLES_PASSED, oceanDrew_.id());
+                          ocean_.drawSurface();
+                          glEndQuery(GL_ANY_SAMPLES_PASSED);
+                          glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
+                          glStencilMask(0);  // a test alone, which may run before the shader
+                          glStencilFunc(GL_EQUAL, 1, 0xFF);
+                          glBindFramebuffer(GL_FRAMEBUFFER, targets_.oceanFramebuffer());
                           glBindTextureUnit(binding::UNIT_SEABED_RADIANCE, targets_.seabedRadiance().id());
                           glBindTextureUnit(binding::UNIT_TERRAIN_SHADOW, targets_.terrainShadowSamples().visibility.id());
+                          for (int i = 0; i < 3; ++i)
+                              glBindTextureUnit(binding::UNIT_SEA_SURFACE_0 + i, targets_.seaSurface()[i].id());
                           targets_.clearSeaTerrainShadowList();
                           glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding::BUFFER_SEA_TERRAIN_SHADOW_LIST,
                                            targets_.seaTerrainShadowList().id());
-                          glBeginQuery(GL_ANY_SAMPLES_PASSED, oceanDrew_.id());
-                          ocean_.draw(variantFor(s), lastPrepare_.underWater);
-                          glEndQuery(GL_ANY_SAMPLES_PASSED);
+                          ocean_.useLightProgram(variantFor(s), lastPrepare_.underWater);
+                          glBindVertexArray(emptyVertexArray_.id());
+                          glBeginConditionalRender(oceanDrew_.id(), GL_QUERY_WAIT);
+                          drawScissored(lastPrepare_.groundBound, targets_.size());  // the sea lies within it
+                          glEndConditionalRender();
+                          glStencilMask(0xFF);
+                          glStencilFunc(GL_ALWAYS, 0, 0xFF);
+                          glDisable(GL_STENCIL_TEST);
                           // The terrain's shadow at the pixels the sea listed (a shadow's edge near
                           // land), marched each on its own and taken from the radiance in place.
                           glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT |

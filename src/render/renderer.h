@@ -113,7 +113,7 @@ struct PrepareReport {
     bool stillFrame = false;             // with a history, nothing moved since it (but the jitter, maybe): the reconstruction's
                                          // still-frame program (render/sky_temporal.frag, STILL_FRAME)
     bool underWater = false;             // the camera under the sea: the sky pass's and the ocean's UNDER_WATER programs
-                                         // (render/sky.frag, ocean/ocean.frag)
+                                         // (render/sky.frag, ocean/sea_light.frag)
     bool cloudFarField = false;          // every footprint the clouds are seen with is the far field's: the programs
                                          // built with CLOUD_FAR_FIELD_ONLY (clouds/cloud_block.h, seenInFarFieldOnly)
     bool cloudsOff = false;              // no cloud layer this frame (the cloud block's enabled 0): the programs built
