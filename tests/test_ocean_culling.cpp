@@ -220,8 +220,8 @@ TEST_F(OceanCulling, TheDarkFloorsThresholdHoldsOnTheHeightField) {
 // sea as the nearest surface, not on the mesh's fragments (a software renderer shades a 4x4 block
 // for every triangle that touches it: orbit 1280x720 had 983 344 fragment invocations for its
 // sea's pixels) and not on the rest of the ground's rectangle: a copy of the program that counts
-// its invocations (an atomic add into a buffer of the test's) counts exactly the pixels the mesh
-// marked in the sea surface's G-buffer (a coverage above 0), with the early stencil test. Able
+// its invocations (an atomic add into a buffer of the test's) counts exactly the pixels it wrote
+// (its reflected ray; the rest stays cleared to 0), with the early stencil test. Able
 // to fail: without `early_fragment_tests` llvmpipe tests the stencil after a shader that writes
 // memory has run, and the copy counts every pixel of the rectangle (checked below).
 TEST_F(OceanCulling, TheSeasLightRunsOncePerSeaPixel) {
@@ -258,9 +258,11 @@ TEST_F(OceanCulling, TheSeasLightRunsOncePerSeaPixel) {
             r.render(s.scene, s.camera, kSize);
             GLuint n = 0;
             glGetNamedBufferSubData(count.id(), 0, sizeof n, &n);
-            const ImageRGBAF surface = readTextureRGBAF(r.targets().seaSurface()[2], kSize.x, kSize.y);
+            // The light writes the reflected ray (a unit vector) at every sea pixel, 0 elsewhere.
+            const ImageRGBAF reflection = readTextureRGBAF(r.targets().seaReflection(), kSize.x, kSize.y);
             marked = 0;
-            for (std::size_t i = 0; i < surface.pixels.size(); i += 4) marked += surface.pixels[i] != 0.0f;
+            for (std::size_t i = 0; i < reflection.pixels.size(); i += 4)
+                marked += reflection.pixels[i] != 0.0f || reflection.pixels[i + 1] != 0.0f || reflection.pixels[i + 2] != 0.0f;
             return static_cast<long long>(n);
         };
         long long marked = 0, markedLate = 0;

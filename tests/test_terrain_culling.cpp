@@ -6,7 +6,9 @@
 // is shaded. Neither changes a pixel. The stage counts are TerrainPass::Statistics
 // (GL pipeline statistics queries).
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <regex>
 #include <sstream>
 
@@ -207,5 +209,72 @@ TEST_F(TerrainCulling, TheDetailsRingsDrawTheSamePixelsAsTheDetailEverywhere) {
         EXPECT_GT(count, 0) << view;
         EXPECT_LT(count, 9801 / 10) << view;
         EXPECT_EQ(differing, 0u) << view;
+    }
+}
+
+// The ground's material (terrain/ground_material.frag) runs once per pixel where the terrain's
+// mesh is the nearest surface, not on the mesh's fragments (a software renderer shades a 4x4
+// block for every triangle that touches it: `mountains` 1280x720 had 8 258 112 fragment
+// invocations for its 921 600 pixels) and not on the rest of the ground's rectangle: a copy of
+// the program that counts its invocations (an atomic add into a buffer of the test's), both of
+// its builds (with and without the detail, each behind its own stencil value), counts exactly
+// the pixels it wrote (a unit normal in the G-buffer; the rest stays cleared to 0). Able to fail:
+// without `early_fragment_tests` (the shader then writes memory, and llvmpipe tests the stencil
+// after it ran) each build runs on every pixel of the rectangle (checked below).
+TEST_F(TerrainCulling, TheGroundsMaterialRunsOncePerGroundPixel) {
+    const std::string early = "layout(early_fragment_tests) in;";
+    const std::string counting = "layout(std430, binding = 15) buffer TestCount { uint testInvocations; };\n"
+                                 "void main() {\n    atomicAdd(testInvocations, 1u);\n    groundMaterial();\n}\n";
+    auto countingCopy = [&](const std::string& name, bool earlyTests) {
+        const std::filesystem::path root = test::shadersWith(name, "terrain/ground_material.frag", "void main() {",
+                                                             "void groundMaterial() {");
+        const std::filesystem::path file = root / "terrain/ground_material.frag";
+        std::ifstream in(file);
+        std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+        in.close();
+        if (!earlyTests) {
+            const std::size_t at = text.find(early);
+            EXPECT_NE(at, std::string::npos);
+            if (at != std::string::npos) text.erase(at, early.size());
+        }
+        std::ofstream(file) << text << counting;
+        return root;
+    };
+    const glm::ivec2 size{160, 90};
+    gl::Buffer count;
+    glNamedBufferStorage(count.id(), sizeof(GLuint), nullptr, GL_DYNAMIC_STORAGE_BIT);
+    const std::filesystem::path withEarly = countingCopy("planet_test_ground_material_counted", true);
+    const std::filesystem::path withoutEarly = countingCopy("planet_test_ground_material_counted_late", false);
+    for (const std::string view : {"ground", "orbit"}) {
+        SCOPED_TRACE(view);
+        Session s = loadSession(test::repoPaths(), "earth", view);
+        s.scene.render.temporal = false;
+        auto invocations = [&](const std::filesystem::path& root, long long& ground, bool& detailed) {
+            Renderer r(root, atmosphere::TableSizes::reduced(), s.continents);
+            const GLuint zero = 0;
+            glNamedBufferSubData(count.id(), 0, sizeof zero, &zero);
+            glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 15, count.id());
+            r.render(s.scene, s.camera, size);
+            GLuint n = 0;
+            glGetNamedBufferSubData(count.id(), 0, sizeof n, &n);
+            const ImageRGBAF normal = readTextureRGBAF(r.targets().gbuffer().normal, size.x, size.y);
+            ground = 0;
+            for (std::size_t i = 0; i < normal.pixels.size(); i += 4)
+                ground += normal.pixels[i] != 0.0f || normal.pixels[i + 1] != 0.0f || normal.pixels[i + 2] != 0.0f;
+            detailed = r.terrain().detailDrawn();
+            return static_cast<long long>(n);
+        };
+        long long ground = 0, groundLate = 0;
+        bool detailed = false, detailedLate = false;
+        const long long once = invocations(withEarly, ground, detailed);
+        const long long late = invocations(withoutEarly, groundLate, detailedLate);
+        std::printf("%-6s the ground's material ran %lld times for %lld ground pixels (%lld with the stencil tested "
+                    "late); the detail's build %s\n",
+                    view.c_str(), once, ground, late, detailed ? "drawn" : "not drawn");
+        EXPECT_EQ(detailed, view == "ground");  // both builds at the ground
+        EXPECT_GT(ground, size.x * size.y / 10);
+        EXPECT_EQ(once, ground);
+        EXPECT_EQ(groundLate, ground);
+        EXPECT_GT(late, ground + size.x * size.y / 20);  // the check above can fail
     }
 }

@@ -1,7 +1,7 @@
 // The height field near the camera (terrain/height.glsl TerrainNear, terrainHeightNearGrad,
 // terrainRayHitNear; compiled as C++ by terrain/height.cpp): the same field as
 // terrainHeight, without float's rounding of planet-sized directions, and the ray's meeting
-// with it, which places the ground detail (terrain.frag). A wrong split of the noise point,
+// with it, which places the ground detail (terrain/ground_material.frag). A wrong split of the noise point,
 // a wrong direction change or a wrong Newton derivative breaks the agreement with the float
 // field, the smoothness, or the convergence below.
 #include <gtest/gtest.h>
@@ -226,7 +226,7 @@ TEST(TerrainNear, TheRaysHitDoesNotDependOnTheStart) {
     EXPECT_LT(offReference, 0.35);  // the float field's own error (the first test: up to 0.3 m)
 }
 
-// The ground detail takes one Newton step from the mesh's point (terrain.frag): from a start
+// The ground detail takes one Newton step from the mesh's point (terrain/ground_material.frag): from a start
 // 3 cm of height off the ground (above or below it), that step lands where the search run to
 // convergence lands, to 3 mm of height (the distance between the two along the ray times the
 // rate the ray closes on the ground; measured 1.9 mm): a tenth of the start's error, and

@@ -62,9 +62,9 @@
 layout(early_fragment_tests) in;
 
 in vec2 vNdc;
-layout(binding = UNIT_SEA_SURFACE_0) uniform sampler2D seaSurface0;  // the sea surface's G-buffer (ocean/sea_surface.glsl)
-layout(binding = UNIT_SEA_SURFACE_1) uniform sampler2D seaSurface1;
-layout(binding = UNIT_SEA_SURFACE_2) uniform sampler2D seaSurface2;
+layout(binding = UNIT_MESH_SURFACE_0) uniform sampler2D seaSurface0;  // the sea surface's G-buffer (ocean/sea_surface.glsl)
+layout(binding = UNIT_MESH_SURFACE_1) uniform sampler2D seaSurface1;
+layout(binding = UNIT_MESH_SURFACE_2) uniform sampler2D seaSurface2;
 
 layout(binding = UNIT_SEABED_RADIANCE) uniform sampler2D seabedRadiance;   // copy of the surface radiance
 layout(binding = UNIT_TERRAIN_SHADOW) uniform sampler2D terrainShadowSamples;  // g: the sea surface's (render/terrain_shadow.frag)

@@ -6,8 +6,9 @@
 // `sea` view 3.0 million for its 920 000 pixels), so only the cheap part (which pixels are sea,
 // where the water is) runs per fragment, and the light, most of the cost, per pixel.
 //
-// Three RGBA32F targets (full floats: the direction offset carries the waves' phases near the
-// camera, the distances and the water's depth are metres that half floats would round):
+// In the mesh surface's three RGBA32F targets (terrain/mesh_surface.glsl; full floats: the
+// direction offset carries the waves' phases near the camera, the distances and the water's
+// depth are metres that half floats would round):
 //   0  up (the vertical the water is shaded with), the water's depth below the mean surface (m)
 //   1  the direction offset v - v_c (ocean/gerstner.glsl's dv), the distance to the sea along the
 //      view ray (m)

@@ -13,17 +13,17 @@
 // What the filter removes is not lost to the lighting (LEAN / Toksvig in spirit): the
 // variance of the slopes under the footprint, the share the mip level averaged away (the
 // bake's table per level, uTerrainDetailLostVariance) plus the spread between the taps of
-// the anisotropic filter, leaves with the normal (terrain.frag writes its spread into the
+// the anisotropic filter, leaves with the normal (terrain/ground_material.frag writes its spread into the
 // G-buffer) and the surface light lights the ground with the expected clamped cosine over
 // it (terrain/rough_cosine.glsl). A normal filtered and then lit is not the mean of the lit
 // normals: at a 30 degree sun the rock's relief turns facets away from the sun, which a
 // far pixel's mean normal does not show.
 //
-// Positions: where the pixel's ray meets the height field (terrain.frag, terrainRayHitNear),
+// Positions: where the pixel's ray meets the height field (terrain/ground_material.frag, terrainRayHitNear),
 // camera-relative plus the camera modulo TERRAIN_NEAR_WRAP_M (terrain/height.glsl): exact to a
 // millimetre near the camera; all periods divide TERRAIN_NEAR_WRAP_M, so the wrap of the
 // camera's position is invisible.
-// On where the preset's terrain.detail is: the terrain program built with TERRAIN_DETAIL 1 (terrain/terrain.frag).
+// On where the preset's terrain.detail is: the ground material program built with TERRAIN_DETAIL 1 (terrain/ground_material.frag).
 const int TERRAIN_DETAIL_SCALES = 3;
 const float TERRAIN_DETAIL_PERIOD_M[TERRAIN_DETAIL_SCALES] = float[](0.5, 4.0, 32.0);
 

@@ -83,6 +83,10 @@ bool RenderTargets::resize(glm::ivec2 size) {
     gbuffer_.depth = makeTexture(GL_DEPTH32F_STENCIL8, size, "gbuffer.depth + sea stencil");
     gbuffer_.framebuffer = makeFramebuffer({&gbuffer_.normal, &gbuffer_.albedo, &gbuffer_.material},
                                            &gbuffer_.depth, "gbuffer");
+    for (int i = 0; i < 3; ++i)
+        meshSurface_[i] = makeTexture(GL_RGBA32F, size, ("mesh surface " + std::to_string(i)).c_str());
+    terrainMeshFramebuffer_ = makeFramebuffer({&meshSurface_[0], &meshSurface_[1], &meshSurface_[2]}, &gbuffer_.depth,
+                                              "terrain mesh surface + depth, stencil");
     surfaceRadiance_ = makeTexture(GL_RGBA16F, size, "surface radiance");
     surfaceDistance_ = makeTexture(GL_R32F, size, "surface distance");
     surfaceStencil_ = makeTexture(GL_STENCIL_INDEX8, size, "surface stencil");
@@ -92,9 +96,7 @@ bool RenderTargets::resize(glm::ivec2 size) {
     // distance, where half floats would move its vanishing point by up to a pixel.
     seaReflection_ = makeTexture(GL_RGBA32F, size, "sea reflection");
     seaSkyReflection_ = makeTexture(GL_RGBA32F, size, "sea sky reflection");
-    for (int i = 0; i < 3; ++i)
-        seaSurface_[i] = makeTexture(GL_RGBA32F, size, ("sea surface " + std::to_string(i)).c_str());
-    seaSurfaceFramebuffer_ = makeFramebuffer({&surfaceDistance_, &seaSurface_[0], &seaSurface_[1], &seaSurface_[2]},
+    seaSurfaceFramebuffer_ = makeFramebuffer({&surfaceDistance_, &meshSurface_[0], &meshSurface_[1], &meshSurface_[2]},
                                              &gbuffer_.depth, "surface distance + sea surface + depth, stencil");
     oceanFramebuffer_ = makeFramebuffer({&surfaceRadiance_, &seaReflection_, &seaSkyReflection_}, &gbuffer_.depth,
                                         "surface radiance + sea reflection + depth, stencil");

@@ -13,9 +13,11 @@
 //   hdr       RGBA16F linear radiance arriving at the camera (what `render --out x.exr` writes),
 //             with the sky passes' T and S beside it (skyMedium: RGBA32UI, T, S and the samples
 //             in the temporal history as half floats, render/sky_medium.glsl)
-//   sea surface  three RGBA32F: where the sea is the nearest surface, what the ocean's mesh
-//             leaves for its light (ocean/sea_surface.glsl; ocean/ocean.frag writes them beside
-//             the surface distance: seaSurfaceFramebuffer)
+//   mesh surface  three RGBA32F: what a mesh's fragments leave where their surface is the
+//             nearest, for a pass that shades those pixels once each (terrain/mesh_surface.glsl):
+//             the terrain's fragments for its material pass (terrainMeshFramebuffer), then the
+//             ocean's for its light (ocean/sea_surface.glsl; seaSurfaceFramebuffer, beside the
+//             surface distance)
 //   sea reflection  RGBA32F: the sea's reflected ray at each pixel and the weight the clouds'
 //             change to its radiance takes there (ocean/sea_light.frag writes it beside the
 //             surface radiance: oceanFramebuffer); its samples, RGBA16F at 1 / SEA_REFLECTION_SPACING of the
@@ -142,7 +144,11 @@ public:
     // G-buffer's depth and its stencil (clearSeaStencil() sets it to 0).
     GLuint seaSurfaceFramebuffer() const { return seaSurfaceFramebuffer_.id(); }
     void clearSeaStencil() const;
-    const std::array<gl::Texture, 3>& seaSurface() const { return seaSurface_; }
+    const std::array<gl::Texture, 3>& meshSurface() const { return meshSurface_; }
+    // The terrain's mesh's targets: the mesh surface, with the G-buffer's depth and its stencil
+    // (1 where the mesh drew with the plain material, 2 with the detail's; the G-buffer's
+    // framebuffer has the same attached, for the material pass's test).
+    GLuint terrainMeshFramebuffer() const { return terrainMeshFramebuffer_.id(); }
     // The sea's light's: the surface radiance, the sea reflection and sea sky reflection beside
     // it (clearSeaReflection() empties both), the G-buffer's depth and stencil (its test).
     GLuint oceanFramebuffer() const { return oceanFramebuffer_.id(); }
@@ -181,8 +187,9 @@ private:
     gl::Texture seaReflection_{GL_TEXTURE_2D};
     gl::Texture seaSkyReflection_{GL_TEXTURE_2D};
     SeaReflectionSamples seaReflectionSamples_;
-    std::array<gl::Texture, 3> seaSurface_{gl::Texture(GL_TEXTURE_2D), gl::Texture(GL_TEXTURE_2D),
-                                           gl::Texture(GL_TEXTURE_2D)};
+    std::array<gl::Texture, 3> meshSurface_{gl::Texture(GL_TEXTURE_2D), gl::Texture(GL_TEXTURE_2D),
+                                            gl::Texture(GL_TEXTURE_2D)};
+    gl::Framebuffer terrainMeshFramebuffer_;
     gl::Framebuffer seaSurfaceFramebuffer_;
     gl::Framebuffer oceanFramebuffer_;
     gl::Framebuffer surfaceRadianceFramebuffer_;

@@ -167,10 +167,32 @@ std::vector<Renderer::Pass> Renderer::makePasses() {
                           const GLuint fb = targets_.gbuffer().framebuffer.id();
                           const float zero[4] = {0, 0, 0, 0};
                           for (GLint i = 0; i < 3; ++i) glClearNamedFramebufferfv(fb, GL_COLOR, i, zero);
-                          const float farDepth = 0.0f;  // reversed-Z: 0 is infinitely far
-                          glClearNamedFramebufferfv(fb, GL_DEPTH, 0, &farDepth);
+                          // (reversed-Z: 0 is infinitely far; the stencil 0: no terrain)
+                          glClearNamedFramebufferfi(fb, GL_DEPTH_STENCIL, 0, 0.0f, 0);
+                          // The mesh first: its fragments' points, marked in the stencil; then the
+                          // ground's material once per marked pixel, each program kept off the
+                          // others' pixels by the early stencil test (a software renderer shades a
+                          // 4x4 block for each triangle that touches it: two to nine times the pixels).
+                          glBindFramebuffer(GL_FRAMEBUFFER, targets_.terrainMeshFramebuffer());
+                          glEnable(GL_STENCIL_TEST);
+                          glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
+                          terrain_.drawMesh();
+                          glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
+                          glStencilMask(0);  // a test alone, which may run before the shader
                           glBindFramebuffer(GL_FRAMEBUFFER, fb);
-                          terrain_.draw();
+                          for (int i = 0; i < 3; ++i)
+                              glBindTextureUnit(binding::UNIT_MESH_SURFACE_0 + i, targets_.meshSurface()[i].id());
+                          glBindVertexArray(emptyVertexArray_.id());
+                          for (const bool detailed : {true, false}) {
+                              if (detailed && !terrain_.detailDrawn()) continue;
+                              glStencilFunc(GL_EQUAL, detailed ? TerrainPass::kDetailedStencil : TerrainPass::kPlainStencil,
+                                            0xFF);
+                              terrain_.useMaterialProgram(detailed);
+                              drawScissored(lastPrepare_.groundBound, targets_.size());  // the ground lies within it
+                          }
+                          glStencilMask(0xFF);
+                          glStencilFunc(GL_ALWAYS, 0, 0xFF);
+                          glDisable(GL_STENCIL_TEST);
                       },
                       [this] { return terrain_.programs(); }});
     // The terrain's shadow marched at one pixel of each block (render/terrain_shadow.frag), on
@@ -270,7 +292,7 @@ std::vector<Renderer::Pass> Renderer::makePasses() {
                           glBindTextureUnit(binding::UNIT_SEABED_RADIANCE, targets_.seabedRadiance().id());
                           glBindTextureUnit(binding::UNIT_TERRAIN_SHADOW, targets_.terrainShadowSamples().visibility.id());
                           for (int i = 0; i < 3; ++i)
-                              glBindTextureUnit(binding::UNIT_SEA_SURFACE_0 + i, targets_.seaSurface()[i].id());
+                              glBindTextureUnit(binding::UNIT_MESH_SURFACE_0 + i, targets_.meshSurface()[i].id());
                           targets_.clearSeaTerrainShadowList();
                           glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding::BUFFER_SEA_TERRAIN_SHADOW_LIST,
                                            targets_.seaTerrainShadowList().id());

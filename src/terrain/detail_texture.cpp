@@ -148,7 +148,7 @@ gl::Texture makeDetailGlTexture(const DetailTexture& texture) {
     glTextureParameteri(t.id(), GL_TEXTURE_WRAP_T, GL_REPEAT);
     glTextureParameteri(t.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
     glTextureParameteri(t.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-    // Isotropic on purpose: terrain.frag skips a scale once the footprint's larger side spans
+    // Isotropic on purpose: terrain/ground_material.frag skips a scale once the footprint's larger side spans
     // its period, which is where isotropic filtering reaches the (zero-mean) coarsest mip, so
     // the skip is seamless; anisotropic filtering would still show detail there (and costs
     // llvmpipe minutes per frame at grazing angles).

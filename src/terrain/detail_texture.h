@@ -1,5 +1,5 @@
 // The terrain's detail texture: a small tiling height field baked procedurally at start-up
-// (no image files), sampled tri-planar by terrain.frag for the detail normals and the
+// (no image files), sampled tri-planar by terrain/ground_material.frag for the detail normals and the
 // materials' colour variation at ground level (Michelic §6: "a three-planar projected normal
 // map to get detail normals"; Sperlhofer 4.4: normal mapping and multi-texturing).
 //

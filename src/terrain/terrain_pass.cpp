@@ -14,8 +14,8 @@ namespace planet {
 
 namespace {
 
-gl::ProgramDesc terrainProgram(const char* name) {
-    return gl::ProgramDesc{name, {"terrain/terrain.vert", "terrain/terrain.tesc", "terrain/terrain.tese", "terrain/terrain.frag"}};
+gl::ProgramDesc materialProgram(const char* name) {
+    return gl::ProgramDesc{name, {"common/fullscreen.vert", "terrain/ground_material.frag"}};
 }
 
 }  // namespace
@@ -29,7 +29,7 @@ int TerrainPass::detailPatchCount(const std::vector<PatchRing>& rings, int patch
     // A fragment lies on a triangle whose corners are tessellated points of its patch; the
     // triangle's chord can come nearer than its corners by (edge^2 / 8 range): metres for
     // the edges of hundreds of metres there can be, which the margin covers (the detail's
-    // strength is under 3 % beyond 0.95 of its range anyway: terrain.frag's smoothstep).
+    // strength is under 3 % beyond 0.95 of its range anyway: terrain/ground_material.frag's smoothstep).
     constexpr double kMargin = 1.05;
     const glm::dvec3 camera(grid.cameraPositionAndRadius);
     const glm::dvec3 axis(grid.worldFromGridColumns[2]);  // grid z, towards the projection camera
@@ -46,7 +46,10 @@ int TerrainPass::detailPatchCount(const std::vector<PatchRing>& rings, int patch
 }
 
 TerrainPass::TerrainPass(const gl::ShaderSources& sources)
-    : sources_(sources), plain_(sources, terrainProgram("terrain")) {
+    : sources_(sources),
+      meshProgram_(sources, gl::ProgramDesc{"terrain", {"terrain/terrain.vert", "terrain/terrain.tesc",
+                                                        "terrain/terrain.tese", "terrain/terrain.frag"}}),
+      plain_(sources, materialProgram("ground material")) {
     glNamedBufferStorage(block_.id(), sizeof(terrain::TerrainBlock), nullptr, GL_DYNAMIC_STORAGE_BIT);
     block_.label("TerrainBlock");
     glNamedBufferStorage(nearBlock_.id(), sizeof(terrain::TerrainNear), nullptr, GL_DYNAMIC_STORAGE_BIT);
@@ -85,8 +88,8 @@ void TerrainPass::prepare(const Scene& scene, const Camera& camera, const noise:
     }
     if (scene.terrain.detail && !detailed_)
         detailed_.emplace(gl::ShaderSources{sources_.root, sources_.preamble + "#define TERRAIN_DETAIL 1\n"},
-                          terrainProgram("terrain (TERRAIN_DETAIL)"));
-    // The detail fades out by TERRAIN_NEAR_RANGE_M from the camera (terrain/terrain.frag); a
+                          materialProgram("ground material (TERRAIN_DETAIL)"));
+    // The detail fades out by TERRAIN_NEAR_RANGE_M from the camera (terrain/ground_material.frag); a
     // camera higher than that above the highest possible ground has none in view, and the
     // program without the detail's code draws the same pixels for less (llvmpipe pays for
     // code no pixel enters: `orbit` 640x360, 33 -> 73 ms of terrain pass with it).
@@ -125,7 +128,7 @@ long long queryResult(GLuint query) {
 
 }  // namespace
 
-void TerrainPass::draw() {
+void TerrainPass::drawMesh() {
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_GREATER);  // reversed-Z
     glDepthMask(GL_TRUE);
@@ -139,15 +142,12 @@ void TerrainPass::draw() {
         glBeginQuery(GL_TESS_EVALUATION_SHADER_INVOCATIONS, evaluations_.id());
         glBeginQuery(GL_FRAGMENT_SHADER_INVOCATIONS, fragments_.id());
     }
+    glUseProgram(meshProgram_.id());
     if (nearPatches > 0) {
-        glUseProgram(detailed_->id());
-        // The detail filter's table (terrain/detail.glsl); absent from the program when unused.
-        const GLint lostVariance = glGetUniformLocation(detailed_->id(), "uTerrainDetailLostVariance");
-        if (lostVariance >= 0 && !detailLostVariance_.empty())
-            glUniform1fv(lostVariance, static_cast<GLsizei>(detailLostVariance_.size()), detailLostVariance_.data());
+        glStencilFunc(GL_ALWAYS, kDetailedStencil, 0xFF);
         mesh_.draw(0, nearPatches);
     }
-    glUseProgram(plain_.id());
+    glStencilFunc(GL_ALWAYS, kPlainStencil, 0xFF);
     mesh_.draw(nearPatches, mesh_.patchCount() - nearPatches);
     if (stages) {
         glEndQuery(GL_VERTEX_SHADER_INVOCATIONS);
@@ -171,6 +171,18 @@ void TerrainPass::draw() {
     glDisable(GL_DEPTH_TEST);
 }
 
+void TerrainPass::useMaterialProgram(bool detailed) {
+    if (!detailed || !detailed_) {
+        glUseProgram(plain_.id());
+        return;
+    }
+    glUseProgram(detailed_->id());
+    // The detail filter's table (terrain/detail.glsl); absent from the program when unused.
+    const GLint lostVariance = glGetUniformLocation(detailed_->id(), "uTerrainDetailLostVariance");
+    if (lostVariance >= 0 && !detailLostVariance_.empty())
+        glUniform1fv(lostVariance, static_cast<GLsizei>(detailLostVariance_.size()), detailLostVariance_.data());
+}
+
 void TerrainPass::setDarkFloorCulling(double patchDarkContinent, double continentLipschitz) {
     struct {
         float patchDarkContinent, continentLipschitz;
@@ -180,7 +192,7 @@ void TerrainPass::setDarkFloorCulling(double patchDarkContinent, double continen
 }
 
 std::vector<gl::HotProgram*> TerrainPass::programs() {
-    std::vector<gl::HotProgram*> built{&plain_};
+    std::vector<gl::HotProgram*> built{&meshProgram_, &plain_};
     if (detailed_) built.push_back(&*detailed_);
     return built;
 }

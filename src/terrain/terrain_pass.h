@@ -5,12 +5,16 @@
 //   terrain.vert  grid coordinates of the N x N vertices ((N-1)^2 quad patches)
 //   terrain.tesc  frustum culling with the highest terrain, levels from edge size on screen
 //   terrain.tese  grid -> sphere direction (double) -> height -> camera-relative position
-//   terrain.frag  per-pixel normal, material, albedo, filtered over the pixel's footprint,
-//                 with tri-planar detail from the baked detail texture (terrain/detail_texture.h)
+//   terrain.frag  the fragment's point, direction and steps to the next pixels
+//                 (terrain/mesh_surface.glsl), and the stencil
+//   ground_material.frag  over the frame where the stencil is set, once per pixel (a software
+//                 renderer shades a 4x4 block for every triangle that touches it): per-pixel
+//                 normal, material, albedo, filtered over the pixel's footprint, with tri-planar
+//                 detail from the baked detail texture (terrain/detail_texture.h) where it may show
 //
 // prepare() (before the frame's passes) follows the grid's projection anchor with
 // hysteresis (updateAnchor), so vertices stay put while the camera moves a little, and
-// uploads the GridBlock and the TerrainBlock; draw() only draws. The continents map it
+// uploads the GridBlock and the TerrainBlock; the draws only draw. The continents map it
 // samples is a baked resource the renderer brings up to date before the frame
 // (terrain/continents.h) and binds at UNIT_CONTINENTS.
 #pragma once
@@ -43,10 +47,17 @@ public:
     // `radiansPerPixel` and `aspect`: the view's, for the grid's stride (grid/grid_stride.h).
     void prepare(const Scene& scene, const Camera& camera, const noise::CubeMap& continents, double radiansPerPixel,
                  double aspect);
-    // Draws into the bound G-buffer (depth test on, reversed-Z).
-    void draw();
-    // The programs built so far, for hot reload: without the ground detail, and with it
-    // (TERRAIN_DETAIL 1) once the preset's terrain.detail has been on.
+    // Draws the mesh into the bound targets (the mesh surface and the G-buffer's depth:
+    // RenderTargets::terrainMeshFramebuffer; depth test on, reversed-Z), with the stencil's
+    // reference 2 for the patches that take the detail's material and 1 for the rest (the caller
+    // enables the test and sets the op that writes it).
+    void drawMesh();
+    // Binds the ground's material program (terrain/ground_material.frag) with the detail's code
+    // (`detailed`: the stencil's 2, only when detailDrawn()) or without; the caller draws its
+    // full-screen triangle into the G-buffer over the pixels of that stencil value.
+    void useMaterialProgram(bool detailed);
+    // The programs built so far, for hot reload: the mesh's, the material without the ground
+    // detail, and with it (TERRAIN_DETAIL 1) once the preset's terrain.detail has been on.
     std::vector<gl::HotProgram*> programs();
 
     // What the pass's stages did in the last drawn frame, counted while setStatistics(true)
@@ -79,6 +90,8 @@ public:
                                 const GridBlock& grid, double rangeM);
     // The last prepared frame's count (0 when the detail is not drawn).
     int detailPatches() const { return detailPatches_; }
+    // The stencil's values the mesh leaves: where its material takes the detail's program, and the plain one.
+    static constexpr int kDetailedStencil = 2, kPlainStencil = 1;
     // Tests: the detail's program for every patch, as before the rings (the same image).
     void setDetailOnEveryPatch(bool on) { detailOnEveryPatch_ = on; }
     // The patches' draw order (grid/grid_mesh.h; NearFirst by default). Tests compare.
@@ -93,10 +106,11 @@ public:
 private:
     // The detail's code is in a program of its own rather than behind the block's flag alone,
     // which llvmpipe paid for though no pixel entered it (the terrain pass at the `ground`
-    // view, 1280x720: 86 -> 63 ms of fragment work without it; terrain/terrain.frag).
+    // view, 1280x720: 86 -> 63 ms of fragment work without it; terrain/ground_material.frag).
     gl::ShaderSources sources_;
-    gl::HotProgram plain_;
-    std::optional<gl::HotProgram> detailed_;  // built when terrain.detail is first on
+    gl::HotProgram meshProgram_;
+    gl::HotProgram plain_;                    // the material (terrain/ground_material.frag)
+    std::optional<gl::HotProgram> detailed_;  // ... with TERRAIN_DETAIL 1, built when terrain.detail is first on
     int detailPatches_ = 0;  // the last prepared frame's: 0 out of reach or with terrain.detail off
     bool detailOnEveryPatch_ = false;
     GridMesh mesh_{"terrain", PatchOrder::NearFirst};
