@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <vector>
 
 #include "app/session.h"
 #include "gl_test_support.h"
@@ -221,7 +222,9 @@ TEST_F(OceanCulling, TheDarkFloorsThresholdHoldsOnTheHeightField) {
 // for every triangle that touches it: orbit 1280x720 had 983 344 fragment invocations for its
 // sea's pixels) and not on the rest of the ground's rectangle: a copy of the program that counts
 // its invocations (an atomic add into a buffer of the test's) counts exactly the pixels it wrote
-// (its reflected ray; the rest stays cleared to 0), with the early stencil test. Able
+// (its reflected ray; the rest stays cleared to 0), with the early stencil test, and those are the
+// pixels the mesh marked (the stencil's OceanPass::kSeaStencil, read back), each where the sea's
+// depth replaced the seabed's (a mark where the mesh drew nothing would fail that). Able
 // to fail: without `early_fragment_tests` llvmpipe tests the stencil after a shader that writes
 // memory has run, and the copy counts every pixel of the rectangle (checked below).
 TEST_F(OceanCulling, TheSeasLightRunsOncePerSeaPixel) {
@@ -263,6 +266,23 @@ TEST_F(OceanCulling, TheSeasLightRunsOncePerSeaPixel) {
             marked = 0;
             for (std::size_t i = 0; i < reflection.pixels.size(); i += 4)
                 marked += reflection.pixels[i] != 0.0f || reflection.pixels[i + 1] != 0.0f || reflection.pixels[i + 2] != 0.0f;
+            const std::size_t pixels = static_cast<std::size_t>(kSize.x) * kSize.y;
+            std::vector<GLubyte> stencil(pixels);
+            std::vector<float> depth(pixels), seabed(pixels);
+            glGetTextureImage(r.targets().gbuffer().depth.id(), 0, GL_STENCIL_INDEX, GL_UNSIGNED_BYTE,
+                              static_cast<GLsizei>(stencil.size()), stencil.data());
+            glGetTextureImage(r.targets().gbuffer().depth.id(), 0, GL_DEPTH_COMPONENT, GL_FLOAT,
+                              static_cast<GLsizei>(depth.size() * sizeof(float)), depth.data());
+            glGetTextureImage(r.targets().seabedDepth().id(), 0, GL_DEPTH_COMPONENT, GL_FLOAT,
+                              static_cast<GLsizei>(seabed.size() * sizeof(float)), seabed.data());
+            long long stencilled = 0, markedWithoutSea = 0;
+            for (std::size_t i = 0; i < pixels; ++i) {
+                if (stencil[i] != OceanPass::kSeaStencil) continue;
+                ++stencilled;
+                markedWithoutSea += depth[i] == seabed[i];
+            }
+            EXPECT_EQ(stencilled, marked);
+            EXPECT_EQ(markedWithoutSea, 0);
             return static_cast<long long>(n);
         };
         long long marked = 0, markedLate = 0;

@@ -11,6 +11,7 @@
 #include <iterator>
 #include <regex>
 #include <sstream>
+#include <vector>
 
 #include "app/session.h"
 #include "gl/context.h"
@@ -218,7 +219,9 @@ TEST_F(TerrainCulling, TheDetailsRingsDrawTheSamePixelsAsTheDetailEverywhere) {
 // invocations for its 921 600 pixels) and not on the rest of the ground's rectangle: a copy of
 // the program that counts its invocations (an atomic add into a buffer of the test's), both of
 // its builds (with and without the detail, each behind its own stencil value), counts exactly
-// the pixels it wrote (a unit normal in the G-buffer; the rest stays cleared to 0). Able to fail:
+// the pixels it wrote (a unit normal in the G-buffer; the rest stays cleared to 0), which are the
+// pixels the mesh marked (the stencil's two values, read back with the ocean off: its pass clears
+// the stencil) and those where it drew (a depth above the cleared 0). Able to fail:
 // without `early_fragment_tests` (the shader then writes memory, and llvmpipe tests the stencil
 // after it ran) each build runs on every pixel of the rectangle (checked below).
 TEST_F(TerrainCulling, TheGroundsMaterialRunsOncePerGroundPixel) {
@@ -249,6 +252,7 @@ TEST_F(TerrainCulling, TheGroundsMaterialRunsOncePerGroundPixel) {
         SCOPED_TRACE(view);
         Session s = loadSession(test::repoPaths(), "earth", view);
         s.scene.render.temporal = false;
+        s.scene.terrain.ocean = false;  // the stencil left as the terrain marked it
         auto invocations = [&](const std::filesystem::path& root, long long& ground, bool& detailed) {
             Renderer r(root, atmosphere::TableSizes::reduced(), s.continents);
             const GLuint zero = 0;
@@ -262,6 +266,22 @@ TEST_F(TerrainCulling, TheGroundsMaterialRunsOncePerGroundPixel) {
             for (std::size_t i = 0; i < normal.pixels.size(); i += 4)
                 ground += normal.pixels[i] != 0.0f || normal.pixels[i + 1] != 0.0f || normal.pixels[i + 2] != 0.0f;
             detailed = r.terrain().detailDrawn();
+            const std::size_t pixels = static_cast<std::size_t>(size.x) * size.y;
+            std::vector<GLubyte> stencil(pixels);
+            std::vector<float> depth(pixels);
+            glGetTextureImage(r.targets().gbuffer().depth.id(), 0, GL_STENCIL_INDEX, GL_UNSIGNED_BYTE,
+                              static_cast<GLsizei>(stencil.size()), stencil.data());
+            glGetTextureImage(r.targets().gbuffer().depth.id(), 0, GL_DEPTH_COMPONENT, GL_FLOAT,
+                              static_cast<GLsizei>(depth.size() * sizeof(float)), depth.data());
+            long long plain = 0, withDetail = 0, drawn = 0;
+            for (std::size_t i = 0; i < pixels; ++i) {
+                plain += stencil[i] == TerrainPass::kPlainStencil;
+                withDetail += stencil[i] == TerrainPass::kDetailedStencil;
+                drawn += depth[i] > 0.0f;
+            }
+            EXPECT_EQ(plain + withDetail, ground);
+            EXPECT_EQ(drawn, ground);
+            EXPECT_EQ(withDetail > 0, r.terrain().detailDrawn());
             return static_cast<long long>(n);
         };
         long long ground = 0, groundLate = 0;

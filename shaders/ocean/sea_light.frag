@@ -61,7 +61,6 @@
 // does, is tested after it ran, and a software renderer then shades every pixel).
 layout(early_fragment_tests) in;
 
-in vec2 vNdc;
 layout(binding = UNIT_MESH_SURFACE_0) uniform sampler2D seaSurface0;  // the sea surface's G-buffer (ocean/sea_surface.glsl)
 layout(binding = UNIT_MESH_SURFACE_1) uniform sampler2D seaSurface1;
 layout(binding = UNIT_MESH_SURFACE_2) uniform sampler2D seaSurface2;
@@ -117,7 +116,7 @@ void main() {
     ivec2 pixel = ivec2(gl_FragCoord.xy);
     SeaSurface sea = unpackSeaSurface(texelFetch(seaSurface0, pixel, 0), texelFetch(seaSurface1, pixel, 0),
                                       texelFetch(seaSurface2, pixel, 0));
-    vec3 view = worldRayFromNdc(vNdc);  // camera -> surface
+    vec3 view = pixelRay(pixel);  // camera -> surface: formed as the compute passes after this form it
     vec3 up = sea.up;
     float seaDistance = sea.distance;
     float waterDepth = sea.waterDepth;

@@ -34,7 +34,9 @@ void packSeaSurface(SeaSurface s, out vec4 texel0, out vec4 texel1, out vec4 tex
     texel2 = vec4(s.behindLand ? -s.coverage : s.coverage, s.waterPath, s.gridPoint);
 }
 
-// The surface from its texels (the mesh leaves a coverage above 0 wherever it draws).
+// The surface from its texels. The coverage's sign carries the flag: a shore fragment behind the
+// land's edge always has a coverage above 0 (ocean/ocean.frag discards it otherwise), any other
+// fragment 0 or more.
 SeaSurface unpackSeaSurface(vec4 texel0, vec4 texel1, vec4 texel2) {
     SeaSurface s;
     s.up = texel0.xyz;

@@ -1,9 +1,9 @@
 // The sea's pixels whose terrain shadow is marched after the ocean pass (ocean/
 // sea_terrain_shadow.comp), not in it: where land may lie within the sun ray's reach and the
-// terrain shadow's samples around the pixel disagree (a shadow's edge, the shore). In the ocean's
-// fragment shader the march's code ran for every sea pixel, masked, marched or not (a software
-// renderer runs the first turn of a loop for every group of pixels: README "Programs, not
-// branches"): at 1280x720 a sixth of the ocean pass at orbit. The ocean lists such a pixel with
+// terrain shadow's samples around the pixel disagree (a shadow's edge, the shore). In the sea's
+// light (ocean/sea_light.frag) the march's code ran for every sea pixel, masked, marched or not (a
+// software renderer runs the first turn of a loop for every group of pixels: README "Programs, not
+// branches"): at 1280x720 a sixth of the ocean pass at orbit. The light lists such a pixel with
 // the sea's distance along its ray and the share of its radiance that the sun's light on it
 // carries (every such term is linear in the sun's visibility v: the glitter, the light scattered
 // up by the water, the foam), and keeps its lit radiance, or where the share is most of it the rest
@@ -13,11 +13,10 @@
 //
 // The list holds at most `capacity` entries (src/render/render_targets.cpp: as many as the frame
 // has pixels, 16 bytes each; the flooded valley in the range's shadow at a 5 degree sun lists a
-// fifth of them). A fragment beyond it (where sea fragments overlap) takes the samples' mean
-// visibility instead (listSeaTerrainShadow returns false), as does a shore fragment behind the
-// land's edge. The compute pass marches only where the pixel's surface distance is still the
-// listed one (no later fragment drew over it); two fragments of one pixel at the same distance,
-// bit for bit, would both add their share (sea triangles do not overlap on screen). Its header
+// fifth of them; the light runs once per pixel, so it lists each at most once). A pixel beyond it
+// takes the samples' mean visibility instead (listSeaTerrainShadow returns false), as does a shore
+// pixel behind the land's edge. The compute pass marches only where the pixel's surface distance
+// is still the listed one (a safeguard: nothing draws over the sea's light). Its header
 // is the indirect dispatch's group counts, as render/pixel_list.glsl's;
 // RenderTargets::clearSeaTerrainShadowList resets it before the ocean.
 const uint SEA_TERRAIN_SHADOW_GROUP_SIZE = 64u;

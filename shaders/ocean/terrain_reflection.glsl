@@ -19,4 +19,4 @@
 #define PIXEL_LIST_BINDING BUFFER_TERRAIN_REFLECTION_LIST
 #include "render/pixel_list.glsl"
 
-layout(binding = UNIT_SEA_SKY_REFLECTION) uniform sampler2D seaSkyReflection;  // sky, sea distance (ocean.frag)
+layout(binding = UNIT_SEA_SKY_REFLECTION) uniform sampler2D seaSkyReflection;  // sky, sea distance (ocean/sea_light.frag)

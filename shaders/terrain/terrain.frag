@@ -7,7 +7,6 @@
 #include "terrain/mesh_surface.glsl"
 
 in vec3 teDirection;
-in float teHeight;
 in vec3 tePointFromCamera;
 
 layout(location = 0) out vec4 outSurface0;

@@ -129,9 +129,13 @@ void OceanPass::formGridReflection(const AtmosphereVariant& variant) {
     glBindTextureUnit(binding::UNIT_OCEAN_GRID_REFLECTION, gridReflection_.id());
 }
 
-void OceanPass::drawSurface() {
+void OceanPass::bindWavesAndBlock() const {
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding::BUFFER_OCEAN_WAVES, waves_.id());
     bindBlock();
+}
+
+void OceanPass::drawSurface() {
+    bindWavesAndBlock();
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_GREATER);  // reversed-Z
     glDepthMask(GL_TRUE);
@@ -149,8 +153,7 @@ void OceanPass::drawSurface() {
 }
 
 void OceanPass::useLightProgram(const AtmosphereVariant& variant, bool underWater) {
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding::BUFFER_OCEAN_WAVES, waves_.id());
-    bindBlock();
+    bindWavesAndBlock();
     const int mode = underWater ? kUnderWaterMode : smoothMirror_ ? kSmoothMirrorMode : flatMirror_ ? kFlatMirrorMode : 0;
     if (mode == kFlatMirrorMode || mode == kSmoothMirrorMode) formGridReflection(variant);
     glUseProgram(light_.get(variant, mode).id());

@@ -64,9 +64,9 @@ public:
     // pass's that reads them: the terrain shadow's samples of the sea's surface.
     void bindBlock() const;
 
-    // Its programs that read the atmosphere's tables (the sea's light, and the grid's reflection),
-    // and those of their variants built so far with the mesh's (hot reload).
+    // Its programs that read the atmosphere's tables (the sea's light, and the grid's reflection).
     std::vector<AtmosphereProgram*> atmospherePrograms() { return {&light_, &gridReflectionProgram_}; }
+    // Those of their variants built so far, and the mesh's (hot reload).
     std::vector<gl::HotProgram*> builtPrograms();
 
     // The program's mode OCEAN_FLAT_MIRROR (the clouds' share of the reflection from the grid's
@@ -88,6 +88,9 @@ public:
     // culling on, such a value exists), the patch's bound with the filter's slack, the map's slope.
     bool darkFloorCulling() const { return landCulling_ && darkContinent_ >= -1.0; }
     double patchDarkContinent() const { return darkContinent_ - sampleSlack_; }
+    // The stencil's value the mesh leaves where a sea fragment is the nearest (not the terrain's,
+    // which the same stencil held before the ocean pass cleared it: src/terrain/terrain_pass.h).
+    static constexpr int kSeaStencil = 3;
     // Tests: the patches' stride forced (1, 2, 4 or 8), or 0 (the default) to let the grid's cells
     // on screen decide above the terrain detail's reach (grid/grid_stride.h); the last prepared frame's.
     void setStrideOverride(int stride) { strideOverride_ = stride; }
@@ -103,6 +106,7 @@ public:
 
 private:
     void uploadWaves(const Scene& scene, const Camera& camera);
+    void bindWavesAndBlock() const;  // the waves' buffer and the OceanBlock, for the mesh's and the light's programs
     // ocean/grid_reflection.comp over the grid's points, for the program in the flat or smooth mode.
     void formGridReflection(const AtmosphereVariant& variant);
 

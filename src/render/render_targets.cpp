@@ -5,6 +5,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "render/bindings.h"
+
 namespace planet {
 
 namespace {
@@ -163,6 +165,11 @@ void RenderTargets::clearSeaReflection() const {
 void RenderTargets::clearSeaStencil() const {
     const GLint clear = 0;
     glClearNamedFramebufferiv(seaSurfaceFramebuffer_.id(), GL_STENCIL, 0, &clear);
+}
+
+void RenderTargets::bindMeshSurface() const {
+    for (std::size_t i = 0; i < meshSurface_.size(); ++i)
+        glBindTextureUnit(binding::UNIT_MESH_SURFACE_0 + static_cast<GLuint>(i), meshSurface_[i].id());
 }
 
 void RenderTargets::copySeabed() const {

@@ -1,8 +1,10 @@
 // The frame's render targets.
 //
 //   gbuffer   normal (RGBA16F, world axes), albedo (RGBA8, linear), material
-//             (RGBA8: id/255, roughness), depth (DEPTH32F, reversed-Z) with a stencil beside it
-//             (1 where the ocean's mesh left the sea as the nearest surface: its light runs there)
+//             (RGBA8: id/255, roughness), depth (DEPTH32F, reversed-Z) with a stencil beside it:
+//             where the terrain's mesh is the nearest surface (TerrainPass::kPlainStencil and
+//             kDetailedStencil: its material's programs run there), then, cleared by the ocean
+//             pass, where the sea's is (OceanPass::kSeaStencil: its light runs there)
 //   surface   surfaceRadiance (RGBA16F): the radiance leaving the surface point towards the
 //             camera, no air in it; surfaceDistance (R32F): metres along the view ray to that
 //             point, 0 where there is none. Written by the surface light and the ocean
@@ -145,6 +147,8 @@ public:
     GLuint seaSurfaceFramebuffer() const { return seaSurfaceFramebuffer_.id(); }
     void clearSeaStencil() const;
     const std::array<gl::Texture, 3>& meshSurface() const { return meshSurface_; }
+    // Binds them at UNIT_MESH_SURFACE_0.. for the pass that reads what a mesh left.
+    void bindMeshSurface() const;
     // The terrain's mesh's targets: the mesh surface, with the G-buffer's depth and its stencil
     // (1 where the mesh drew with the plain material, 2 with the detail's; the G-buffer's
     // framebuffer has the same attached, for the material pass's test).

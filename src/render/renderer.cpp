@@ -85,6 +85,29 @@ void drawScissored(const ScreenRect& rect, glm::ivec2 size) {
     glDisable(GL_SCISSOR_TEST);
 }
 
+// The stencil's three states in the passes that split a draw by it: marking the pixels a draw
+// writes with `ref`; a test for `ref` alone, which writes nothing and so may run before the
+// shader (a software renderer then spares the pixels it rejects); off again, as every pass
+// finds it.
+void stencilMark(GLint ref) {
+    glEnable(GL_STENCIL_TEST);
+    glStencilMask(0xFF);
+    glStencilFunc(GL_ALWAYS, ref, 0xFF);
+    glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
+}
+void stencilTest(GLint ref) {
+    glEnable(GL_STENCIL_TEST);
+    glStencilMask(0);
+    glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
+    glStencilFunc(GL_EQUAL, ref, 0xFF);
+}
+void stencilOff() {
+    glStencilMask(0xFF);
+    glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
+    glStencilFunc(GL_ALWAYS, 0, 0xFF);
+    glDisable(GL_STENCIL_TEST);
+}
+
 }  // namespace
 
 const char* frameResourceName(FrameResource r) {
@@ -174,25 +197,18 @@ std::vector<Renderer::Pass> Renderer::makePasses() {
                           // others' pixels by the early stencil test (a software renderer shades a
                           // 4x4 block for each triangle that touches it: two to nine times the pixels).
                           glBindFramebuffer(GL_FRAMEBUFFER, targets_.terrainMeshFramebuffer());
-                          glEnable(GL_STENCIL_TEST);
-                          glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
+                          stencilMark(TerrainPass::kPlainStencil);  // (drawMesh() sets each draw's value)
                           terrain_.drawMesh();
-                          glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
-                          glStencilMask(0);  // a test alone, which may run before the shader
                           glBindFramebuffer(GL_FRAMEBUFFER, fb);
-                          for (int i = 0; i < 3; ++i)
-                              glBindTextureUnit(binding::UNIT_MESH_SURFACE_0 + i, targets_.meshSurface()[i].id());
+                          targets_.bindMeshSurface();
                           glBindVertexArray(emptyVertexArray_.id());
                           for (const bool detailed : {true, false}) {
                               if (detailed && !terrain_.detailDrawn()) continue;
-                              glStencilFunc(GL_EQUAL, detailed ? TerrainPass::kDetailedStencil : TerrainPass::kPlainStencil,
-                                            0xFF);
+                              stencilTest(detailed ? TerrainPass::kDetailedStencil : TerrainPass::kPlainStencil);
                               terrain_.useMaterialProgram(detailed);
                               drawScissored(lastPrepare_.groundBound, targets_.size());  // the ground lies within it
                           }
-                          glStencilMask(0xFF);
-                          glStencilFunc(GL_ALWAYS, 0, 0xFF);
-                          glDisable(GL_STENCIL_TEST);
+                          stencilOff();
                       },
                       [this] { return terrain_.programs(); }});
     // The terrain's shadow marched at one pixel of each block (render/terrain_shadow.frag), on
@@ -239,27 +255,19 @@ std::vector<Renderer::Pass> Renderer::makePasses() {
                           // kept off the other's pixels by the early stencil test, before it runs.
                           const bool darkApart = seaFloorDarkStencil_ && s.terrain.ocean;
                           if (darkApart) {
-                              glEnable(GL_STENCIL_TEST);
-                              glStencilFunc(GL_ALWAYS, 1, 0xFF);
-                              glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
+                              stencilMark(1);
                               glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);  // the stencil alone
                               glUseProgram(seaFloorDark_.program().id());
                               drawScissored(lastPrepare_.groundBound, targets_.size());
                               glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-                              glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
-                              glStencilMask(0);  // a test alone, which may run before the shader
-                              glStencilFunc(GL_EQUAL, 1, 0xFF);
+                              stencilTest(1);
                               glUseProgram(surfaceLight_.get(variant, 1).id());
                               drawScissored(lastPrepare_.groundBound, targets_.size());
-                              glStencilFunc(GL_EQUAL, 0, 0xFF);
+                              stencilTest(0);
                           }
                           glUseProgram(surfaceLight_.get(variant).id());
                           drawScissored(lastPrepare_.groundBound, targets_.size());  // it discards elsewhere
-                          if (darkApart) {
-                              glStencilMask(0xFF);
-                              glStencilFunc(GL_ALWAYS, 0, 0xFF);
-                              glDisable(GL_STENCIL_TEST);
-                          }
+                          if (darkApart) stencilOff();
                       },
                       [this] {
                           std::vector<gl::HotProgram*> p = builtVariants({&surfaceLight_});
@@ -279,20 +287,15 @@ std::vector<Renderer::Pass> Renderer::makePasses() {
                           // touches it: the mesh's fragments are two to three times the sea's pixels).
                           glBindFramebuffer(GL_FRAMEBUFFER, targets_.seaSurfaceFramebuffer());
                           glBindTextureUnit(binding::UNIT_SEABED_DEPTH, targets_.seabedDepth().id());
-                          glEnable(GL_STENCIL_TEST);
-                          glStencilFunc(GL_ALWAYS, 1, 0xFF);
-                          glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
+                          stencilMark(OceanPass::kSeaStencil);
                           glBeginQuery(GL_ANY_SAMPLES_PASSED, oceanDrew_.id());
                           ocean_.drawSurface();
                           glEndQuery(GL_ANY_SAMPLES_PASSED);
-                          glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
-                          glStencilMask(0);  // a test alone, which may run before the shader
-                          glStencilFunc(GL_EQUAL, 1, 0xFF);
+                          stencilTest(OceanPass::kSeaStencil);
                           glBindFramebuffer(GL_FRAMEBUFFER, targets_.oceanFramebuffer());
                           glBindTextureUnit(binding::UNIT_SEABED_RADIANCE, targets_.seabedRadiance().id());
                           glBindTextureUnit(binding::UNIT_TERRAIN_SHADOW, targets_.terrainShadowSamples().visibility.id());
-                          for (int i = 0; i < 3; ++i)
-                              glBindTextureUnit(binding::UNIT_MESH_SURFACE_0 + i, targets_.meshSurface()[i].id());
+                          targets_.bindMeshSurface();
                           targets_.clearSeaTerrainShadowList();
                           glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding::BUFFER_SEA_TERRAIN_SHADOW_LIST,
                                            targets_.seaTerrainShadowList().id());
@@ -301,9 +304,7 @@ std::vector<Renderer::Pass> Renderer::makePasses() {
                           glBeginConditionalRender(oceanDrew_.id(), GL_QUERY_WAIT);
                           drawScissored(lastPrepare_.groundBound, targets_.size());  // the sea lies within it
                           glEndConditionalRender();
-                          glStencilMask(0xFF);
-                          glStencilFunc(GL_ALWAYS, 0, 0xFF);
-                          glDisable(GL_STENCIL_TEST);
+                          stencilOff();
                           // The terrain's shadow at the pixels the sea listed (a shadow's edge near
                           // land), marched each on its own and taken from the radiance in place.
                           glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT |

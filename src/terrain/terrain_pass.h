@@ -69,7 +69,8 @@ public:
         long long clipped = -1;     // triangles out of clipping: those at least partly in the view
         long long patches = -1;     // control-stage patches (the heights come from the vertex stage)
         long long evaluations = -1; // evaluation-stage invocations (one height each)
-        long long fragments = -1;   // fragment-stage invocations
+        long long fragments = -1;   // the mesh's fragment-stage invocations (the point's writes; the material's
+                                    // are one per pixel after it, terrain/ground_material.frag)
     };
     void setStatistics(bool on) { statistics_ = on; }
     // After prepare(), where the sea is drawn over the ground from above: patches surely under the
