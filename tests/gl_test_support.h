@@ -85,4 +85,62 @@ inline std::filesystem::path shadersWith(const std::string& name, const std::str
     return root / "shaders";
 }
 
+// A copy of the shader tree (as shadersWith) whose fragment shader `file` counts its own
+// invocations: its main() renamed and called from a new main() that first adds 1 to the
+// InvocationCounter's buffer; with `earlyTests` false also its `layout(early_fragment_tests) in;`
+// taken out (a test of the early stencil test: llvmpipe tests the stencil after a shader that
+// writes memory, so that copy runs on every pixel the draw covers).
+inline constexpr GLuint kInvocationCountBinding = 15;  // a shader storage binding the frame leaves free
+inline std::filesystem::path countingShaders(const std::string& name, const std::string& file, bool earlyTests) {
+    namespace fs = std::filesystem;
+    const fs::path root = shadersWith(name, file, "void main() {", "void countedMain() {");
+    std::stringstream read;
+    read << std::ifstream(root / file).rdbuf();
+    std::string text = read.str();
+    const std::string early = "layout(early_fragment_tests) in;";
+    if (!earlyTests) {
+        const std::size_t at = text.find(early);
+        EXPECT_NE(at, std::string::npos) << "'" << early << "' is gone from " << file;
+        if (at != std::string::npos) text.erase(at, early.size());
+    }
+    std::ofstream(root / file) << text << "layout(std430, binding = " << kInvocationCountBinding
+                               << ") buffer TestCount { uint testInvocations; };\n"
+                                  "void main() {\n    atomicAdd(testInvocations, 1u);\n    countedMain();\n}\n";
+    return root;
+}
+
+// The buffer countingShaders' programs add to, bound at kInvocationCountBinding by reset().
+class InvocationCounter {
+public:
+    InvocationCounter() { glNamedBufferStorage(buffer_.id(), sizeof(GLuint), nullptr, GL_DYNAMIC_STORAGE_BIT); }
+    void reset() const {
+        const GLuint zero = 0;
+        glNamedBufferSubData(buffer_.id(), 0, sizeof zero, &zero);
+        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kInvocationCountBinding, buffer_.id());
+    }
+    long long read() const {
+        GLuint n = 0;
+        glGetNamedBufferSubData(buffer_.id(), 0, sizeof n, &n);
+        return static_cast<long long>(n);
+    }
+
+private:
+    gl::Buffer buffer_;
+};
+
+// A depth-stencil (or depth) texture's depth and stencil, `size` pixels, rows from the bottom.
+inline std::vector<float> readDepth(const gl::Texture& texture, glm::ivec2 size) {
+    std::vector<float> depth(static_cast<std::size_t>(size.x) * size.y);
+    glGetTextureImage(texture.id(), 0, GL_DEPTH_COMPONENT, GL_FLOAT, static_cast<GLsizei>(depth.size() * sizeof(float)),
+                      depth.data());
+    return depth;
+}
+inline std::vector<GLubyte> readStencil(const gl::Texture& texture, glm::ivec2 size) {
+    std::vector<GLubyte> stencil(static_cast<std::size_t>(size.x) * size.y);
+    glGetTextureImage(texture.id(), 0, GL_STENCIL_INDEX, GL_UNSIGNED_BYTE, static_cast<GLsizei>(stencil.size()),
+                      stencil.data());
+    return stencil;
+}
+
+
 }  // namespace planet::test

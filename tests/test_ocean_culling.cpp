@@ -228,62 +228,38 @@ TEST_F(OceanCulling, TheDarkFloorsThresholdHoldsOnTheHeightField) {
 // to fail: without `early_fragment_tests` llvmpipe tests the stencil after a shader that writes
 // memory has run, and the copy counts every pixel of the rectangle (checked below).
 TEST_F(OceanCulling, TheSeasLightRunsOncePerSeaPixel) {
-    const std::string early = "layout(early_fragment_tests) in;";
-    const std::string counting = "layout(std430, binding = 15) buffer TestCount { uint testInvocations; };\n"
-                                 "void main() {\n    atomicAdd(testInvocations, 1u);\n    seaLight();\n}\n";
-    auto countingCopy = [&](const std::string& name, bool earlyTests) {
-        const std::filesystem::path root =
-            test::shadersWith(name, "ocean/sea_light.frag", "void main() {", "void seaLight() {");
-        std::ofstream(root / "ocean/sea_light.frag", std::ios::app) << counting;
-        if (!earlyTests) {  // the same file without the early test
-            std::ifstream in(root / "ocean/sea_light.frag");
-            std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-            const std::size_t at = text.find(early);
-            EXPECT_NE(at, std::string::npos);
-            if (at != std::string::npos) text.erase(at, early.size());
-            std::ofstream(root / "ocean/sea_light.frag") << text;
-        }
-        return root;
-    };
-    gl::Buffer count;
-    glNamedBufferStorage(count.id(), sizeof(GLuint), nullptr, GL_DYNAMIC_STORAGE_BIT);
-    const std::filesystem::path withEarly = countingCopy("planet_test_sea_light_counted", true);
-    const std::filesystem::path withoutEarly = countingCopy("planet_test_sea_light_counted_late", false);
+    const test::InvocationCounter counter;
+    const std::filesystem::path withEarly =
+        test::countingShaders("planet_test_sea_light_counted", "ocean/sea_light.frag", true);
+    const std::filesystem::path withoutEarly =
+        test::countingShaders("planet_test_sea_light_counted_late", "ocean/sea_light.frag", false);
     for (const std::string view : {"orbit", "beach"}) {
         SCOPED_TRACE(view);
         Session s = loadSession(test::repoPaths(), "earth", view);
         s.scene.render.temporal = false;
         auto invocations = [&](const std::filesystem::path& root, long long& marked) {
             Renderer r(root, atmosphere::TableSizes::reduced(), s.continents);
-            const GLuint zero = 0;
-            glNamedBufferSubData(count.id(), 0, sizeof zero, &zero);
-            glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 15, count.id());
+            counter.reset();
             r.render(s.scene, s.camera, kSize);
-            GLuint n = 0;
-            glGetNamedBufferSubData(count.id(), 0, sizeof n, &n);
             // The light writes the reflected ray (a unit vector) at every sea pixel, 0 elsewhere.
             const ImageRGBAF reflection = readTextureRGBAF(r.targets().seaReflection(), kSize.x, kSize.y);
             marked = 0;
-            for (std::size_t i = 0; i < reflection.pixels.size(); i += 4)
-                marked += reflection.pixels[i] != 0.0f || reflection.pixels[i + 1] != 0.0f || reflection.pixels[i + 2] != 0.0f;
-            const std::size_t pixels = static_cast<std::size_t>(kSize.x) * kSize.y;
-            std::vector<GLubyte> stencil(pixels);
-            std::vector<float> depth(pixels), seabed(pixels);
-            glGetTextureImage(r.targets().gbuffer().depth.id(), 0, GL_STENCIL_INDEX, GL_UNSIGNED_BYTE,
-                              static_cast<GLsizei>(stencil.size()), stencil.data());
-            glGetTextureImage(r.targets().gbuffer().depth.id(), 0, GL_DEPTH_COMPONENT, GL_FLOAT,
-                              static_cast<GLsizei>(depth.size() * sizeof(float)), depth.data());
-            glGetTextureImage(r.targets().seabedDepth().id(), 0, GL_DEPTH_COMPONENT, GL_FLOAT,
-                              static_cast<GLsizei>(seabed.size() * sizeof(float)), seabed.data());
+            for (std::size_t i = 0; i < reflection.pixels.size(); i += 4) {
+                const float* ray = &reflection.pixels[i];
+                marked += ray[0] != 0.0f || ray[1] != 0.0f || ray[2] != 0.0f;
+            }
+            const std::vector<GLubyte> stencil = test::readStencil(r.targets().gbuffer().depth, kSize);
+            const std::vector<float> depth = test::readDepth(r.targets().gbuffer().depth, kSize);
+            const std::vector<float> seabed = test::readDepth(r.targets().seabedDepth(), kSize);
             long long stencilled = 0, markedWithoutSea = 0;
-            for (std::size_t i = 0; i < pixels; ++i) {
+            for (std::size_t i = 0; i < stencil.size(); ++i) {
                 if (stencil[i] != OceanPass::kSeaStencil) continue;
                 ++stencilled;
                 markedWithoutSea += depth[i] == seabed[i];
             }
             EXPECT_EQ(stencilled, marked);
             EXPECT_EQ(markedWithoutSea, 0);
-            return static_cast<long long>(n);
+            return counter.read();
         };
         long long marked = 0, markedLate = 0;
         const long long once = invocations(withEarly, marked);

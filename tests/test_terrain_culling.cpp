@@ -225,29 +225,12 @@ TEST_F(TerrainCulling, TheDetailsRingsDrawTheSamePixelsAsTheDetailEverywhere) {
 // without `early_fragment_tests` (the shader then writes memory, and llvmpipe tests the stencil
 // after it ran) each build runs on every pixel of the rectangle (checked below).
 TEST_F(TerrainCulling, TheGroundsMaterialRunsOncePerGroundPixel) {
-    const std::string early = "layout(early_fragment_tests) in;";
-    const std::string counting = "layout(std430, binding = 15) buffer TestCount { uint testInvocations; };\n"
-                                 "void main() {\n    atomicAdd(testInvocations, 1u);\n    groundMaterial();\n}\n";
-    auto countingCopy = [&](const std::string& name, bool earlyTests) {
-        const std::filesystem::path root = test::shadersWith(name, "terrain/ground_material.frag", "void main() {",
-                                                             "void groundMaterial() {");
-        const std::filesystem::path file = root / "terrain/ground_material.frag";
-        std::ifstream in(file);
-        std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-        in.close();
-        if (!earlyTests) {
-            const std::size_t at = text.find(early);
-            EXPECT_NE(at, std::string::npos);
-            if (at != std::string::npos) text.erase(at, early.size());
-        }
-        std::ofstream(file) << text << counting;
-        return root;
-    };
     const glm::ivec2 size{160, 90};
-    gl::Buffer count;
-    glNamedBufferStorage(count.id(), sizeof(GLuint), nullptr, GL_DYNAMIC_STORAGE_BIT);
-    const std::filesystem::path withEarly = countingCopy("planet_test_ground_material_counted", true);
-    const std::filesystem::path withoutEarly = countingCopy("planet_test_ground_material_counted_late", false);
+    const test::InvocationCounter counter;
+    const std::filesystem::path withEarly =
+        test::countingShaders("planet_test_ground_material_counted", "terrain/ground_material.frag", true);
+    const std::filesystem::path withoutEarly =
+        test::countingShaders("planet_test_ground_material_counted_late", "terrain/ground_material.frag", false);
     for (const std::string view : {"ground", "orbit"}) {
         SCOPED_TRACE(view);
         Session s = loadSession(test::repoPaths(), "earth", view);
@@ -255,26 +238,17 @@ TEST_F(TerrainCulling, TheGroundsMaterialRunsOncePerGroundPixel) {
         s.scene.terrain.ocean = false;  // the stencil left as the terrain marked it
         auto invocations = [&](const std::filesystem::path& root, long long& ground, bool& detailed) {
             Renderer r(root, atmosphere::TableSizes::reduced(), s.continents);
-            const GLuint zero = 0;
-            glNamedBufferSubData(count.id(), 0, sizeof zero, &zero);
-            glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 15, count.id());
+            counter.reset();
             r.render(s.scene, s.camera, size);
-            GLuint n = 0;
-            glGetNamedBufferSubData(count.id(), 0, sizeof n, &n);
             const ImageRGBAF normal = readTextureRGBAF(r.targets().gbuffer().normal, size.x, size.y);
             ground = 0;
             for (std::size_t i = 0; i < normal.pixels.size(); i += 4)
                 ground += normal.pixels[i] != 0.0f || normal.pixels[i + 1] != 0.0f || normal.pixels[i + 2] != 0.0f;
             detailed = r.terrain().detailDrawn();
-            const std::size_t pixels = static_cast<std::size_t>(size.x) * size.y;
-            std::vector<GLubyte> stencil(pixels);
-            std::vector<float> depth(pixels);
-            glGetTextureImage(r.targets().gbuffer().depth.id(), 0, GL_STENCIL_INDEX, GL_UNSIGNED_BYTE,
-                              static_cast<GLsizei>(stencil.size()), stencil.data());
-            glGetTextureImage(r.targets().gbuffer().depth.id(), 0, GL_DEPTH_COMPONENT, GL_FLOAT,
-                              static_cast<GLsizei>(depth.size() * sizeof(float)), depth.data());
+            const std::vector<GLubyte> stencil = test::readStencil(r.targets().gbuffer().depth, size);
+            const std::vector<float> depth = test::readDepth(r.targets().gbuffer().depth, size);
             long long plain = 0, withDetail = 0, drawn = 0;
-            for (std::size_t i = 0; i < pixels; ++i) {
+            for (std::size_t i = 0; i < stencil.size(); ++i) {
                 plain += stencil[i] == TerrainPass::kPlainStencil;
                 withDetail += stencil[i] == TerrainPass::kDetailedStencil;
                 drawn += depth[i] > 0.0f;
@@ -282,7 +256,7 @@ TEST_F(TerrainCulling, TheGroundsMaterialRunsOncePerGroundPixel) {
             EXPECT_EQ(plain + withDetail, ground);
             EXPECT_EQ(drawn, ground);
             EXPECT_EQ(withDetail > 0, r.terrain().detailDrawn());
-            return static_cast<long long>(n);
+            return counter.read();
         };
         long long ground = 0, groundLate = 0;
         bool detailed = false, detailedLate = false;
