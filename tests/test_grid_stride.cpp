@@ -157,6 +157,7 @@ protected:
         renderer->terrain().setStrideOverride(stride);
         renderer->ocean().setStrideOverride(stride);
         renderer->ocean().setCountPrimitives(true);
+        renderer->ocean().setFarFieldAllowed(false);  // the sea's mesh, not its far field's per-pixel draw
         renderer->terrain().setStatistics(true);
         renderer->render(s.scene, s.camera, size);
         return readTextureRGBAF(renderer->targets().hdr(), size.x, size.y);

@@ -107,9 +107,12 @@ TEST_F(OceanCulling, WhereTheWavesCannotShowTheSeaTakesLargerTriangles) {
     // view's foreground) the waves show and the mesh stays as fine. Against the same shaders with
     // the factor at 1 (the fixed target).
     const std::filesystem::path fixedTarget =
-        test::shadersWith("planet_ocean_fixed_target", "ocean/edge_target.glsl", "const float OCEAN_FAR_EDGE_FACTOR = 4.0;",
+        test::shadersWith("planet_ocean_fixed_target", "grid/constants.glsl", "const float OCEAN_FAR_EDGE_FACTOR = 4.0;",
                           "const float OCEAN_FAR_EDGE_FACTOR = 1.0;");
     Renderer fixed(fixedTarget, atmosphere::TableSizes::reduced());
+    // The mesh itself, also where the whole sea is its far field (src/ocean/far_field.h).
+    renderer->ocean().setFarFieldAllowed(false);
+    fixed.ocean().setFarFieldAllowed(false);
     // At 160x90 the grid's patches from orbit span under 8 pixels: already one triangle pair each.
     const glm::ivec2 size{640, 360};
     for (const std::string view : {"orbit", "space", "sea"}) {

@@ -64,6 +64,11 @@ TEST(ShadersOffline, EveryStageValidatesWithGlslang) {
             const std::size_t n = variants.size();
             for (std::size_t i = 0; i < n; ++i) variants.push_back(variants[i] + "#define OCEAN_SMOOTH_MIRROR 1\n");
         }
+        // The ocean mesh's fragments in their far-field build (src/ocean/ocean_pass.cpp: OCEAN_FAR_FIELD 1).
+        if (expanded.text.find("#if !OCEAN_FAR_FIELD") != std::string::npos) {
+            const std::size_t n = variants.size();
+            for (std::size_t i = 0; i < n; ++i) variants.push_back(variants[i] + "#define OCEAN_FAR_FIELD 1\n");
+        }
         // The surface light's program for the sea floor's dark depths (src/render/renderer.cpp: SEA_FLOOR_DARK 1).
         if (expanded.text.find("#if SEA_FLOOR_DARK") != std::string::npos ||
             expanded.text.find("#if !SEA_FLOOR_DARK") != std::string::npos) {

@@ -17,3 +17,18 @@ const float TERRAIN_MAX_SAG_M = 1000.0;
 // The grid's spacing at its centre against the even one (src/grid/projected_grid.h's
 // gridVertexCoordinate, terrain/grid.glsl's gridCoordinateAt).
 const float GRID_CENTRE_DENSITY = 0.05;
+
+// Michelic Eq. 2's exponent n for the ocean's grid (src/ocean/ocean_pass.cpp; terrain/grid.glsl's
+// gridPointOf is written for it).
+const int OCEAN_GRID_EXPONENT = 4;
+
+// The ocean mesh's far edges (ocean/edge_target.glsl): where even the highest crest spans under
+// WAVE_VISIBLE_PIXELS on screen, its edges aim at up to OCEAN_FAR_EDGE_FACTOR times the target.
+const float WAVE_VISIBLE_PIXELS = 0.25;
+const float OCEAN_FAR_EDGE_FACTOR = 4.0;
+
+// The chord sag, m, over which ocean/ocean.frag moves from the mesh's point to the sphere's (its
+// "farness" rises from 0 to 1 between the two): beyond the second the mesh only says which
+// pixels are sea (src/ocean/far_field.h).
+const float OCEAN_NEAR_FIELD_SAG_M = 0.05;
+const float OCEAN_FAR_FIELD_SAG_M = 0.5;

@@ -12,8 +12,7 @@
 // fragments 158 -> 109 ms with 24-pixel triangles). ocean.tesc aims each edge at the target of
 // its nearer end; ocean.frag bounds its mesh's sag by the target at its own distance (no nearer
 // than the edge's nearer end, so no smaller).
-const float WAVE_VISIBLE_PIXELS = 0.25;
-const float OCEAN_FAR_EDGE_FACTOR = 4.0;
+#include "grid/constants.glsl"  // WAVE_VISIBLE_PIXELS, OCEAN_FAR_EDGE_FACTOR
 float oceanEdgeTargetPixels(float distanceM) {
     float wavePixels = 2.0 * ocean.maxWaveHeight / distanceM / radiansPerPixel();
     return ocean.targetEdgePixels * clamp(WAVE_VISIBLE_PIXELS / max(wavePixels, 1e-9), 1.0, OCEAN_FAR_EDGE_FACTOR);

@@ -1,6 +1,6 @@
 // The ocean mesh's fragments: which pixels show the sea and where its water is, into the sea
 // surface's G-buffer (ocean/sea_surface.glsl), the surface distance target and the depth, with
-// the stencil set to 1 where the sea is the nearest surface. The water's light is
+// the stencil marked (OceanPass::kSeaStencil) where the sea is the nearest surface. The water's light is
 // ocean/sea_light.frag's, once per such pixel over the whole frame: a software renderer shades a
 // 4x4 block for every triangle that touches it, two to three times the pixels (see there).
 //
@@ -23,10 +23,25 @@
 #include "terrain/terrain_block.glsl"
 #include "ocean/sea_surface.glsl"
 
+// OCEAN_FAR_FIELD 1: the build for a camera so high that every sea pixel is in the far field
+// (src/ocean/far_field.h), drawn over the ground sphere's rectangle instead of the mesh: each
+// pixel's point is where its ray meets the sphere, which the mesh's fragments take there anyway
+// (farness 1, below), once per pixel rather than once per triangle's 4x4 blocks, and with no
+// vertex or tessellation work. What differs from the mesh's: the depth is the sphere's point's
+// pulled by the sag (not the chord's), the direction offset is formed in float (no wave shows),
+// and the place on the grid is the pixel's own (terrain/grid.glsl's gridPointOf), not one
+// interpolated across a triangle (tests/test_ocean_far_field.cpp: the frames agree to 0.02 % on
+// average).
+#ifndef OCEAN_FAR_FIELD
+#define OCEAN_FAR_FIELD 0
+#endif
+
+#if !OCEAN_FAR_FIELD
 in vec3 tePosition;
 in vec3 teDirection;
 in vec3 teOffset;
 in vec2 teGridPoint;  // the place on the grid in point indices, for the grid's reflection (ocean/grid_reflection_points.glsl)
+#endif
 
 layout(binding = UNIT_SEABED_DEPTH) uniform sampler2D seabedDepth;  // copy of the G-buffer depth (reversed-Z)
 
@@ -41,11 +56,29 @@ const float SHORE_FADE_M = 0.5;  // water path over which the sea fades in at th
 
 void main() {
     ivec2 pixel = ivec2(gl_FragCoord.xy);
+#if OCEAN_FAR_FIELD
+    // The sphere's point on the pixel's ray; a ray past the limb takes the horizon's distance, only
+    // for its neighbours' derivatives (it is discarded below).
+    vec3 view = pixelRay(pixel);
+    float sphereDistance = seaSphereDistance(view);
+    float aboveSea = -frame.cameraDepthBelowSea;
+    float horizon = sqrt(max(aboveSea * (2.0 * (frame.planetRadius + ocean.seaLevel) + aboveSea), 0.0));
+    vec3 tePosition = view * (sphereDistance > 0.0 ? sphereDistance : horizon);
+#endif
     // The surface's step from this pixel to the next, taken before any discard (derivatives
     // need the whole quad): how far the water's depth changes across the pixel (the shore's
     // coverage below).
     vec3 stepX = dFdx(tePosition);
     vec3 stepY = dFdy(tePosition);
+#if OCEAN_FAR_FIELD
+    if (sphereDistance <= 0.0) discard;
+    float surfaceDistance = sphereDistance;
+    vec3 up = normalize(cameraFromPlanetCentreKm() * M_PER_KM + tePosition);
+    vec3 teOffset = up - frame.cameraUp;  // v - v_c (the mesh's is formed in double: no wave shows here)
+    float sag = meshSagM(surfaceDistance, max(ocean.coarsestEdgePixels, oceanEdgeTargetPixels(surfaceDistance)));
+    float farness = 1.0;
+    float seaDistance = surfaceDistance;
+#else
     float surfaceDistance = length(tePosition);
     vec3 view = tePosition / surfaceDistance;  // camera -> surface
     vec3 up = normalize(teDirection);
@@ -57,13 +90,14 @@ void main() {
     // chord's. The mesh still decides which pixels are sea, and their depth. Near the camera,
     // where the sag is nothing, the mesh's point (with its waves) stays.
     float sag = meshSagM(surfaceDistance, max(ocean.coarsestEdgePixels, oceanEdgeTargetPixels(surfaceDistance)));
-    float farness = smoothstep(0.05, 0.5, sag);
+    float farness = smoothstep(OCEAN_NEAR_FIELD_SAG_M, OCEAN_FAR_FIELD_SAG_M, sag);
     float seaDistance = surfaceDistance;
     float sphereDistance = seaSphereDistance(view);
     if (farness > 0.0 && sphereDistance > 0.0) {
         seaDistance = mix(surfaceDistance, sphereDistance, farness);
         up = normalize(mix(up, normalize(cameraFromPlanetCentreKm() * M_PER_KM + view * sphereDistance), farness));
     }
+#endif
 
     // What is not seen is not shaded (issue 15), with tests that give the same pixels as
     // shading it would: ground surely above the highest crest (the continent value alone,
@@ -125,6 +159,9 @@ void main() {
     // that enters the sea over the shelf, changed the `beach` frame by up to 0.08 %: not kept.)
     float meshPath = seabed > 0.0 ? max(seabedDistance - surfaceDistance, 0.0) : depthPath;
     outSurfaceDistance = behindLand ? seabedDistance : seaDistance;  // mostly the land's pixel
+#if OCEAN_FAR_FIELD
+    vec2 teGridPoint = gridPointOf(up);  // only for the pixels that stay
+#endif
     SeaSurface surface = SeaSurface(up, waterDepth, teOffset, seaDistance, coverage, behindLand,
                                     mix(meshPath, depthPath, farness), teGridPoint);
     packSeaSurface(surface, outSeaSurface0, outSeaSurface1, outSeaSurface2);

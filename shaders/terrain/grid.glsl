@@ -65,6 +65,51 @@ vec2 gridCoordinateAt(vec2 index) {
     return g * (GRID_CENTRE_DENSITY + (1.0 - GRID_CENTRE_DENSITY) * m * (2.0 - m));
 }
 
+// The place on the ocean's grid (exponent OCEAN_GRID_EXPONENT, 4), in point indices, whose
+// direction from the planet centre is the unit `direction` (world axes): gridDirection and
+// gridCoordinateAt inverted, for a pass that finds its point by the pixel's ray rather than by the
+// mesh (ocean/ocean.frag's far field). In the grid's frame the direction is (gx, gy, H(g) + z_s) / s
+// for some s > 0 (Eq. 2-4), and s l_z - H(s l) - z_s grows with s from below 0 at z_s / l_z to
+// above 0 where H = 1 or where |s l| reaches the grid's edge: bisections keep it bracketed, Newton's
+// steps then make it exact to float (8 and 3 reach 1e-11 over z_s in (0, 20] in double; 24
+// bisections alone 1e-8). Then gridCoordinateAt's warp m (c + (1 - c) m (2 - m)) of the largest
+// coordinate m, increasing on [0, 1], by Newton from m = G / c (1e-13 in 6 steps). Only where
+// z_s > 0 (the grid seen from above the cap it covers, src/grid/projected_grid.cpp). The exponent
+// is a constant and the loops' counts too: a software renderer runs a loop of a uniform's count
+// with a mask test per step, and this ran at 20 ms a frame from orbit with the block's exponent.
+vec2 gridPointOf(vec3 direction) {
+    vec3 l = transpose(mat3(worldFromGrid())) * direction;
+    float zs = float(grid.zShift);
+    float lz = max(l.z, 1e-20);
+    float ax = abs(l.x), ay = abs(l.y);
+    float lo = zs / lz, hi = min((1.0 + zs) / lz, 1.0 / max(max(ax, ay), 1e-20));
+    for (int i = 0; i < 8; ++i) {
+        float s = 0.5 * (lo + hi);
+        vec2 g2 = vec2(s * ax, s * ay);
+        g2 = min(g2, 1.0);
+        g2 *= g2;
+        float hemisphere = (1.0 - g2.x * g2.x) * (1.0 - g2.y * g2.y);  // Eq. 2, n = 4
+        if (s * lz - hemisphere - zs > 0.0) hi = s;
+        else lo = s;
+    }
+    float s = 0.5 * (lo + hi);
+    for (int i = 0; i < 3; ++i) {
+        vec2 g = min(vec2(s * ax, s * ay), 1.0);
+        vec2 g3 = g * g * g;
+        vec2 oneMinus = 1.0 - g3 * g;
+        float slope = lz + 4.0 * (g3.x * ax * oneMinus.y + oneMinus.x * g3.y * ay);
+        s = clamp(s - (s * lz - oneMinus.x * oneMinus.y - zs) / max(slope, 1e-20), lo, hi);
+    }
+    vec2 g = s * l.xy;
+    const float c = GRID_CENTRE_DENSITY;
+    float largest = min(max(abs(g.x), abs(g.y)), 1.0);
+    float m = min(largest / c, 1.0);
+    for (int i = 0; i < 6; ++i)
+        m = clamp(m - (m * (c + (1.0 - c) * m * (2.0 - m)) - largest) / (c + (1.0 - c) * m * (4.0 - 3.0 * m)), 0.0, 1.0);
+    vec2 unwarped = g / (c + (1.0 - c) * m * (2.0 - m));
+    return (unwarped + 1.0) * 0.5 * float(grid.pointsPerSide - 1);
+}
+
 // A patch's place at the tessellation coordinate `uv`, in point indices: between its first and
 // third corners' grid points (`first`, `third`: tcPoint[0] and [2]).
 vec2 patchGridPoint(ivec2 first, ivec2 third, vec2 uv) { return vec2(first) + uv * vec2(third - first); }

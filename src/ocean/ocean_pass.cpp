@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <vector>
 
+#include "grid/constants.h"
+#include "ocean/far_field.h"
 #include "ocean/flat_mirror.h"
 #include "ocean/ocean_block.h"
 #include "ocean/ocean_gpu.h"
@@ -13,7 +15,7 @@
 namespace planet {
 
 namespace {
-constexpr int kGridExponent = 4;  // Michelic Eq. 2's n for the ocean grid
+constexpr int kGridExponent = grid_constant::OCEAN_GRID_EXPONENT;  // Michelic Eq. 2's n for the ocean grid
 
 double seaRadiusM(const Scene& scene) { return scene.planetRadiusM() + scene.ocean.sea_level_m; }
 
@@ -26,6 +28,8 @@ constexpr int kGridReflectionGroup = 64;  // ocean/grid_reflection.comp's local_
 OceanPass::OceanPass(const gl::ShaderSources& sources, const atmosphere::TableSizes& tables)
     : surface_(sources,
                gl::ProgramDesc{"ocean", {"ocean/ocean.vert", "ocean/ocean.tesc", "ocean/ocean.tese", "ocean/ocean.frag"}}),
+      farFieldSurface_(gl::ShaderSources{sources.root, sources.preamble + "#define OCEAN_FAR_FIELD 1\n"},
+                       gl::ProgramDesc{"ocean, far field", {"common/fullscreen.vert", "ocean/ocean.frag"}}),
       light_(sources, tables, gl::ProgramDesc{"sea light", {"common/fullscreen.vert", "ocean/sea_light.frag"}},
              {"OCEAN_FLAT_MIRROR", "UNDER_WATER", "OCEAN_SMOOTH_MIRROR"}),
       gridReflectionProgram_(sources, tables, gl::ProgramDesc{"ocean grid reflection", {"ocean/grid_reflection.comp"}},
@@ -90,6 +94,8 @@ void OceanPass::prepare(const Scene& scene, const Camera& camera, double radians
     block.landCulling = landCulling_ && landContinent_ <= 1.0 ? 1 : 0;
     glNamedBufferSubData(block_.id(), 0, sizeof block, &block);
     const double height = glm::length(camera.position) - radius;
+    farField_ = farFieldAllowed_ && ocean::seaIsFarField(height, radiansPerPixel, maxHeight, scene.ocean.target_edge_px,
+                                                         block.coarsestEdgePixels, scene.planetRadiusM());
     smoothMirror_ = flatMirrorMode_ == FlatMirror::Auto ? ocean::seaIsASmoothMirror(scene.waves, height, radiansPerPixel)
                                                         : flatMirrorMode_ == FlatMirror::Smooth;
     flatMirror_ = smoothMirror_ || (flatMirrorMode_ == FlatMirror::Auto
@@ -101,7 +107,7 @@ void OceanPass::prepare(const Scene& scene, const Camera& camera, double radians
 void OceanPass::bindBlock() const { glBindBufferBase(GL_UNIFORM_BUFFER, binding::BLOCK_OCEAN, block_.id()); }
 
 std::vector<gl::HotProgram*> OceanPass::builtPrograms() {
-    std::vector<gl::HotProgram*> programs{&surface_};
+    std::vector<gl::HotProgram*> programs{&surface_, &farFieldSurface_};
     for (AtmosphereProgram* a : atmospherePrograms())
         for (gl::HotProgram* p : a->built()) programs.push_back(p);
     return programs;
@@ -134,12 +140,20 @@ void OceanPass::bindWavesAndBlock() const {
     bindBlock();
 }
 
-void OceanPass::drawSurface() {
+void OceanPass::drawSurface(const std::function<void()>& drawFarField) {
     bindWavesAndBlock();
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_GREATER);  // reversed-Z
     glDepthMask(GL_TRUE);
     glDisable(GL_CULL_FACE);  // the surface is seen from below too
+    if (farField_) {
+        mesh_.bindBlock();  // the grid's projection: the place on the grid of each pixel's point
+        glUseProgram(farFieldSurface_.id());
+        drawFarField();
+        lastPrimitives_ = 0;
+        glDisable(GL_DEPTH_TEST);
+        return;
+    }
     glUseProgram(surface_.id());
     if (countPrimitives_) glBeginQuery(GL_PRIMITIVES_GENERATED, primitives_.id());
     mesh_.draw();

@@ -24,9 +24,10 @@
 // between a submerged camera and what it sees is the sky pass's (render/sky.frag).
 #pragma once
 
-#include "atmosphere/tables.h"
+#include <functional>
 #include <memory>
 
+#include "atmosphere/tables.h"
 #include "gl/handle.h"
 #include "gl/program.h"
 #include "grid/grid_mesh.h"
@@ -48,11 +49,18 @@ public:
     // `aspect`, the view's, for the grid's stride (grid/grid_stride.h).
     void prepare(const Scene& scene, const Camera& camera, double radiansPerPixel, double aspect,
                  const std::shared_ptr<const noise::CubeMap>& continents);
-    // The sea's mesh into the bound targets (the surface distance and the sea surface's G-buffer:
-    // RenderTargets::seaSurfaceFramebuffer, the G-buffer's depth tested and written), reading the
-    // seabed depth's copy and the terrain's height field (the sea floor); the stencil's ops are the
-    // caller's (it marks the pixels where a fragment is written).
-    void drawSurface();
+    // The sea's surface into the bound targets (the surface distance and the sea surface's
+    // G-buffer: RenderTargets::seaSurfaceFramebuffer, the G-buffer's depth tested and written),
+    // reading the seabed depth's copy and the terrain's height field (the sea floor); the stencil's
+    // ops are the caller's (it marks the pixels where a fragment is written). `drawFarField` draws
+    // a full-screen triangle over the pixels that may show the sea (the ground sphere's rectangle):
+    // called, with the far field's program bound, where the whole sea is the far field
+    // (farField(), src/ocean/far_field.h); else the mesh is drawn.
+    void drawSurface(const std::function<void()>& drawFarField);
+    // Whether the last prepare() found every sea pixel in the far field (and it is allowed).
+    bool farField() const { return farField_; }
+    // Tests: the far field's per-pixel draw allowed (the default) or not (the mesh always).
+    void setFarFieldAllowed(bool on) { farFieldAllowed_ = on; }
     // Binds the program for the water's light (ocean/sea_light.frag) of the frame's variant (the
     // table in use, the clouds' far field) and the sea's buffers, first forming the grid's
     // reflection where the sea is a flat or smooth mirror; the caller draws its full-screen
@@ -111,6 +119,9 @@ private:
     void formGridReflection(const AtmosphereVariant& variant);
 
     gl::HotProgram surface_;    // the mesh (ocean/ocean.vert, .tesc, .tese, .frag)
+    gl::HotProgram farFieldSurface_;  // ocean/ocean.frag's OCEAN_FAR_FIELD build, per pixel
+    bool farField_ = false;
+    bool farFieldAllowed_ = true;
     AtmosphereProgram light_;  // modes OCEAN_FLAT_MIRROR, UNDER_WATER (the surface seen from below), OCEAN_SMOOTH_MIRROR
     FlatMirror flatMirrorMode_ = FlatMirror::Auto;
     bool flatMirror_ = false;

@@ -289,7 +289,10 @@ std::vector<Renderer::Pass> Renderer::makePasses() {
                           glBindTextureUnit(binding::UNIT_SEABED_DEPTH, targets_.seabedDepth().id());
                           stencilMark(OceanPass::kSeaStencil);
                           glBeginQuery(GL_ANY_SAMPLES_PASSED, oceanDrew_.id());
-                          ocean_.drawSurface();
+                          ocean_.drawSurface([this] {
+                              glBindVertexArray(emptyVertexArray_.id());
+                              drawScissored(lastPrepare_.groundBound, targets_.size());  // the sea lies within it
+                          });
                           glEndQuery(GL_ANY_SAMPLES_PASSED);
                           stencilTest(OceanPass::kSeaStencil);
                           glBindFramebuffer(GL_FRAMEBUFFER, targets_.oceanFramebuffer());
