@@ -48,6 +48,8 @@ TEST(ShadersOffline, EveryStageValidatesWithGlslang) {
         if (expanded.text.find("#ifdef STILL_FRAME") != std::string::npos) {
             const std::size_t n = variants.size();
             for (std::size_t i = 0; i < n; ++i) variants.push_back(variants[i] + "#define STILL_FRAME\n");
+            if (expanded.text.find("#ifdef STILL_FRAME_UNJITTERED") != std::string::npos)
+                for (std::size_t i = 0; i < n; ++i) variants.push_back(variants[i] + "#define STILL_FRAME_UNJITTERED 1\n");
         }
         // The programs for a camera under the sea (sky and ocean: UNDER_WATER 1).
         if (expanded.text.find("#ifndef UNDER_WATER") != std::string::npos) {

@@ -182,7 +182,9 @@ TEST_F(Temporal, AStillFrameRunsTheStillProgramAndItIsTheGeneralOnesImage) {
     // after a first frame at full rate (stills, sequences) or reconstructed from its samples
     // alone (the explorer's reset: its pixels hold no sample of their own until traced); and
     // with the explorer's anti-aliasing moving its sub-pixel jitter every frame, where a pixel at
-    // an edge sees another surface from frame to frame (space: the limb). Not when the clock ran
+    // an edge sees another surface from frame to frame (space: the limb). Without the jitter, its
+    // build for a jitter that stood (STILL_FRAME_UNJITTERED), with it the one that tests each
+    // pixel's surface against its history's. Not when the clock ran
     // (but from high above the clouds, where their drift is far under a pixel).
     const glm::ivec2 size{64, 36};
     for (const char* view : {"cumulus", "space", "clouds"}) {
@@ -198,6 +200,7 @@ TEST_F(Temporal, AStillFrameRunsTheStillProgramAndItIsTheGeneralOnesImage) {
             still.render(s.scene, s.camera, size);
             general.render(s.scene, s.camera, size);
             ASSERT_EQ(still.lastPrepare().stillFrame, frame > 0) << view << " frame " << frame;
+            ASSERT_EQ(still.lastPrepare().jitterStood, frame > 0) << view << " frame " << frame;  // STILL_FRAME_UNJITTERED
             ASSERT_EQ(still.lastPrepare().reducedRate, frame > 0 || !fullRateOnReset);
             const ImageRGBAF a = hdrOf(still, size), b = hdrOf(general, size);
             for (std::size_t i = 0; i < a.pixels.size(); ++i) differing += a.pixels[i] != b.pixels[i];
@@ -210,6 +213,7 @@ TEST_F(Temporal, AStillFrameRunsTheStillProgramAndItIsTheGeneralOnesImage) {
                 r->render(s.scene, s.camera, size);
             }
             ASSERT_TRUE(still.lastPrepare().stillFrame) << view << " jittered frame " << frame;
+            ASSERT_FALSE(still.lastPrepare().jitterStood) << view << " jittered frame " << frame;  // STILL_FRAME
             const ImageRGBAF a = hdrOf(still, size), b = hdrOf(general, size);
             for (std::size_t i = 0; i < a.pixels.size(); ++i) differingJittered += a.pixels[i] != b.pixels[i];
             const ImageRGBAF now = readTextureRGBAF(still.targets().surfaceDistance(), size.x, size.y);

@@ -169,7 +169,7 @@ Renderer::Renderer(const std::filesystem::path& shaderRoot, const atmosphere::Ta
                  gl::ProgramDesc{"sky march", {"common/fullscreen.vert", "render/sky_sparse.frag"}}),
       skyTemporal_(sources_, programTables_,
                    gl::ProgramDesc{"sky temporal", {"common/fullscreen.vert", "render/sky_temporal.frag"}},
-                   {"STILL_FRAME"}),
+                   {"STILL_FRAME", "STILL_FRAME_UNJITTERED"}),
       skyRefine_(sources_, programTables_, gl::ProgramDesc{"sky refine", {"render/sky_refine.comp"}}, {"STILL_FRAME"}),
       skySpace_(withAtmosphere(sources_, programTables_), "sky space", "render/sky_space.frag"),
       antialias_(sources_, "antialias", "render/antialias.frag"),
@@ -454,7 +454,9 @@ std::vector<Renderer::Pass> Renderer::makePasses() {
                           glBindTextureUnit(binding::UNIT_HISTORY_SURFACE_DISTANCE, history.surfaceDistance.id());
                           glBindVertexArray(emptyVertexArray_.id());
                           drawSpaceAround(lastPrepare_.skyBound);
-                          glUseProgram(skyTemporal_.get(skyVariantFor(s), stillProgram() ? 1 : 0).id());
+                          // Modes: 1 STILL_FRAME, 2 STILL_FRAME_UNJITTERED (the jitter stood too).
+                          const int still = !stillProgram() ? 0 : lastPrepare_.jitterStood ? 2 : 1;
+                          glUseProgram(skyTemporal_.get(skyVariantFor(s), still).id());
                           drawScissored(lastPrepare_.skyBound, targets_.size());
                       },
                       [this] { return withPrograms(skyTemporal_.built(), {&skySpace_.program()}); }});
@@ -581,6 +583,7 @@ void Renderer::prepare(const Scene& scene, const Camera& camera, glm::ivec2 size
     // Nothing moved at the pixels' scale (the anti-aliasing's sub-pixel jitter may have: each
     // pixel's history is then its own texel all the same, render/sky_history.glsl).
     report.stillFrame = report.historyValid && uniforms.stillSincePrevious > 0.5f;  // the view stood too
+    report.jitterStood = report.historyValid && previous_ && previous_->jitterPx == frameJitterPx_;
     // The air's sphere (the preset's top: the model's may end lower, never higher), and the
     // ground's highest (the terrain's highest above the sea, the waves' crests well under the
     // kilometre added).

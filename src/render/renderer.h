@@ -112,6 +112,8 @@ struct PrepareReport {
     bool reducedRate = false;            // the sky was marched at the reduced rate (sky march, temporal, refine)
     bool stillFrame = false;             // with a history, nothing moved since it (but the jitter, maybe): the reconstruction's
                                          // still-frame program (render/sky_temporal.frag, STILL_FRAME)
+    bool jitterStood = false;            // with a history, the projection's sub-pixel jitter the same as its: in a
+                                         // still frame, that program's STILL_FRAME_UNJITTERED build
     bool underWater = false;             // the camera under the sea: the sky pass's and the ocean's UNDER_WATER programs
                                          // (render/sky.frag, ocean/sea_light.frag)
     bool cloudFarField = false;          // every footprint the clouds are seen with is the far field's: the programs
