@@ -226,7 +226,8 @@ TEST_F(OceanCulling, TheDarkFloorsThresholdHoldsOnTheHeightField) {
 // sea's pixels) and not on the rest of the ground's rectangle: a copy of the program that counts
 // its invocations (an atomic add into a buffer of the test's) counts exactly the pixels it wrote
 // (its reflected ray; the rest stays cleared to 0), with the early stencil test, and those are the
-// pixels the mesh marked (the stencil's OceanPass::kSeaStencil, read back), each where the sea's
+// pixels the mesh marked (from orbit the far field's per-pixel draw, src/ocean/far_field.h, which
+// marks them as the mesh does; the stencil's OceanPass::kSeaStencil, read back), each where the sea's
 // depth replaced the seabed's (a mark where the mesh drew nothing would fail that). Able
 // to fail: without `early_fragment_tests` llvmpipe tests the stencil after a shader that writes
 // memory has run, and the copy counts every pixel of the rectangle (checked below).

@@ -3,9 +3,13 @@
 // when (against the sag worked by hand in both of the edge target's regimes), the grid's inverse
 // that gives each pixel its place on the grid (terrain/grid.glsl's gridPointOf, on the GPU against
 // the places it came from), and the frames with and without it.
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
 #include <limits>
 #include <vector>
 
@@ -73,6 +77,37 @@ TEST(OceanFarField, BeginsWhereTheNearestChordSagsHalfAMetre) {
 namespace {
 
 class OceanFarFieldGpu : public test::GLTest {};
+
+// The lowest height above the sea at which seaIsFarField holds for `s`'s scene at `size` (bisection).
+double farFieldHeight(const Session& s, glm::ivec2 size) {
+    const double rpp = s.camera.fovY_rad / size.y;  // as src/render/renderer.cpp passes it
+    const auto far = [&](double h) {
+        return ocean::seaIsFarField(h, rpp, ocean::maxWaveHeight(s.scene.waves), s.scene.ocean.target_edge_px,
+                                    std::max(s.scene.terrain.target_edge_px, s.scene.ocean.target_edge_px),
+                                    s.scene.planetRadiusM());
+    };
+    double lo = 0.0, hi = 1e7;
+    for (int i = 0; i < 60; ++i) (far(0.5 * (lo + hi)) ? hi : lo) = 0.5 * (lo + hi);
+    return hi;
+}
+
+// A copy of the shaders whose ocean.frag counts, into test::InvocationCounter's buffer, the mesh's
+// fragments not wholly in the far field (farness < 1: their point is not only the sphere's).
+std::filesystem::path nearFragmentCountingShaders() {
+    const std::string farness = "    float farness = smoothstep(OCEAN_NEAR_FIELD_SAG_M, OCEAN_FAR_FIELD_SAG_M, sag);\n";
+    const std::filesystem::path root = test::shadersWith("planet_test_ocean_near_fragments", "ocean/ocean.frag", farness,
+                                                         farness + "    if (farness < 1.0) atomicAdd(testInvocations, 1u);\n");
+    std::stringstream read;
+    read << std::ifstream(root / "ocean/ocean.frag").rdbuf();
+    std::string text = read.str();
+    const std::string anchor = "const float SHORE_FADE_M";
+    const std::size_t at = text.find(anchor);
+    EXPECT_NE(at, std::string::npos);
+    text.insert(at, "layout(std430, binding = " + std::to_string(test::kInvocationCountBinding) +
+                        ") buffer TestCount { uint testInvocations; };\n");
+    std::ofstream(root / "ocean/ocean.frag") << text;
+    return root;
+}
 
 // The ocean's grid for `view`'s camera, as OceanPass::prepare makes it (stride 1).
 GridBlock oceanGridFor(const Session& s) {
@@ -145,17 +180,9 @@ TEST_F(OceanFarFieldGpu, TheFarFieldGivesTheMeshsFrame) {
         s.scene.render.temporal = false;
         if (view == "threshold") {
             const double radius = s.scene.planetRadiusM() + s.scene.ocean.sea_level_m;
-            const double rpp = s.camera.fovY_rad / size.y;
-            const double maxWave = ocean::maxWaveHeight(s.scene.waves);
-            const auto far = [&](double h) {
-                return ocean::seaIsFarField(h, rpp, maxWave, s.scene.ocean.target_edge_px,
-                                            std::max(s.scene.terrain.target_edge_px, s.scene.ocean.target_edge_px),
-                                            s.scene.planetRadiusM());
-            };
-            double lo = 0.0, hi = 1e7;
-            for (int i = 0; i < 60; ++i) (far(0.5 * (lo + hi)) ? hi : lo) = 0.5 * (lo + hi);
-            std::printf("the far field begins %.1f km above the sea at %dx%d\n", hi / 1000.0, size.x, size.y);
-            s.camera.position = glm::normalize(s.camera.position) * (radius + 1.02 * hi);
+            const double h = farFieldHeight(s, size);
+            std::printf("the far field begins %.1f km above the sea at %dx%d\n", h / 1000.0, size.x, size.y);
+            s.camera.position = glm::normalize(s.camera.position) * (radius + 1.02 * h);
         }
         renderer.ocean().setCountPrimitives(true);
         renderer.ocean().setFarFieldAllowed(true);
@@ -185,4 +212,54 @@ TEST_F(OceanFarFieldGpu, TheFarFieldGivesTheMeshsFrame) {
             EXPECT_EQ(c.meanRelativeError, 0.0) << view;
         }
     }
+}
+
+// The CPU's test against the shader's own: the mesh's fragments (the mesh forced) that are not
+// wholly in the far field, counted by a copy of ocean.frag, looking straight down at the open sea
+// (the nearest sea in view): none just above the height where seaIsFarField begins to hold, some
+// just below it (the test is no looser than need be), for the default sea and a stormy one (the
+// edge target's other regime). And from so far out that the grid's z_s < 0 (past gridPointOf's
+// domain) the mesh again, with a finite frame.
+TEST_F(OceanFarFieldGpu, TheCpusTestAgreesWithTheMeshsFarness) {
+    const test::InvocationCounter counter;
+    Renderer renderer(nearFragmentCountingShaders(), atmosphere::TableSizes::reduced());
+    renderer.ocean().setFarFieldAllowed(false);
+    const glm::ivec2 size{160, 90};
+    Session base = loadSession(test::repoPaths(), "earth", "orbit");
+    base.scene.render.temporal = false;
+    base.scene.clouds.enabled = false;
+    // A nadir over the open sea near the orbit view's.
+    double lat = 20.0, lon = -10.0;
+    for (int tries = 0; tries < 40; ++tries, lon -= 3.0) {
+        const Camera c = cameraAtGeographic(lat, lon, 1e5, 0.0, -90.0, 60.0, base.scene.planetRadiusM());
+        if (base.ground.height(glm::vec3(glm::normalize(c.position))) < -1000.0f) break;
+    }
+    ASSERT_LT(base.ground.height(glm::vec3(glm::normalize(
+                  cameraAtGeographic(lat, lon, 1e5, 0.0, -90.0, 60.0, base.scene.planetRadiusM()).position))),
+              -1000.0f);
+    for (const double waveScale : {1.0, 8.0}) {
+        Session s = base;
+        for (auto& w : s.scene.waves) w.amplitude_m *= waveScale;
+        const double h = farFieldHeight(s, size);
+        long long counts[2] = {0, 0};
+        for (int i = 0; i < 2; ++i) {
+            const double height = h * (i == 0 ? 1.001 : 0.98);
+            s.camera = cameraAtGeographic(lat, lon, height + s.scene.ocean.sea_level_m, 0.0, -90.0, 60.0,
+                                          s.scene.planetRadiusM());
+            counter.reset();
+            renderer.render(s.scene, s.camera, size);
+            counts[i] = counter.read();
+        }
+        std::printf("waves x%.0f: the far field from %.1f km: fragments not wholly in it %lld at 1.001 x, %lld at "
+                    "0.98 x\n",
+                    waveScale, h / 1000.0, counts[0], counts[1]);
+        EXPECT_EQ(counts[0], 0) << "waves x" << waveScale;
+        EXPECT_GT(counts[1], 0) << "waves x" << waveScale;
+    }
+    Session s = base;
+    s.camera = cameraAtGeographic(0.0, 0.0, 2e8, 0.0, -90.0, 60.0, s.scene.planetRadiusM());
+    Renderer plain(test::repoPaths().shaders(), atmosphere::TableSizes::reduced());
+    plain.render(s.scene, s.camera, size);
+    EXPECT_FALSE(plain.ocean().farField()) << "z_s < 0 out there: the mesh";
+    EXPECT_TRUE(test::allFinite(readTextureRGBAF(plain.targets().hdr(), size.x, size.y)));
 }

@@ -75,8 +75,8 @@ void OceanPass::prepare(const Scene& scene, const Camera& camera, double radians
         gridStrideAllowed(camera.altitude(scene.planetRadiusM()), scene.terrain.max_height_m,
                           terrain::terrainNearRangeM()),
         grid, anchor_, radius, maxHeight, camera, radiansPerPixel, aspect, scene.ocean.target_edge_px, 1.0e30));
-    mesh_.setProjection(makeGridBlock(gridProjection(anchor_, radius, maxHeight), grid.exponent, camera.position, radius,
-                                      grid.size, mesh_.stride()));
+    const GridProjection projection = gridProjection(anchor_, radius, maxHeight);
+    mesh_.setProjection(makeGridBlock(projection, grid.exponent, camera.position, radius, grid.size, mesh_.stride()));
     uploadWaves(scene, camera);
     ocean::OceanBlock block = ocean::makeOceanBlock(scene);
     if (continents != continents_) {  // a new map: measure its slope once
@@ -94,8 +94,11 @@ void OceanPass::prepare(const Scene& scene, const Camera& camera, double radians
     block.landCulling = landCulling_ && landContinent_ <= 1.0 ? 1 : 0;
     glNamedBufferSubData(block_.id(), 0, sizeof block, &block);
     const double height = glm::length(camera.position) - radius;
-    farField_ = farFieldAllowed_ && ocean::seaIsFarField(height, radiansPerPixel, maxHeight, scene.ocean.target_edge_px,
-                                                         block.coarsestEdgePixels, scene.planetRadiusM());
+    // (Only while the grid's z_s > 0, the domain of its inverse, terrain/grid.glsl's gridPointOf: from
+    // about 120 000 km out the grid's cap reaches past the camera's horizon plane and z_s < 0.)
+    farField_ = farFieldAllowed_ && projection.zShift > 0.0 &&
+                ocean::seaIsFarField(height, radiansPerPixel, maxHeight, scene.ocean.target_edge_px,
+                                     block.coarsestEdgePixels, scene.planetRadiusM());
     smoothMirror_ = flatMirrorMode_ == FlatMirror::Auto ? ocean::seaIsASmoothMirror(scene.waves, height, radiansPerPixel)
                                                         : flatMirrorMode_ == FlatMirror::Smooth;
     flatMirror_ = smoothMirror_ || (flatMirrorMode_ == FlatMirror::Auto
@@ -150,7 +153,7 @@ void OceanPass::drawSurface(const std::function<void()>& drawFarField) {
         mesh_.bindBlock();  // the grid's projection: the place on the grid of each pixel's point
         glUseProgram(farFieldSurface_.id());
         drawFarField();
-        lastPrimitives_ = 0;
+        if (countPrimitives_) lastPrimitives_ = 0;
         glDisable(GL_DEPTH_TEST);
         return;
     }

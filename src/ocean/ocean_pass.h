@@ -10,7 +10,9 @@
 //   ocean.frag   fragments under land or behind the terrain discarded first (cheap tests that
 //                give the same pixels), the shore's coverage, the water's depth and path, the
 //                far field's sphere: the sea surface's G-buffer (ocean/sea_surface.glsl) and the
-//                depth, the stencil set where the sea is the nearest surface
+//                depth, the stencil set where the sea is the nearest surface; where every sea pixel
+//                is the far field's (far_field.h), its build OCEAN_FAR_FIELD instead of the mesh,
+//                once per pixel of the ground sphere's rectangle from the pixel's ray
 //   sea_light.frag  over the whole frame where the stencil is set, once per pixel (a software
 //                renderer shades a 4x4 block for each triangle touching it: the mesh's fragments
 //                were two to three times the sea's pixels): Eq. 10 normal (from below, with the
@@ -96,7 +98,7 @@ public:
     // culling on, such a value exists), the patch's bound with the filter's slack, the map's slope.
     bool darkFloorCulling() const { return landCulling_ && darkContinent_ >= -1.0; }
     double patchDarkContinent() const { return darkContinent_ - sampleSlack_; }
-    // The stencil's value the mesh leaves where a sea fragment is the nearest (not the terrain's,
+    // The stencil's value the mesh (or its far field's draw) leaves where a sea fragment is the nearest (not the terrain's,
     // which the same stencil held before the ocean pass cleared it: src/terrain/terrain_pass.h).
     static constexpr int kSeaStencil = 3;
     // Tests: the patches' stride forced (1, 2, 4 or 8), or 0 (the default) to let the grid's cells
