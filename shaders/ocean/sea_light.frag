@@ -171,7 +171,11 @@ void main() {
     bool marchLater = false;  // the terrain's shadow marched by ocean/sea_terrain_shadow.comp
     float meanClearance = 1.0;  // the samples' mean clearance (rad), where no march can be had
     float radius = atmosphereUniforms.sunAngularRadius;
-    if (dot(up, sun) > 0.0) {
+    // Lit while any of the sun's disc is above the horizon: the sun's irradiance fades out over its
+    // disc there (atmosphere/functions.glsl, SunAboveHorizonFraction); cut at its centre, the
+    // glitter stopped at half its brightness, a hard line along the terminator seen from orbit.
+    bool sunUp = dot(up, sun) > -radius;
+    if (sunUp) {
         sunVisibility = CloudSunTransmittance(point, sun, CLOUD_SHADOW_MAX_KM);
         // The terrain's march only where it may find land and the samples around the pixel do
         // not agree (a shadow's edge, the shore), and not here: the pixel is shaded as lit by the
@@ -192,7 +196,7 @@ void main() {
     vec3 skyIrradiance;
     vec3 sunIrradiance = SunAndSkyIrradianceUnshadowed(point, up, sun, skyIrradiance) * sunVisibility;
     // The sun's irradiance on a surface facing it: through the atmosphere, not yet weighted by a normal.
-    vec3 glitter = dot(up, sun) > 0.0
+    vec3 glitter = sunUp
                        ? SunIrradianceUnshadowed(point, sun) * sunVisibility *
                              sunGlitter(normal, -view, sun, slopeVariance + ocean.subgridSlopeVariance)
                        : vec3(0.0);
