@@ -91,6 +91,11 @@ inline std::filesystem::path shadersWith(const std::string& name, const std::str
 // taken out (a test of the early stencil test: llvmpipe tests the stencil after a shader that
 // writes memory, so that copy runs on every pixel the draw covers).
 inline constexpr GLuint kInvocationCountBinding = 15;  // a shader storage binding the frame leaves free
+// InvocationCounter's buffer as a shader copy declares it (its count: `testInvocations`).
+inline std::string invocationCountDeclaration() {
+    return "layout(std430, binding = " + std::to_string(kInvocationCountBinding) +
+           ") buffer TestCount { uint testInvocations; };\n";
+}
 inline std::filesystem::path countingShaders(const std::string& name, const std::string& file, bool earlyTests) {
     namespace fs = std::filesystem;
     const fs::path root = shadersWith(name, file, "void main() {", "void countedMain() {");
@@ -103,9 +108,8 @@ inline std::filesystem::path countingShaders(const std::string& name, const std:
         EXPECT_NE(at, std::string::npos) << "'" << early << "' is gone from " << file;
         if (at != std::string::npos) text.erase(at, early.size());
     }
-    std::ofstream(root / file) << text << "layout(std430, binding = " << kInvocationCountBinding
-                               << ") buffer TestCount { uint testInvocations; };\n"
-                                  "void main() {\n    atomicAdd(testInvocations, 1u);\n    countedMain();\n}\n";
+    std::ofstream(root / file) << text << invocationCountDeclaration()
+                               << "void main() {\n    atomicAdd(testInvocations, 1u);\n    countedMain();\n}\n";
     return root;
 }
 

@@ -24,6 +24,7 @@
 #include "grid/grid_mesh.h"
 #include "grid/projected_grid.h"
 #include "ocean/far_field.h"
+#include "ocean/ocean_block.h"
 #include "ocean/ocean_gpu.h"
 #include "ocean/ocean_pass.h"
 #include "render/bindings.h"
@@ -83,8 +84,7 @@ double farFieldHeight(const Session& s, glm::ivec2 size) {
     const double rpp = s.camera.fovY_rad / size.y;  // as src/render/renderer.cpp passes it
     const auto far = [&](double h) {
         return ocean::seaIsFarField(h, rpp, ocean::maxWaveHeight(s.scene.waves), s.scene.ocean.target_edge_px,
-                                    std::max(s.scene.terrain.target_edge_px, s.scene.ocean.target_edge_px),
-                                    s.scene.planetRadiusM());
+                                    ocean::makeOceanBlock(s.scene).coarsestEdgePixels, s.scene.planetRadiusM());
     };
     double lo = 0.0, hi = 1e7;
     for (int i = 0; i < 60; ++i) (far(0.5 * (lo + hi)) ? hi : lo) = 0.5 * (lo + hi);
@@ -103,8 +103,7 @@ std::filesystem::path nearFragmentCountingShaders() {
     const std::string anchor = "const float SHORE_FADE_M";
     const std::size_t at = text.find(anchor);
     EXPECT_NE(at, std::string::npos);
-    text.insert(at, "layout(std430, binding = " + std::to_string(test::kInvocationCountBinding) +
-                        ") buffer TestCount { uint testInvocations; };\n");
+    text.insert(at, test::invocationCountDeclaration());
     std::ofstream(root / "ocean/ocean.frag") << text;
     return root;
 }

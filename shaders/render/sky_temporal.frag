@@ -137,23 +137,20 @@ void main() {
     ivec2 block = pixel / SPARSE_BLOCK;
 #ifdef STILL_FRAME_UNJITTERED
     // The jitter stood as well (no anti-aliasing, or a still): every pixel's ray is its
-    // history's, so its surface is too and none is listed below (the general program lists none
+    // history's, so its surface is too and none is listed (the general program lists none
     // either); the test left out, the program is the same to the bit (orbit, 1280x720: 20 -> 17 ms).
-    if (sparseTracedPixel(block) == pixel)
-        addSample(result, samples,
-                  SkySample(texelFetch(sparseInscatter, block, 0).rgb, texelFetch(sparseTransmittance, block, 0).rgb));
+    const bool surfaceChanged = false;
 #else
     float expected = previousSurfaceDistance(dir, distance);  // as readHistory is asked (the camera stood, to a millimetre)
-    if (distanceSimilarity(expected, texelFetch(historySurfaceDistance, pixel, 0).r) <= 0.05) {
-        // Another surface than the history's at this pixel (under the anti-aliasing's jitter, an
-        // edge moved across it; without it, none should): no history, as in the general program;
-        // render/sky_refine.comp writes it over what this leaves.
-        listPixel(pixel);
-    } else if (sparseTracedPixel(block) == pixel) {
+    // Another surface than the history's at this pixel (under the anti-aliasing's jitter, an edge
+    // moved across it): no history, as in the general program; render/sky_refine.comp writes it
+    // over what this leaves.
+    bool surfaceChanged = distanceSimilarity(expected, texelFetch(historySurfaceDistance, pixel, 0).r) <= 0.05;
+    if (surfaceChanged) listPixel(pixel);
+#endif
+    if (!surfaceChanged && sparseTracedPixel(block) == pixel)
         addSample(result, samples,
                   SkySample(texelFetch(sparseInscatter, block, 0).rgb, texelFetch(sparseTransmittance, block, 0).rgb));
-    }
-#endif
     writeSky(dir, surface, distance, result, samples);
 }
 #else
