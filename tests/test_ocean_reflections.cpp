@@ -267,11 +267,13 @@ namespace {
 struct ListedFrame {
     std::size_t listed = 0;
     ImageRGBAF image;
+    bool landOnScreen = false;  // as the surface light marked it
 };
 ListedFrame renderListed(const fs::path& shaders, const Session& s) {
     Renderer r(shaders, atmosphere::TableSizes::reduced(), s.continents);
     r.render(s.scene, s.camera, kSize);
-    return {r.targets().readTerrainReflectionList().size(), readTextureRGBAF(r.targets().hdr(), kSize.x, kSize.y)};
+    return {r.targets().readTerrainReflectionList().size(), readTextureRGBAF(r.targets().hdr(), kSize.x, kSize.y),
+            r.targets().readLandOnScreen()};
 }
 
 // The shader tree where rays whose reach spans under a pixel are searched too.
@@ -287,10 +289,11 @@ fs::path shadersWithoutPixelReach() {
 // the continents map's slope bound; issue 15): the image is the one that searching every sea
 // pixel gives (to 0.1 % of a pixel's luminance: from space a searched pixel where the height
 // field has no land within reach can meet the coarse terrain mesh's chords across a coast,
-// 0.014 % in one pixel), and from orbit and from space far fewer are searched (measured: 20 %
-// and 38 % at 160x90; at sea level nearly every ray's long reach has land within it, all of
-// the beach's), and with no ground above the sea on screen (the `sea` view) none at all (the
-// every-pixel search lists 11680 there). The beach, where the land is reflected, is what fails
+// 0.014 % in one pixel), and from orbit and from space far fewer are searched (measured: 10 %
+// and 11 % at 160x90, where the highest mountain's reach listed 20 % and 38 %: the land within
+// the reach of a coast's rays is low, terrainHeightBound; at sea level nearly every ray's long
+// reach has land within it, all of the beach's), and with no ground above the sea on screen
+// (the `sea` view) none at all (the every-pixel search lists 11680 there). The beach, where the land is reflected, is what fails
 // (7.5 %) when the bound lists too few; orbit and space, when it lists too many.
 TEST_F(OceanReflections, OnlyPixelsWithLandWithinReachAreSearchedAndThatChangesNoPixel) {
     const fs::path searchAll = test::shadersWith("planet_test_ssr_all", "ocean/screen_space_reflections.glsl",
@@ -301,7 +304,7 @@ TEST_F(OceanReflections, OnlyPixelsWithLandWithinReachAreSearchedAndThatChangesN
         const char* view;
         double maxShare;  // listed by the bound / listed when all are searched, at most
     };
-    for (const Case& c : {Case{"orbit", 0.25}, Case{"space", 0.5}, Case{"beach", 1.0}, Case{"sea", 0.0}}) {
+    for (const Case& c : {Case{"orbit", 0.15}, Case{"space", 0.2}, Case{"beach", 1.0}, Case{"sea", 0.0}}) {
         SCOPED_TRACE(c.view);
         const Session s = loadSession(test::repoPaths(), "earth", c.view);
         const ListedFrame bounded = renderListed(withoutPixelReach, s);
@@ -311,19 +314,23 @@ TEST_F(OceanReflections, OnlyPixelsWithLandWithinReachAreSearchedAndThatChangesN
         std::printf("%s: %zu of %zu sea pixels searched; max change %.3g %%\n", c.view, listed, all,
                     100.0 * cmp.maxRelativeError);
         EXPECT_GT(all, std::size_t(kSize.x * kSize.y / 10));  // the sea is in view
+        EXPECT_EQ(bounded.landOnScreen, std::string(c.view) != "sea");
         EXPECT_LE(double(listed), c.maxShare * double(all));
         EXPECT_EQ(cmp.nonFinitePixels, 0u);
         EXPECT_LT(cmp.maxRelativeError, 1e-3);
     }
 }
 
-// Nor are the rays whose reach below the highest peak spans under a pixel on screen (the same
+// Nor are the rays whose reach below the land near them spans under a pixel on screen (the same
 // file's terrainMayBeReflected: a segment of length L seen from at least D - L away subtends at
 // most L / (D - L)): the search could only meet the pixel it starts from. From space (pixels of
-// 180 km at 160x90, against a reach of a few km) that is nearly every pixel the slope bound lists;
-// at sea level (the beach) none, and there the image is the same to the bit. What it changes is
-// the coast's pixels, which took the land they hold or touch for a reflection over the whole
-// pixel (the true reflection covers its few km of the pixel's 180), and nothing else.
+// 180 km at 160x90, against a reach of a few km) that is nearly every pixel the slope bound lists
+// (since the reach is below the land's bound, reachBelowLand, the search finds nothing at those
+// either: the image is the same); from orbit a few (the reach below a coast's lowlands spans
+// under a 1.2 km pixel at grazing views), at sea level (the beach) none, and there the images are
+// the same to the bit. Where it changes anything, it is the coast's pixels, which took the land
+// they hold or touch for a reflection over the whole pixel (the true reflection covers its few km
+// of the pixel's 180), and nothing else.
 TEST_F(OceanReflections, RaysWhoseReachSpansUnderAPixelAreNotSearched) {
     const fs::path withoutPixelReach = shadersWithoutPixelReach();
     for (const char* view : {"space", "orbit", "beach"}) {
@@ -364,8 +371,12 @@ TEST_F(OceanReflections, RaysWhoseReachSpansUnderAPixelAreNotSearched) {
             EXPECT_GT(listedWithout, std::size_t(100));
             EXPECT_LE(double(listed), 0.05 * double(listedWithout));
             EXPECT_LT(cmp.meanRelativeError, 5e-4);
-        } else {  // from 400 km (1.2 km pixels) and at sea level every listed ray spans pixels
-            EXPECT_EQ(listed, listedWithout);
+        } else {  // from 400 km (1.2 km pixels) nearly every listed ray spans pixels, at sea level all
+            if (std::string(view) == "beach") {
+                EXPECT_EQ(listed, listedWithout);
+            }
+            EXPECT_LE(listed, listedWithout);
+            EXPECT_GE(double(listed), 0.8 * double(listedWithout));
             EXPECT_EQ(cmp.maxRelativeError, 0.0);
         }
     }

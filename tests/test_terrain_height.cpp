@@ -231,6 +231,46 @@ TEST(TerrainHeight, CoastsAreGentlerThanInlandMountains) {
     EXPECT_LT(coast, 0.1 * mountains);  // measured 1.9e-3 against 0.11
 }
 
+// terrainHeightBound, the most the height field rises where the continent value is at most e
+// (the terrain reflection's reach below the land near a coast): the height at every sampled
+// direction is under the bound at its own continent value, for the default field, the test's,
+// a rough one (10 ridged octaves) and the continents alone; the bound rises with e, is the
+// abyssal plain at -1, sea level at the coast and the highest mountain inland; and it is low
+// near the coast (a bound of maxHeight everywhere would hold too, and spare nothing).
+TEST(TerrainHeight, TheBoundOverAContinentValueHoldsAndIsLowNearTheCoast) {
+    TerrainParams rough = testParams();
+    rough.noise_octaves = 10;
+    rough.ridged_weight = 1.0;
+    TerrainParams defaults;
+    defaults.continent_map_size = kMapSize;
+    TerrainParams continentsOnly = testParams();
+    continentsOnly.noise_octaves = 0;
+    for (const TerrainParams& p : {testParams(), defaults, rough, continentsOnly}) {
+        const Terrain t(p);
+        const float maxHeight = float(p.max_height_m), oceanDepth = float(p.ocean_depth_m);
+        float previous = -std::numeric_limits<float>::infinity();
+        for (int i = -1000; i <= 1000; ++i) {
+            const float bound = terrain::terrainHeightBound(t.shape, float(i) / 1000.0f);
+            ASSERT_GE(bound, previous) << "e " << i / 1000.0;
+            previous = bound;
+        }
+        EXPECT_EQ(terrain::terrainHeightBound(t.shape, -1.0f), -oceanDepth);
+        EXPECT_EQ(terrain::terrainHeightBound(t.shape, 0.0f), 0.0f);
+        EXPECT_EQ(terrain::terrainHeightBound(t.shape, 1.0f), maxHeight);
+        float highest = 0.0f;  // the largest share of the bound reached inland (where the mountains are whole)
+        for (const glm::vec3& d : randomDirections(20000, 7)) {
+            const float h = t.height(d), bound = terrain::terrainHeightBound(t.shape, t.continent(d));
+            ASSERT_LE(h, bound) << "at (" << d.x << ", " << d.y << ", " << d.z << ")";
+            if (t.continent(d) > 0.35f) highest = std::max(highest, h / bound);
+        }
+        // Near the coast: under 3 % of the highest mountain 0.02 inland (measured 1.7 %).
+        const float nearCoast = terrain::terrainHeightBound(t.shape, 0.02f);
+        std::printf("%d octaves: bound at e = 0.02 %.0f m of %.0f; inland the height reaches %.2f of it\n",
+                    p.noise_octaves, nearCoast, maxHeight, highest);
+        EXPECT_LT(nearCoast, 0.03f * maxHeight);
+    }
+}
+
 TEST(TerrainHeight, SeedPicksAnotherPlanetDeterministically) {
     TerrainParams a = testParams(), b = testParams();
     b.seed = 2;

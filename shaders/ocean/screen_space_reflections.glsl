@@ -58,12 +58,36 @@ vec4 clipFromWorldPoint(vec3 pointFromCamera) {
 vec4 clipFromWorldDirection(vec3 dir) { return frame.clipFromView * vec4(mat3(frame.viewFromWorld) * dir, 0.0); }
 
 // How far a ray from `heightM` above the planet radius, rising with sine sinRise, can still
-// meet terrain: beyond it the ray stands above the highest mountain (the sphere falls away
-// below it by t^2 / 2R too). Solves t sinRise + t^2 / 2R = climb in its cancellation-free form.
-float reachBelowPeaks(float heightM, float sinRise) {
-    float climb = max(terrainShape.maxHeight - heightM, 0.0);
+// meet terrain no higher than `topM`: beyond it the ray stands above that height (the sphere
+// falls away below it by t^2 / 2R too). Solves t sinRise + t^2 / 2R = climb in its
+// cancellation-free form.
+float reachBelowHeight(float topM, float heightM, float sinRise) {
+    float climb = max(topM - heightM, 0.0);
     float s = max(sinRise, 0.0);
     return 2.0 * climb / (sqrt(s * s + 2.0 * climb / frame.planetRadius) + s);
+}
+
+// How far the ray can still meet the highest mountain.
+float reachBelowPeaks(float heightM, float sinRise) { return reachBelowHeight(terrainShape.maxHeight, heightM, sinRise); }
+
+// How far the ray from the sea at `up` can still meet the land near it: within a reach r the
+// continent value is at most e(up) + L (1.25 r / R + slack) (the continents map's slope bound,
+// as in landMayLieWithin) and the land no higher than terrainHeightBound there, so the ray is
+// searched only until it stands above that. Each turn takes the reach below the bound over the
+// last reach, starting from the highest mountain's: the reaches fall towards the farthest point
+// t* where the ray meets the bound (t = reach(bound(t))), and every one of them is at least t*,
+// beyond which the ray stays above the bound. From orbit a coast's rays clear its lowlands in a
+// few kilometres, where the highest mountain's reach was tens; 0 where no land lies within it.
+const int REACH_TIGHTENINGS = 3;
+float reachBelowLand(vec3 up, float heightM, float sinRise) {
+    float reach = reachBelowPeaks(heightM, sinRise);
+    if (!(ocean.continentLipschitz > 0.0)) return reach;
+    float e = continentValue(up, uContinents);
+    for (int i = 0; i < REACH_TIGHTENINGS; ++i) {
+        float eMax = e + ocean.continentLipschitz * (1.25 * reach / frame.planetRadius + ocean.continentSampleSlackRad);
+        reach = min(reach, reachBelowHeight(terrainHeightBound(terrainShape, eMax), heightM, sinRise));
+    }
+    return reach;
 }
 
 // The fraction u of the segment where it leaves the image ([-1, 1]^2 in NDC).
@@ -114,10 +138,14 @@ ScreenReflection searchScreenReflection(vec3 origin, vec3 dir, float reach, ivec
     float uEnd = min(reach / (reach + scale), screenExit(ndc0, ndcEnd));
     if (uEnd <= 0.0) return none;
 
+    // No more steps than the segment spans pixels: a step under a pixel finds nothing the
+    // filtered depth between two a pixel apart does not (from orbit most segments span a few).
+    vec2 segmentPixels = (mix(ndc0, ndcEnd, uEnd) - ndc0) * 0.5 * frame.viewportSize;
+    int steps = int(clamp(ceil(length(segmentPixels)), 1.0, float(SSR_STEPS)));
     float jitter = stepJitter(pixel);
     float uFront = 0.0, uBehind = -1.0;
-    for (int i = 0; i < SSR_STEPS; ++i) {
-        float u = i + 1 < SSR_STEPS ? uEnd * (float(i) + 1.0 - jitter) / float(SSR_STEPS) : uEnd;
+    for (int i = 0; i < steps; ++i) {
+        float u = i + 1 < steps ? uEnd * (float(i) + 1.0 - jitter) / float(steps) : uEnd;
         if (behindDepthBuffer(depthCopy, ndc0, ndcEnd, w0, u) > 0.0) {
             uBehind = u;
             break;
@@ -161,10 +189,9 @@ ScreenReflection searchScreenReflection(vec3 origin, vec3 dir, float reach, ivec
 bool terrainMayBeReflected(vec3 up, vec3 reflected, float heightM, float distanceM, float pixelAngle) {
 #if OCEAN_SCREEN_SPACE_REFLECTIONS
     if (TERRAIN_REFLECTION_SEARCH_ALL != 0) return true;
-    float reach = reachBelowPeaks(heightM, dot(reflected, up));
+    float reach = reachBelowLand(up, heightM, dot(reflected, up));
     if (TERRAIN_REFLECTION_PIXEL_REACH != 0 && reach < pixelAngle * (distanceM - reach)) return false;
-    return landMayLieWithin(up, reach / M_PER_KM, heightM, frame.planetRadius / M_PER_KM, ocean.continentLipschitz,
-                            ocean.continentSampleSlackRad, uContinents);
+    return reach > 0.0;
 #else
     return false;
 #endif

@@ -69,6 +69,9 @@ layout(binding = UNIT_SEABED_RADIANCE) uniform sampler2D seabedRadiance;   // co
 layout(binding = UNIT_TERRAIN_SHADOW) uniform sampler2D terrainShadowSamples;  // g: the sea surface's (render/terrain_shadow.frag)
 #include "render/terrain_shadow_samples.glsl"
 #include "ocean/sea_terrain_shadow.glsl"
+#define PIXEL_LIST_BINDING BUFFER_TERRAIN_REFLECTION_LIST
+#include "render/pixel_list.glsl"  // the terrain reflection's (ocean/terrain_reflection.glsl)
+#include "render/land_on_screen.glsl"
 
 layout(location = 0) out vec4 outSurfaceRadiance;
 // The reflected ray and the reflection's weight in this pixel's radiance, coverage x Fresnel
@@ -162,8 +165,10 @@ void main() {
     // sea reflection pass (the clouds' change, but as a flat mirror, which has it) and the
     // terrain reflection pass, which searches the terrain where it may be reflected instead.
     outSeaReflection = vec4(reflected, coverage * fresnel);
-    if (terrainMayBeReflected(up, reflected, ocean.seaLevel, seaDistance, pixelAngle))
+    if (terrainMayBeReflected(up, reflected, ocean.seaLevel, seaDistance, pixelAngle)) {
         outSeaSkyReflection = vec4(sky, seaDistance);
+        if (landOnScreen != 0u || TERRAIN_REFLECTION_SEARCH_ALL != 0) listPixel(pixel);
+    }
     // The sun's visibility from the water's surface (the clouds' shadows and the terrain's, the
     // march starting at sea level, not on the sea floor), formed once for the light into the
     // water and the glitter.

@@ -17,7 +17,8 @@ void main() {
     vec3 reflected = normalize(mirror.xyz);
     vec3 origin = pixelRay(pixel) * sky.a;  // m from the camera
     vec3 point = cameraFromPlanetCentreKm() + origin / M_PER_KM;               // km from the planet centre
-    float reach = reachBelowPeaks(ocean.seaLevel, dot(reflected, normalize(point)));
+    vec3 up = normalize(point);
+    float reach = reachBelowLand(up, ocean.seaLevel, dot(reflected, up));
     ScreenReflection land = searchScreenReflection(origin, reflected, reach, pixel, seabedDepth, seabedRadiance);
     if (land.confidence <= 0.0) return;
     vec3 terrain = reflectedTerrainRadiance(land, point, reflected, frame.sunDirection);

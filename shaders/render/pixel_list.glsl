@@ -9,7 +9,7 @@
 // Its users: the sky's refine (render/sky_temporal.frag lists, render/sky_refine.comp marches;
 // BUFFER_SKY_REFINE) and the sea's reflection (ocean/sea_reflection.frag lists, ocean/
 // sea_reflection.comp marches; BUFFER_SEA_REFLECTION_LIST) and the terrain's reflection in the
-// sea (ocean/terrain_reflection_list.frag lists, ocean/terrain_reflection.comp searches;
+// sea (ocean/sea_light.frag lists, ocean/terrain_reflection.comp searches;
 // BUFFER_TERRAIN_REFLECTION_LIST). Define PIXEL_LIST_BINDING first.
 const uint PIXEL_LIST_GROUP_SIZE = 64u;
 

@@ -41,6 +41,12 @@ layout(binding = UNIT_GBUFFER_DEPTH) uniform sampler2D gDepth;
 layout(binding = UNIT_TERRAIN_SHADOW) uniform sampler2D terrainShadowSamples;
 #include "render/terrain_shadow_samples.glsl"
 #include "render/surface_point.glsl"
+#include "render/land_on_screen.glsl"
+
+// The stencil's test before the shader runs (it writes no depth; the stencil it tests is kept):
+// without this a shader that writes memory, as the mark of land on screen does, is tested after
+// it ran, and a software renderer then lights the dark depths' pixels too.
+layout(early_fragment_tests) in;
 
 layout(location = 0) out vec4 outSurfaceRadiance;
 layout(location = 1) out float outSurfaceDistance;
@@ -110,6 +116,7 @@ void main() {
     // the clouds' marches take no step (a software renderer still runs the rest of the body for
     // every pixel of a group, masked: on the `sea` view this pass went from 114 to 75 ms).
 #if !SEA_FLOOR_DARK
+    if (underSea < 0.0) markLandOnScreen();
     if (underSea < SEA_FLOOR_DARK_DEPTH_M) outSurfaceRadiance = vec4(surfaceRadiance(pixel, surface, underSea), 1.0);
 #endif
 }

@@ -281,6 +281,25 @@ float terrainHeightFromParts(TerrainShape shape, float e, vec3 continentGradient
     return clamp(height, -shape.oceanDepth, shape.maxHeight);
 }
 
+// The mountains' value (noise^2 plus the variance a footprint hides) is at most 1 where the
+// octaves' simplex noise stays in [-1, 1]; the bound below allows a tenth more.
+const float TERRAIN_MOUNTAINS_BOUND = 1.1f;
+
+// The highest the height field rises where the continent value is at most e: every part of
+// terrainHeightFromParts rises with e (the shelf, the lowlands' ramp, the mountains' inland
+// weight), so its value at e with the mountains at their bound is the bound. With the
+// continents map's slope bound, the most that land within a distance of a point can rise
+// (ocean/screen_space_reflections.glsl's reachBelowLand): near a coast a few hundred metres,
+// where maxHeight is 8 km.
+float terrainHeightBound(TerrainShape shape, float e) {
+    vec3 none = vec3(0.0f);
+    vec3 gradient;
+    float heightVariance;
+    float gradientVariance;
+    return terrainHeightFromParts(shape, e, none, 1.0f, none, TERRAIN_MOUNTAINS_BOUND - 1.0f, 0.0f, gradient,
+                                  heightVariance, gradientVariance);
+}
+
 // Height above sea level in metres at a direction, in [-oceanDepth, maxHeight], and its
 // gradient with respect to the direction as a point in R^3 (m per unit; only the tangential
 // part is meaningful on the sphere: m per radian), filtered over a footprint of

@@ -130,6 +130,10 @@ bool RenderTargets::resize(glm::ivec2 size) {
     seaTerrainShadowList_.label("sea terrain shadow list");
     clearSeaTerrainShadowList();
     terrainReflectionList_ = makePixelList("terrain reflection list");
+    landOnScreen_ = gl::Buffer();
+    glNamedBufferStorage(landOnScreen_.id(), sizeof(GLuint), nullptr, GL_DYNAMIC_STORAGE_BIT);
+    landOnScreen_.label("land on screen");
+    clearLandOnScreen();
     ldr_ = makeTexture(GL_RGBA8, size, "ldr");
     ldrFramebuffer_ = makeFramebuffer({&ldr_}, nullptr, "ldr");
     seabedDepth_ = makeTexture(GL_DEPTH32F_STENCIL8, size, "seabed depth");  // the G-buffer's format (a copy)
@@ -198,6 +202,18 @@ glm::uvec2 RenderTargets::seaTerrainShadowListCount() const {
     GLuint header[8] = {};
     glGetNamedBufferSubData(seaTerrainShadowList_.id(), 0, sizeof header, header);
     return {header[3], header[4]};
+}
+
+void RenderTargets::clearLandOnScreen() const {
+    const GLuint none = 0;
+    glNamedBufferSubData(landOnScreen_.id(), 0, sizeof none, &none);
+}
+
+bool RenderTargets::readLandOnScreen() const {
+    glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+    GLuint value = 0;
+    glGetNamedBufferSubData(landOnScreen_.id(), 0, sizeof value, &value);
+    return value != 0;
 }
 
 void RenderTargets::clearPixelList(const gl::Buffer& list) {

@@ -132,10 +132,14 @@ public:
     const gl::Buffer& seaReflectionList() const { return seaReflectionList_; }
     void clearSeaReflectionList() const { clearPixelList(seaReflectionList_); }
     std::vector<glm::ivec2> readSeaReflectionList() const { return readPixelList(seaReflectionList_); }
-    // The sea's pixels that may reflect the terrain (ocean/terrain_reflection_list.frag), as above.
+    // The sea's pixels that may reflect the terrain (ocean/sea_light.frag lists them), as above.
     const gl::Buffer& terrainReflectionList() const { return terrainReflectionList_; }
     void clearTerrainReflectionList() const { clearPixelList(terrainReflectionList_); }
     std::vector<glm::ivec2> readTerrainReflectionList() const { return readPixelList(terrainReflectionList_); }
+    // Whether any ground above the sea is on screen (one uint, render/land_on_screen.glsl).
+    const gl::Buffer& landOnScreen() const { return landOnScreen_; }
+    void clearLandOnScreen() const;
+    bool readLandOnScreen() const;  // a test's look (it waits)
     const FrameHistory& history() const { return history_; }
     // hdr and skyMedium (the sky passes').
     GLuint hdrFramebuffer() const { return hdrFramebuffer_.id(); }
@@ -201,6 +205,7 @@ private:
     gl::Buffer seaReflectionList_;
     gl::Buffer seaTerrainShadowList_;
     gl::Buffer terrainReflectionList_;
+    gl::Buffer landOnScreen_;
     gl::Texture surfaceStencil_{GL_TEXTURE_2D};
     gl::Framebuffer surfaceFramebuffer_;
     gl::Framebuffer hdrFramebuffer_;

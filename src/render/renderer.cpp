@@ -157,10 +157,6 @@ Renderer::Renderer(const std::filesystem::path& shaderRoot, const atmosphere::Ta
                         gl::ProgramDesc{"sea terrain shadow, listed pixels", {"ocean/sea_terrain_shadow.comp"}}),
       seaReflectionListed_(sources_, programTables_,
                            gl::ProgramDesc{"sea reflection, listed pixels", {"ocean/sea_reflection.comp"}}),
-      terrainReflectionList_(sources_, programTables_,
-                             gl::ProgramDesc{"terrain reflection list",
-                                             {"common/fullscreen.vert", "ocean/terrain_reflection_list.frag"}},
-                             {"TERRAIN_REFLECTION_LAND_SEEN"}),
       terrainReflection_(sources_, programTables_,
                          gl::ProgramDesc{"terrain reflection", {"ocean/terrain_reflection.comp"}}),
       sky_(sources_, programTables_, gl::ProgramDesc{"sky", {"common/fullscreen.vert", "render/sky.frag"}},
@@ -238,6 +234,10 @@ std::vector<Renderer::Pass> Renderer::makePasses() {
     passes.push_back({{"surface light", {R::GBuffer, R::TerrainShadow}, {R::SurfaceRadiance}}, always,
                       [this](const Scene& s) {
                           targets_.clearSurface();
+                          // The lighting program marks ground above the sea on screen (render/land_on_screen.glsl).
+                          targets_.clearLandOnScreen();
+                          glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding::BUFFER_LAND_ON_SCREEN,
+                                           targets_.landOnScreen().id());
                           glBindFramebuffer(GL_FRAMEBUFFER, targets_.surfaceFramebuffer());
                           const GBuffer& g = targets_.gbuffer();
                           glBindTextureUnit(binding::UNIT_GBUFFER_NORMAL, g.normal.id());
@@ -302,6 +302,14 @@ std::vector<Renderer::Pass> Renderer::makePasses() {
                           targets_.clearSeaTerrainShadowList();
                           glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding::BUFFER_SEA_TERRAIN_SHADOW_LIST,
                                            targets_.seaTerrainShadowList().id());
+                          // The light lists the pixels for the terrain reflection's search too, where
+                          // ground above the sea is on screen (the surface light marked it).
+                          targets_.clearTerrainReflectionList();
+                          glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding::BUFFER_TERRAIN_REFLECTION_LIST,
+                                           targets_.terrainReflectionList().id());
+                          glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding::BUFFER_LAND_ON_SCREEN,
+                                           targets_.landOnScreen().id());
+                          glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
                           ocean_.useLightProgram(variantFor(s), lastPrepare_.underWater);
                           glBindVertexArray(emptyVertexArray_.id());
                           glBeginConditionalRender(oceanDrew_.id(), GL_QUERY_WAIT);
@@ -321,38 +329,18 @@ std::vector<Renderer::Pass> Renderer::makePasses() {
                           dispatchOverList(targets_.seaTerrainShadowList());
                       },
                       [this] { return withPrograms(ocean_.builtPrograms(), seaTerrainShadow_.built()); }});
-    // The terrain in the sea's reflection: searched at the pixels where the ocean found that land
-    // may lie within the reflected ray's reach (ocean/terrain_reflection.glsl), a fifth of the sea
-    // from orbit, and only where some ground above the sea is on screen.
+    // The terrain in the sea's reflection: searched at the pixels where the ocean's light found
+    // that land may lie within the reflected ray's reach and listed them (ocean/terrain_reflection.glsl),
+    // a tenth of the sea from orbit, and only where some ground above the sea is on screen;
+    // where none was listed the indirect dispatch runs no group.
     passes.push_back({{"terrain reflection", {R::SurfaceRadiance, R::SeaReflection}, {R::SurfaceRadiance, R::SeaReflection}},
                       [this](const Scene& s) { return s.terrain.ocean && !lastPrepare_.underWater; },
                       [this](const Scene& s) {
                           glBindTextureUnit(binding::UNIT_SEA_SKY_REFLECTION, targets_.seaSkyReflection().id());
                           glBindTextureUnit(binding::UNIT_SEABED_DEPTH, targets_.seabedDepth().id());
                           glBindTextureUnit(binding::UNIT_SEABED_RADIANCE, targets_.seabedRadiance().id());
-                          targets_.clearTerrainReflectionList();
                           glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding::BUFFER_TERRAIN_REFLECTION_LIST,
                                            targets_.terrainReflectionList().id());
-                          // Listed by a draw over the ground sphere's rectangle (which holds the
-                          // sea's) that writes no colour, skipped on the GPU
-                          // where the ocean drew no pixel (an inland view) or where no ground above
-                          // the sea is on screen (the open sea: what the search could find), which
-                          // the same draw in its mode TERRAIN_REFLECTION_LAND_SEEN counts first;
-                          // then the list stays empty and the search's indirect dispatch runs no group.
-                          glBindFramebuffer(GL_FRAMEBUFFER, targets_.surfaceRadianceFramebuffer());
-                          glColorMaski(0, GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
-                          glBindVertexArray(emptyVertexArray_.id());
-                          glBeginConditionalRender(oceanDrew_.id(), GL_QUERY_WAIT);
-                          glBeginQuery(GL_ANY_SAMPLES_PASSED, landSeen_.id());
-                          glUseProgram(terrainReflectionList_.get(variantFor(s), 1).id());
-                          drawScissored(lastPrepare_.groundBound, targets_.size());  // the sea lies within it
-                          glEndQuery(GL_ANY_SAMPLES_PASSED);
-                          glEndConditionalRender();
-                          glBeginConditionalRender(landSeen_.id(), GL_QUERY_WAIT);
-                          glUseProgram(terrainReflectionList_.get(variantFor(s)).id());
-                          drawScissored(lastPrepare_.groundBound, targets_.size());
-                          glEndConditionalRender();
-                          glColorMaski(0, GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
                           glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT);
                           glBindImageTexture(binding::IMAGE_SURFACE_RADIANCE, targets_.surfaceRadiance().id(), 0,
                                              GL_FALSE, 0, GL_READ_WRITE, GL_RGBA16F);
@@ -361,7 +349,7 @@ std::vector<Renderer::Pass> Renderer::makePasses() {
                           glUseProgram(terrainReflection_.get(variantFor(s)).id());
                           dispatchOverList(targets_.terrainReflectionList());
                       },
-                      [this] { return builtVariants({&terrainReflectionList_, &terrainReflection_}); }});
+                      [this] { return builtVariants({&terrainReflection_}); }});
     // The clouds in the sea's reflection: marched at one pixel of each block along the rays the
     // ocean left, then spread and added to the surface radiance (ocean/sea_reflection.frag).
     // Only where the ocean's per-pixel program ran with clouds in the sky: from high up the
@@ -696,7 +684,7 @@ bool Renderer::matchAtmosphereTables() {
     seaFloorDark_.program().setSources(withAtmosphere(sources_, sizes));
     std::vector<gl::HotProgram*> rebuilt{&terrainShadow_.program(), &seaFloorDark_.program()};
     std::vector<AtmosphereProgram*> withTables = ocean_.atmospherePrograms();
-    for (AtmosphereProgram* p : {&surfaceLight_, &seaTerrainShadow_, &seaReflection_, &seaReflectionListed_, &terrainReflectionList_,
+    for (AtmosphereProgram* p : {&surfaceLight_, &seaTerrainShadow_, &seaReflection_, &seaReflectionListed_,
                                  &terrainReflection_, &sky_, &skySparse_, &skyTemporal_, &skyRefine_})
         withTables.push_back(p);
     for (AtmosphereProgram* p : withTables) {

@@ -258,8 +258,6 @@ private:
     AtmosphereProgram seaReflection_;  // mode SEA_REFLECTION_COMPOSE: the samples' spread (ocean/sea_reflection.frag)
     AtmosphereProgram seaTerrainShadow_;  // the terrain's shadow at the sea's listed pixels (ocean/sea_terrain_shadow.comp)
     AtmosphereProgram seaReflectionListed_;  // the pixels the spread could not serve (ocean/sea_reflection.comp)
-    AtmosphereProgram terrainReflectionList_;  // the sea's pixels that may reflect the terrain (ocean/terrain_reflection_list.frag);
-                                               // mode TERRAIN_REFLECTION_LAND_SEEN: whether any ground above the sea is on screen
     AtmosphereProgram terrainReflection_;      // their search (ocean/terrain_reflection.comp)
     AtmosphereProgram sky_;  // mode UNDER_WATER: the camera under the sea
     AtmosphereProgram skySparse_;
@@ -287,7 +285,6 @@ private:
     // Whether the ocean drew any pixel this frame: the sea reflection pass draws only then
     // (conditional rendering: no read-back, the GPU skips the draws).
     gl::Query oceanDrew_{GL_ANY_SAMPLES_PASSED};
-    gl::Query landSeen_{GL_ANY_SAMPLES_PASSED};  // ground above the sea on screen (the terrain reflection's)
     glm::dvec2 jitterPx_{0.0};
     bool temporalAntialiasing_ = false;
     glm::dvec2 frameJitterPx_{0.0};          // this frame's: jitterPx_, or the TAA's

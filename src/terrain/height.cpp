@@ -146,6 +146,8 @@ float terrainHeight(glm::vec3 d, const TerrainShape& shape, const noise::CubeMap
     return glsl::terrainHeight(d, toGlsl(shape), continents);
 }
 
+float terrainHeightBound(const TerrainShape& shape, float e) { return glsl::terrainHeightBound(toGlsl(shape), e); }
+
 float terrainHeightGrad(glm::vec3 d, const TerrainShape& shape, const noise::CubeMap& continents,
                         glm::vec3& gradient) {
     return glsl::terrainHeightGrad(d, toGlsl(shape), continents, gradient);

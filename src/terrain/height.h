@@ -60,6 +60,10 @@ float terrainHeight(glm::vec3 unitDirection, const TerrainShape& shape, const no
 float terrainHeightGrad(glm::vec3 unitDirection, const TerrainShape& shape, const noise::CubeMap& continents,
                         glm::vec3& gradient);
 
+// The highest the height field rises where the continent value is at most e (m; increasing
+// in e). GLSL: terrainHeightBound.
+float terrainHeightBound(const TerrainShape& shape, float e);
+
 // Continent value in [-1, 1] (the map, filtered); land where above 0. GLSL: continentValue.
 float continentValue(glm::vec3 unitDirection, const noise::CubeMap& continents);
 
