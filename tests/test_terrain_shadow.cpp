@@ -527,11 +527,13 @@ ImageRGBAF surfaceRadianceWith(const std::filesystem::path& shaders, const Sessi
 
 // The surface light takes the terrain's shadow from the samples (one pixel of each block,
 // render/terrain_shadow.frag) where those around a pixel agree on fully lit or fully
-// shadowed, and marches elsewhere. Against the march at every pixel (the surface light built
+// shadowed, and marches elsewhere: after the surface light, at the pixels it listed (render/
+// terrain_shadow_list.glsl; on a dry planet the list is the surface light's alone at the frame's
+// end, and holds the shadows' edges). Against the march at every pixel (the surface light built
 // with TERRAIN_SHADOW_FROM_SAMPLES 0), in the 'mountains' view at a 5 deg sun (long shadows,
 // many edges) and in 'ground' (the meadow under a 40 deg sun): the two frames are the same
 // but for shadows narrower than the samples' spacing that fall between them. Measured
-// (320x180, spacing 2): mountains 0.61 % of surface pixels differ, mean change 0.64 % of the
+// (320x180, spacing 2): mountains 0.68 % of surface pixels differ, mean change 0.64 % of the
 // mean luminance (margin 0.01 rad: 0.72 / 0.74 %; 0.1: 0.33 / 0.43 % at half again the cost);
 // ground 0 and 0 (no terrain shadow in view). Able to fail: samples that all say "lit" (the
 // sampling pass writing 1) leave the shadowed valleys lit (71 %, 110 %); a pixel taking its
@@ -562,6 +564,15 @@ TEST_F(TerrainShadowRender, TheSampledShadowIsTheMarchedOneButForSlivers) {
             EXPECT_GT(lit.meanRelative, 0.05);
         }
     }
+    Session dry = mountainsAtALowSun;
+    dry.scene.terrain.ocean = false;
+    Renderer r(test::repoPaths().shaders(), atmosphere::TableSizes::reduced(), dry.continents);
+    r.render(dry.scene, dry.camera, {320, 180});
+    const glm::uvec2 listed = r.targets().terrainShadowListCount();
+    std::printf("mountains at 5 deg, dry: %u pixels marched after the surface light (capacity %u)\n", listed.x,
+                listed.y);
+    EXPECT_GT(listed.x, 200u) << "the shadows' edges";
+    EXPECT_LT(listed.x, 320u * 180u / 4u) << "only where the samples disagree";
 }
 
 // The sea's surface takes the terrain's shadow from the samples' g channel (the march from sea
@@ -574,7 +585,7 @@ TEST_F(TerrainShadowRender, TheSampledShadowIsTheMarchedOneButForSlivers) {
 // samples' spacing. The samples hold both lit and shadowed water on the lake (2366 / 3825).
 // Measured: lake 0.007 % of surface pixels differ, mean under 0.0001 %; beach and sunset 0
 // and 0 (lit water only). Since the march runs after the ocean pass at the listed pixels
-// (ocean/sea_terrain_shadow.glsl), on the radiance the ocean kept as half floats, a marched pixel
+// (render/terrain_shadow_list.glsl), on the radiance the ocean kept as half floats, a marched pixel
 // is rounded twice: lake 0.19 % differ (by over 1e-3), mean 0.008 %; beach and sunset 0 and 0.
 // Able to fail: samples of the sea that all say "lit" leave the
 // range's shadow on the lake lit (55 % of pixels differ, mean 0.90 %: the sea's own light is
@@ -598,8 +609,8 @@ TEST_F(TerrainShadowRender, TheSeaTakesItsShadowFromTheSamplesButForSlivers) {
         sampling.render(s->scene, s->camera, size);
         const SampledAgainstMarched sampled = compareSurfaceRadiance(
             readTextureRGBAF(sampling.targets().surfaceRadiance(), size.x, size.y), reference, size);
-        // The pixels whose march ran after the ocean pass (ocean/sea_terrain_shadow.glsl), within the list.
-        const glm::uvec2 listed = sampling.targets().seaTerrainShadowListCount();
+        // The pixels whose march ran after the ocean pass (render/terrain_shadow_list.glsl), within the list.
+        const glm::uvec2 listed = sampling.targets().terrainShadowListCount();
         std::printf("%s: sampled: %.3f %% of surface pixels differ, mean %.4f %%; %u pixels marched after the ocean "
                     "(capacity %u)\n",
                     name, 100.0 * sampled.differing, 100.0 * sampled.meanRelative, listed.x, listed.y);

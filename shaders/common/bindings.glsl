@@ -23,7 +23,7 @@ const int BUFFER_SKY_REFINE = 5;    // the pixels the temporal reconstruction ma
 const int BUFFER_SEA_REFLECTION_LIST = 6;  // the sea's pixels that march their own reflection (ocean/sea_reflection.frag)
 const int BUFFER_TERRAIN_REFLECTION_LIST = 7;  // the sea's pixels that may reflect the terrain (ocean/terrain_reflection.glsl)
 const int BUFFER_OCEAN_GRID_POINTS = 8;      // the ocean grid's coordinates, a vec2 per point (src/grid/grid_mesh.h)
-const int BUFFER_SEA_TERRAIN_SHADOW_LIST = 9;  // the sea's pixels whose terrain shadow is marched after the ocean (ocean/sea_terrain_shadow.glsl)
+const int BUFFER_TERRAIN_SHADOW_LIST = 9;  // the sea's pixels whose terrain shadow is marched after the ocean (render/terrain_shadow_list.glsl)
 const int BUFFER_LAND_ON_SCREEN = 10;  // whether any ground above the sea is on screen (render/land_on_screen.glsl)
 
 // Image units (the passes that store into a frame target from a compute shader).

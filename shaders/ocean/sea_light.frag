@@ -68,7 +68,7 @@ layout(binding = UNIT_MESH_SURFACE_2) uniform sampler2D seaSurface2;
 layout(binding = UNIT_SEABED_RADIANCE) uniform sampler2D seabedRadiance;   // copy of the surface radiance
 layout(binding = UNIT_TERRAIN_SHADOW) uniform sampler2D terrainShadowSamples;  // g: the sea surface's (render/terrain_shadow.frag)
 #include "render/terrain_shadow_samples.glsl"
-#include "ocean/sea_terrain_shadow.glsl"
+#include "render/terrain_shadow_list.glsl"
 #define PIXEL_LIST_BINDING BUFFER_TERRAIN_REFLECTION_LIST
 #include "render/pixel_list.glsl"  // the terrain reflection's (ocean/terrain_reflection.glsl)
 #include "render/land_on_screen.glsl"
@@ -92,7 +92,7 @@ layout(location = 2) out vec4 outSeaSkyReflection;
 #define OCEAN_FOAM 1
 // 1: the terrain's shadow on the water from the terrain shadow's samples of the sea's surface
 // where they agree (render/terrain_shadow_samples.glsl), marched otherwise (after this pass:
-// ocean/sea_terrain_shadow.glsl); 0: marched at every pixel where land may be within reach
+// render/terrain_shadow_list.glsl); 0: marched at every pixel where land may be within reach
 // (tests compare the two).
 #define OCEAN_TERRAIN_SHADOW_FROM_SAMPLES 1
 
@@ -173,7 +173,7 @@ void main() {
     // march starting at sea level, not on the sea floor), formed once for the light into the
     // water and the glitter.
     float sunVisibility = 1.0;
-    bool marchLater = false;  // the terrain's shadow marched by ocean/sea_terrain_shadow.comp
+    bool marchLater = false;  // the terrain's shadow marched by render/terrain_shadow_list.comp
     float meanClearance = 1.0;  // the samples' mean clearance (rad), where no march can be had
     float radius = atmosphereUniforms.sunAngularRadius;
     // Lit while any of the sun's disc is above the horizon: the sun's irradiance fades out over its
@@ -184,7 +184,7 @@ void main() {
         sunVisibility = CloudSunTransmittance(point, sun, CLOUD_SHADOW_MAX_KM);
         // The terrain's march only where it may find land and the samples around the pixel do
         // not agree (a shadow's edge, the shore), and not here: the pixel is shaded as lit by the
-        // terrain and listed (ocean/sea_terrain_shadow.glsl), since a software renderer runs a
+        // terrain and listed (render/terrain_shadow_list.glsl), since a software renderer runs a
         // march's first turn for every pixel here, listed or not (README "Programs, not branches").
         bool mayReach = terrainShadowMayReachSea(up, sun, ocean.seaLevel, frame.planetRadius / M_PER_KM,
                                                  ocean.continentLipschitz, ocean.continentSampleSlackRad, terrainShape,
@@ -224,7 +224,7 @@ void main() {
         bool keepRest = dot(sunShare, vec3(1.0)) > 0.5 * dot(radiance, vec3(1.0));
         // At a shore fragment behind the land's edge (its pixel keeps the land's distance) or past
         // the list's capacity, the samples' mean visibility instead.
-        bool listed = !behindLand && listSeaTerrainShadow(pixel, seaDistance, sunShare, keepRest);
+        bool listed = !behindLand && listTerrainShadow(pixel, seaDistance, sunShare, keepRest);
         if (!listed)
             radiance -= sunShare * (1.0 - terrainShadowDiscShare(meanClearance, radius));
         else if (keepRest)

@@ -42,6 +42,7 @@ layout(binding = UNIT_TERRAIN_SHADOW) uniform sampler2D terrainShadowSamples;
 #include "render/terrain_shadow_samples.glsl"
 #include "render/surface_point.glsl"
 #include "render/land_on_screen.glsl"
+#include "render/terrain_shadow_list.glsl"
 
 // The stencil's test before the shader runs (it writes no depth; the stencil it tests is kept):
 // without this a shader that writes memory, as the mark of land on screen does, is tested after
@@ -66,23 +67,32 @@ vec3 shadingNormal(vec3 normal, vec3 sun, float slopeSpread) {
 
 // The share of the sun's disc the terrain leaves visible at the pixel's `point`: from the
 // samples (render/terrain_shadow.frag) around the pixel where they agree
-// (terrainClearanceFromSamples), marched here otherwise. A `facesSun` false pixel needs no
-// visibility (the sun does not light it) and marches none.
-float terrainVisibility(ivec2 pixel, vec3 point, bool facesSun) {
+// (terrainClearanceFromSamples); where they do not, `marchLater` and 1 (lit): the pixel is
+// listed and marched after this pass (render/terrain_shadow_list.glsl), not here, since a
+// software renderer runs a march's first turn for every pixel, marched or not (README
+// "Programs, not branches"); `meanVisibility`, the samples' mean, stands in where the list is
+// full. A `facesSun` false pixel needs no visibility (the sun does not light it) and marches none.
+// Built with TERRAIN_SHADOW_FROM_SAMPLES 0 (tests), every such pixel marches here.
+float terrainVisibility(ivec2 pixel, vec3 point, bool facesSun, out bool marchLater, out float meanVisibility) {
+    marchLater = false;
+    meanVisibility = 1.0;
     if (terrainShadows == 0) return 1.0;
     float radius = atmosphereUniforms.sunAngularRadius;
-    float clearance = TERRAIN_SHADOW_NO_SURFACE;
-    int marches = facesSun ? 1 : 0;
+    float clearance = 1.0;  // rad: lit
 #if TERRAIN_SHADOW_FROM_SAMPLES
-    if (terrainClearanceFromSamples(terrainShadowSamples, pixel, 0, radius, clearance)) marches = 0;
+    float meanClearance;
+    bool agree = terrainClearanceFromSamples(terrainShadowSamples, pixel, 0, radius, clearance, meanClearance);
+    marchLater = facesSun && !agree;
+    meanVisibility = terrainShadowDiscShare(meanClearance, radius);
+    if (!agree) clearance = 1.0;
+#else
+    for (int i = 0; i < (facesSun ? 1 : 0); ++i) clearance = TerrainShadowClearance(point, frame.sunDirection);
 #endif
-    // A loop of one turn or none, not an if: a software renderer runs both sides of an if,
-    // but skips a loop that none of its pixels enters.
-    for (int i = 0; i < marches; ++i) clearance = TerrainShadowClearance(point, frame.sunDirection);
     return terrainShadowDiscShare(clearance, radius);
 }
 
-// The light leaving the surface point of `pixel` (no air in it), `depthBelowSea` m under the sea.
+// The light leaving the surface point of `pixel` (no air in it), `depthBelowSea` m under the sea;
+// where the terrain's shadow is marched later, listed with the share of it the sun's light carries.
 vec3 surfaceRadiance(ivec2 pixel, SurfacePoint surface, float depthBelowSea) {
     vec3 point = surface.point;
     vec3 normal = normalize(surface.normalAndHeight.xyz);
@@ -93,14 +103,28 @@ vec3 surfaceRadiance(ivec2 pixel, SurfacePoint surface, float depthBelowSea) {
     vec3 sunIrradiance = SunAndSkyIrradianceUnshadowed(point, shading, frame.sunDirection, skyIrradiance);
     // The visibility only where the sun lights the surface at all (as SunAndSkyIrradiance).
     bool facesSun = dot(shading, frame.sunDirection) > 0.0;
+    bool marchLater;
+    float meanVisibility;
     float visibility = CloudSunTransmittance(point, frame.sunDirection, CLOUD_SHADOW_MAX_KM) *
-                       terrainVisibility(pixel, point, facesSun);
+                       terrainVisibility(pixel, point, facesSun, marchLater, meanVisibility);
     if (facesSun) sunIrradiance *= visibility;
     // The sky's share is linear in the normal's rise, (1 + n.up) / 2 (Bruneton's
     // GetSunAndSkyIrradiance): the mean normal's, not the shading normal's.
     skyIrradiance *= (1.0 + dot(normal, up)) / max(1.0 + dot(shading, up), 1.0e-3);
     lightUnderWater(depthBelowSea, dot(up, frame.sunDirection), sunIrradiance, skyIrradiance);
-    return albedo / PI * (sunIrradiance + skyIrradiance);
+    vec3 radiance = albedo / PI * (sunIrradiance + skyIrradiance);
+    if (marchLater) {
+        // The sun's share, lit; kept, or where it is most of the radiance (a half-float target
+        // would swamp what stays in full shadow) the rest, as the sea's light does.
+        vec3 sunShare = albedo / PI * sunIrradiance;
+        bool keepRest = dot(sunShare, vec3(1.0)) > 0.5 * dot(radiance, vec3(1.0));
+        bool listed = listTerrainShadow(pixel, surface.rayDistance, sunShare, keepRest);
+        if (!listed)
+            radiance -= sunShare * (1.0 - meanVisibility);
+        else if (keepRest)
+            radiance = max(radiance - sunShare, vec3(0.0));
+    }
+    return radiance;
 }
 
 void main() {

@@ -33,7 +33,7 @@ bool terrainClearanceFromSamples(sampler2D samples, ivec2 pixel, int channel, fl
     bool agree = lit || shadowed || onASample;
     if (agree) clearance = a;
     // The mean over the samples that show a surface (lit, 1 rad, where none does): a stand-in where
-    // no march can be had (ocean/sea_terrain_shadow.glsl).
+    // no march can be had (render/terrain_shadow_list.glsl).
     vec4 shows = vec4(greaterThan(vec4(a, b, c, d), vec4(0.5 * TERRAIN_SHADOW_NO_SURFACE)));
     float count = dot(shows, vec4(1.0));
     meanClearance = count > 0.0 ? dot(shows, vec4(a, b, c, d)) / count : 1.0;

@@ -15,13 +15,13 @@ namespace {
 #include "shaders/render/sample_spacing.glsl"
 
 constexpr GLsizeiptr kRefineListHeaderBytes = 16;  // render/pixel_list.glsl: groups x, y, z, count
-// ocean/sea_terrain_shadow.glsl: groups x, y, z, count, capacity, 3 unused; a uvec4 an entry.
-constexpr GLsizeiptr kSeaTerrainShadowHeaderBytes = 32;
-constexpr GLsizeiptr kSeaTerrainShadowEntryBytes = 16;
+// render/terrain_shadow_list.glsl: groups x, y, z, count, capacity, 3 unused; a uvec4 an entry.
+constexpr GLsizeiptr kTerrainShadowListHeaderBytes = 32;
+constexpr GLsizeiptr kTerrainShadowListEntryBytes = 16;
 // Every pixel of the frame (16 bytes a pixel): at a low sun over water among mountains most of
 // the sea may be listed (a fifth of the frame in the flooded valley's test), and with the
 // samples off (OCEAN_TERRAIN_SHADOW_FROM_SAMPLES 0) all of it.
-GLuint seaTerrainShadowCapacity(glm::ivec2 size) { return GLuint(std::max(1, size.x * size.y)); }
+GLuint terrainShadowListCapacity(glm::ivec2 size) { return GLuint(std::max(1, size.x * size.y)); }
 
 gl::Texture makeTexture(GLenum format, glm::ivec2 size, const char* label) {
     gl::Texture t(GL_TEXTURE_2D);
@@ -123,12 +123,12 @@ bool RenderTargets::resize(glm::ivec2 size) {
                                              nullptr, "sparse sky T, S, distance, history error");
     skyRefineList_ = makePixelList("sky refine list");
     seaReflectionList_ = makePixelList("sea reflection list");
-    seaTerrainShadowList_ = gl::Buffer();
-    glNamedBufferStorage(seaTerrainShadowList_.id(),
-                         kSeaTerrainShadowHeaderBytes + kSeaTerrainShadowEntryBytes * GLsizeiptr(seaTerrainShadowCapacity(size_)),
+    terrainShadowList_ = gl::Buffer();
+    glNamedBufferStorage(terrainShadowList_.id(),
+                         kTerrainShadowListHeaderBytes + kTerrainShadowListEntryBytes * GLsizeiptr(terrainShadowListCapacity(size_)),
                          nullptr, GL_DYNAMIC_STORAGE_BIT);
-    seaTerrainShadowList_.label("sea terrain shadow list");
-    clearSeaTerrainShadowList();
+    terrainShadowList_.label("sea terrain shadow list");
+    clearTerrainShadowList();
     terrainReflectionList_ = makePixelList("terrain reflection list");
     landOnScreen_ = gl::Buffer();
     glNamedBufferStorage(landOnScreen_.id(), sizeof(GLuint), nullptr, GL_DYNAMIC_STORAGE_BIT);
@@ -192,15 +192,15 @@ gl::Buffer RenderTargets::makePixelList(const char* label) const {
     return list;
 }
 
-void RenderTargets::clearSeaTerrainShadowList() const {
-    const GLuint header[8] = {0, 1, 1, 0, seaTerrainShadowCapacity(size_), 0, 0, 0};
-    glNamedBufferSubData(seaTerrainShadowList_.id(), 0, sizeof header, header);
+void RenderTargets::clearTerrainShadowList() const {
+    const GLuint header[8] = {0, 1, 1, 0, terrainShadowListCapacity(size_), 0, 0, 0};
+    glNamedBufferSubData(terrainShadowList_.id(), 0, sizeof header, header);
 }
 
-glm::uvec2 RenderTargets::seaTerrainShadowListCount() const {
+glm::uvec2 RenderTargets::terrainShadowListCount() const {
     glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
     GLuint header[8] = {};
-    glGetNamedBufferSubData(seaTerrainShadowList_.id(), 0, sizeof header, header);
+    glGetNamedBufferSubData(terrainShadowList_.id(), 0, sizeof header, header);
     return {header[3], header[4]};
 }
 

@@ -123,11 +123,11 @@ public:
     // The pixels listed for refinement (x, y), read back (a test's or bench's look, it waits).
     std::vector<glm::ivec2> readSkyRefineList() const { return readPixelList(skyRefineList_); }
     // The sea's pixels whose terrain shadow is marched after the ocean pass, with their distances
-    // and sun shares (shaders/ocean/sea_terrain_shadow.glsl): as many as the frame has pixels.
-    const gl::Buffer& seaTerrainShadowList() const { return seaTerrainShadowList_; }
-    void clearSeaTerrainShadowList() const;
+    // and sun shares (shaders/render/terrain_shadow_list.glsl): as many as the frame has pixels.
+    const gl::Buffer& terrainShadowList() const { return terrainShadowList_; }
+    void clearTerrainShadowList() const;
     // How many pixels asked to be listed in the last frame (beyond the capacity too), and the capacity.
-    glm::uvec2 seaTerrainShadowListCount() const;
+    glm::uvec2 terrainShadowListCount() const;
     // The sea's pixels that march their own reflection (ocean/sea_reflection.frag), as above.
     const gl::Buffer& seaReflectionList() const { return seaReflectionList_; }
     void clearSeaReflectionList() const { clearPixelList(seaReflectionList_); }
@@ -203,7 +203,7 @@ private:
     gl::Framebuffer surfaceRadianceFramebuffer_;
     gl::Buffer skyRefineList_;
     gl::Buffer seaReflectionList_;
-    gl::Buffer seaTerrainShadowList_;
+    gl::Buffer terrainShadowList_;
     gl::Buffer terrainReflectionList_;
     gl::Buffer landOnScreen_;
     gl::Texture surfaceStencil_{GL_TEXTURE_2D};

@@ -153,8 +153,9 @@ Renderer::Renderer(const std::filesystem::path& shaderRoot, const atmosphere::Ta
       seaReflection_(sources_, programTables_,
                      gl::ProgramDesc{"sea reflection", {"common/fullscreen.vert", "ocean/sea_reflection.frag"}},
                      {"SEA_REFLECTION_COMPOSE", "SEA_REFLECTION_LIST_ALL"}),
-      seaTerrainShadow_(sources_, programTables_,
-                        gl::ProgramDesc{"sea terrain shadow, listed pixels", {"ocean/sea_terrain_shadow.comp"}}),
+      terrainShadowListed_(sources_, programTables_,
+                           gl::ProgramDesc{"terrain shadow, listed pixels", {"render/terrain_shadow_list.comp"}},
+                           {"TERRAIN_SHADOW_LIST_GROUND"}),
       seaReflectionListed_(sources_, programTables_,
                            gl::ProgramDesc{"sea reflection, listed pixels", {"ocean/sea_reflection.comp"}}),
       terrainReflection_(sources_, programTables_,
@@ -234,10 +235,14 @@ std::vector<Renderer::Pass> Renderer::makePasses() {
     passes.push_back({{"surface light", {R::GBuffer, R::TerrainShadow}, {R::SurfaceRadiance}}, always,
                       [this](const Scene& s) {
                           targets_.clearSurface();
-                          // The lighting program marks ground above the sea on screen (render/land_on_screen.glsl).
+                          // The lighting program marks ground above the sea on screen (render/land_on_screen.glsl)
+                          // and lists the pixels whose terrain shadow is marched after it.
                           targets_.clearLandOnScreen();
                           glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding::BUFFER_LAND_ON_SCREEN,
                                            targets_.landOnScreen().id());
+                          targets_.clearTerrainShadowList();
+                          glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding::BUFFER_TERRAIN_SHADOW_LIST,
+                                           targets_.terrainShadowList().id());
                           glBindFramebuffer(GL_FRAMEBUFFER, targets_.surfaceFramebuffer());
                           const GBuffer& g = targets_.gbuffer();
                           glBindTextureUnit(binding::UNIT_GBUFFER_NORMAL, g.normal.id());
@@ -268,9 +273,18 @@ std::vector<Renderer::Pass> Renderer::makePasses() {
                           glUseProgram(surfaceLight_.get(variant).id());
                           drawScissored(lastPrepare_.groundBound, targets_.size());  // it discards elsewhere
                           if (darkApart) stencilOff();
+                          // The terrain's shadow at the pixels the lighting listed (a shadow's edge),
+                          // marched each on its own from the ground and taken from the radiance in
+                          // place, before the ocean copies what it sees through the water.
+                          glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT);
+                          glBindImageTexture(binding::IMAGE_SURFACE_RADIANCE, targets_.surfaceRadiance().id(), 0,
+                                             GL_FALSE, 0, GL_READ_WRITE, GL_RGBA16F);
+                          glBindTextureUnit(binding::UNIT_SURFACE_DISTANCE, targets_.surfaceDistance().id());
+                          glUseProgram(terrainShadowListed_.get(AtmosphereVariant{}, 1).id());
+                          dispatchOverList(targets_.terrainShadowList());
                       },
                       [this] {
-                          std::vector<gl::HotProgram*> p = builtVariants({&surfaceLight_});
+                          std::vector<gl::HotProgram*> p = builtVariants({&surfaceLight_, &terrainShadowListed_});
                           p.push_back(&seaFloorDark_.program());
                           return p;
                       }});
@@ -299,9 +313,9 @@ std::vector<Renderer::Pass> Renderer::makePasses() {
                           glBindTextureUnit(binding::UNIT_SEABED_RADIANCE, targets_.seabedRadiance().id());
                           glBindTextureUnit(binding::UNIT_TERRAIN_SHADOW, targets_.terrainShadowSamples().visibility.id());
                           targets_.bindMeshSurface();
-                          targets_.clearSeaTerrainShadowList();
-                          glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding::BUFFER_SEA_TERRAIN_SHADOW_LIST,
-                                           targets_.seaTerrainShadowList().id());
+                          targets_.clearTerrainShadowList();
+                          glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding::BUFFER_TERRAIN_SHADOW_LIST,
+                                           targets_.terrainShadowList().id());
                           // The light lists the pixels for the terrain reflection's search too, where
                           // ground above the sea is on screen (the surface light marked it).
                           targets_.clearTerrainReflectionList();
@@ -325,10 +339,10 @@ std::vector<Renderer::Pass> Renderer::makePasses() {
                           glBindTextureUnit(binding::UNIT_SURFACE_DISTANCE, targets_.surfaceDistance().id());
                           ocean_.bindBlock();
                           // (It reads neither the clouds nor the scattering table: one program.)
-                          glUseProgram(seaTerrainShadow_.get(AtmosphereVariant{}).id());
-                          dispatchOverList(targets_.seaTerrainShadowList());
+                          glUseProgram(terrainShadowListed_.get(AtmosphereVariant{}, 0).id());
+                          dispatchOverList(targets_.terrainShadowList());
                       },
-                      [this] { return withPrograms(ocean_.builtPrograms(), seaTerrainShadow_.built()); }});
+                      [this] { return ocean_.builtPrograms(); }});  // (the listed march: the surface light's)
     // The terrain in the sea's reflection: searched at the pixels where the ocean's light found
     // that land may lie within the reflected ray's reach and listed them (ocean/terrain_reflection.glsl),
     // a tenth of the sea from orbit, and only where some ground above the sea is on screen;
@@ -684,7 +698,7 @@ bool Renderer::matchAtmosphereTables() {
     seaFloorDark_.program().setSources(withAtmosphere(sources_, sizes));
     std::vector<gl::HotProgram*> rebuilt{&terrainShadow_.program(), &seaFloorDark_.program()};
     std::vector<AtmosphereProgram*> withTables = ocean_.atmospherePrograms();
-    for (AtmosphereProgram* p : {&surfaceLight_, &seaTerrainShadow_, &seaReflection_, &seaReflectionListed_,
+    for (AtmosphereProgram* p : {&surfaceLight_, &terrainShadowListed_, &seaReflection_, &seaReflectionListed_,
                                  &terrainReflection_, &sky_, &skySparse_, &skyTemporal_, &skyRefine_})
         withTables.push_back(p);
     for (AtmosphereProgram* p : withTables) {
