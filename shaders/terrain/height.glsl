@@ -315,11 +315,14 @@ float terrainHeightGradFiltered(vec3 unitDirection, TerrainShape shape, samplerC
     vec3 noiseGradient = vec3(0.0f);
     float noiseVariance = 0.0f;
     float noiseGradientVariance = 0.0f;
-    if (e >= 0.0f)  // the mountains only on land: the sea floor costs no noise
-        noise = terrainMountainsGradFiltered(unitDirection * shape.mountainFrequency + terrainXyz(shape.mountainOffset),
-                                             shape.mountainOctaves, shape.ridgedWeight,
-                                             footprint * shape.mountainFrequency, noiseGradient, noiseVariance,
-                                             noiseGradientVariance);
+    // The mountains only on land: the sea floor takes no octave. A count of none rather than an
+    // if: a software renderer runs an if's code for every pixel, every octave, but leaves the
+    // octaves' loop after its first turn where no pixel of a group is on land (the open sea:
+    // from orbit the far field's sea pixels and the terrain shadow's samples, about 3 ms).
+    int octaves = e >= 0.0f ? shape.mountainOctaves : 0;
+    noise = terrainMountainsGradFiltered(unitDirection * shape.mountainFrequency + terrainXyz(shape.mountainOffset),
+                                         octaves, shape.ridgedWeight, footprint * shape.mountainFrequency,
+                                         noiseGradient, noiseVariance, noiseGradientVariance);
     return terrainHeightFromParts(shape, e, continentGradient, noise, noiseGradient, noiseVariance,
                                   noiseGradientVariance, gradient, heightVariance, gradientVariance);
 }
