@@ -57,37 +57,14 @@ vec4 clipFromWorldPoint(vec3 pointFromCamera) {
 }
 vec4 clipFromWorldDirection(vec3 dir) { return frame.clipFromView * vec4(mat3(frame.viewFromWorld) * dir, 0.0); }
 
-// How far a ray from `heightM` above the planet radius, rising with sine sinRise, can still
-// meet terrain no higher than `topM`: beyond it the ray stands above that height (the sphere
-// falls away below it by t^2 / 2R too). Solves t sinRise + t^2 / 2R = climb in its
-// cancellation-free form.
-float reachBelowHeight(float topM, float heightM, float sinRise) {
-    float climb = max(topM - heightM, 0.0);
-    float s = max(sinRise, 0.0);
-    return 2.0 * climb / (sqrt(s * s + 2.0 * climb / frame.planetRadius) + s);
-}
-
-// How far the ray can still meet the highest mountain.
-float reachBelowPeaks(float heightM, float sinRise) { return reachBelowHeight(terrainShape.maxHeight, heightM, sinRise); }
-
-// How far the ray from the sea at `up` can still meet the land near it: within a reach r the
-// continent value is at most e(up) + L (1.25 r / R + slack) (the continents map's slope bound,
-// as in landMayLieWithin) and the land no higher than terrainHeightBound there, so the ray is
-// searched only until it stands above that. Each turn takes the reach below the bound over the
-// last reach, starting from the highest mountain's: the reaches fall towards the farthest point
-// t* where the ray meets the bound (t = reach(bound(t))), and every one of them is at least t*,
-// beyond which the ray stays above the bound. From orbit a coast's rays clear its lowlands in a
-// few kilometres, where the highest mountain's reach was tens; 0 where no land lies within it.
-const int REACH_TIGHTENINGS = 3;
+// How far the reflected ray from the sea at `up`, `heightM` above sea level, can still meet the
+// land near it, m (terrain/terrain_shadow.glsl's terrainReachBelowLandKm: below the highest the
+// land within the continents' slope bound may rise, not the highest mountain; 0 where no land
+// lies within it).
 float reachBelowLand(vec3 up, float heightM, float sinRise) {
-    float reach = reachBelowPeaks(heightM, sinRise);
-    if (!(ocean.continentLipschitz > 0.0)) return reach;
-    float e = continentValue(up, uContinents);
-    for (int i = 0; i < REACH_TIGHTENINGS; ++i) {
-        float eMax = e + ocean.continentLipschitz * (1.25 * reach / frame.planetRadius + ocean.continentSampleSlackRad);
-        reach = min(reach, reachBelowHeight(terrainHeightBound(terrainShape, eMax), heightM, sinRise));
-    }
-    return reach;
+    return M_PER_KM * terrainReachBelowLandKm(up, heightM, sinRise, 1.0e30, frame.planetRadius / M_PER_KM,
+                                              ocean.continentLipschitz, ocean.continentSampleSlackRad,
+                                              terrainShape, uContinents);
 }
 
 // The fraction u of the segment where it leaves the image ([-1, 1]^2 in NDC).

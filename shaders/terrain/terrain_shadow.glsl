@@ -154,16 +154,52 @@ bool landMayLieWithin(vec3 up, float reachKm, float seaLevelM, float planetRadiu
     return continentValue(up, continents) + continentLipschitz * reach >= 0.0f;
 }
 
+// How far a ray from `startM` above sea level, rising with sine sinRise, can still meet terrain
+// no higher than `topM`, km: beyond it the ray stands above that height (the sphere falls away
+// below it by t^2 / 2R too). Solves t sinRise + t^2 / 2R = climb in its cancellation-free form.
+float terrainReachBelowHeightKm(float topM, float startM, float sinRise, float planetRadiusKm) {
+    float climbKm = max(topM - startM, 0.0f) * 0.001f;
+    float s = max(sinRise, 0.0f);
+    return 2.0f * climbKm / (sqrt(s * s + 2.0f * climbKm / planetRadiusKm) + s);
+}
+
+// Turns of terrainReachBelowLandKm's tightening.
+const int TERRAIN_REACH_TIGHTENINGS = 3;
+
+// How far, at most `limitKm`, a ray from the surface point at `up`, `startM` above sea level,
+// rising with sine sinRise, can still meet the terrain near it, km (0: it cannot): within a reach
+// r the continent value is at most e(up) + L (1.25 r / R + slack) (the map's slope bound
+// `continentLipschitz` per radian, src/ocean/land_cull.h, over the reach x 1.25 for the ray's
+// curve over the sphere, plus `sampleSlackRad`, the filter's rounding of a sample's place), and
+// the terrain no higher than terrainHeightBound there. Each turn takes the reach below the bound
+// over the last reach, starting from the highest mountain's (or the limit): every turn's reach r
+// is one beyond which, up to the first, the ray stays above the bound (the bound over (r, r0]
+// is at most its value at r0, which the ray clears past the new reach). From orbit a coast's
+// rays clear its lowlands in a few kilometres, where the highest mountain's reach was tens.
+// No slope bound (0): the highest mountain's reach.
+float terrainReachBelowLandKm(vec3 up, float startM, float sinRise, float limitKm, float planetRadiusKm,
+                              float continentLipschitz, float sampleSlackRad, TerrainShape shape,
+                              samplerCube continents) {
+    float reach = min(terrainReachBelowHeightKm(shape.maxHeight, startM, sinRise, planetRadiusKm), limitKm);
+    if (!(continentLipschitz > 0.0f)) return reach;
+    float e = continentValue(up, continents);
+    for (int i = 0; i < TERRAIN_REACH_TIGHTENINGS; i++) {
+        float eMax = e + continentLipschitz * (1.25f * reach / planetRadiusKm + sampleSlackRad);
+        reach = min(reach, terrainReachBelowHeightKm(terrainHeightBound(shape, eMax), startM, sinRise, planetRadiusKm));
+    }
+    return reach;
+}
+
 // Whether the terrain may shadow the sea's surface at `up` (the march from `seaLevelM`, at or
-// above 0): false where the continent value stays below 0 (the sea floor, never above sea
-// level 0) all along the sun's ray as far as the march reaches (until the ray clears the
-// highest terrain, at most TERRAIN_SHADOW_MAX_KM), by the map's slope bound
-// `continentLipschitz` (per radian; src/ocean/land_cull.h) over the reach x 1.25 (the ray's
-// curve over the sphere) plus `sampleSlackRad` (the filter's rounding of a sample's place).
-// The open sea then pays no march: a dozen height fields a pixel, which doubled the ocean pass
-// where nothing could shadow it. A sea level below 0, or no slope bound, always marches.
+// above 0): false where the sun's ray stands above all the land near it may rise to
+// (terrainReachBelowLandKm's reach is 0) as far as the march reaches (at most
+// TERRAIN_SHADOW_MAX_KM): along a sea floor (continent value below 0, never above sea level 0),
+// and along low coasts. The open sea then pays no march: a dozen height fields a pixel, which
+// doubled the ocean pass where nothing could shadow it. A sea level below 0, or no slope bound,
+// always marches.
 bool terrainShadowMayReachSea(vec3 up, vec3 sun, float seaLevelM, float planetRadiusKm, float continentLipschitz,
                               float sampleSlackRad, TerrainShape shape, samplerCube continents) {
-    float reachKm = min(TERRAIN_SHADOW_MAX_KM, (shape.maxHeight - seaLevelM) * 0.001f / max(dot(up, sun), 1e-4f));
-    return landMayLieWithin(up, reachKm, seaLevelM, planetRadiusKm, continentLipschitz, sampleSlackRad, continents);
+    if (seaLevelM < 0.0f || !(continentLipschitz > 0.0f)) return true;
+    return terrainReachBelowLandKm(up, seaLevelM, dot(up, sun), TERRAIN_SHADOW_MAX_KM, planetRadiusKm,
+                                   continentLipschitz, sampleSlackRad, shape, continents) > 0.0f;
 }
