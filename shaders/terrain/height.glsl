@@ -291,13 +291,19 @@ const float TERRAIN_MOUNTAINS_BOUND = 1.1f;
 // continents map's slope bound, the most that land within a distance of a point can rise
 // (ocean/screen_space_reflections.glsl's reachBelowLand): near a coast a few hundred metres,
 // where maxHeight is 8 km.
+// (terrainHeightFromParts's height alone, both sides formed and one picked: it runs per pixel,
+// where a software renderer would run both sides of an if anyway, and their gradients for nothing.)
 float terrainHeightBound(TerrainShape shape, float e) {
-    vec3 none = vec3(0.0f);
-    vec3 gradient;
-    float heightVariance;
-    float gradientVariance;
-    return terrainHeightFromParts(shape, e, none, 1.0f, none, TERRAIN_MOUNTAINS_BOUND - 1.0f, 0.0f, gradient,
-                                  heightVariance, gradientVariance);
+    float coastSlope = terrainCoastSlope(shape);
+    float unused;
+    float mSea = shape.oceanDepth > 0.0f ? coastSlope * TERRAIN_SHELF_WIDTH / shape.oceanDepth : 0.0f;
+    float sea = -shape.oceanDepth * terrainCoastRamp(-e / TERRAIN_SHELF_WIDTH, mSea, unused);
+    float lowlandHeight = TERRAIN_LOWLAND_SHARE * shape.maxHeight;
+    float mLand = lowlandHeight > 0.0f ? coastSlope * TERRAIN_LOWLAND_WIDTH / lowlandHeight : 0.0f;
+    float inland = terrainSmoothstepGrad(0.0f, TERRAIN_INLAND_WIDTH, e, unused);
+    float land = lowlandHeight * terrainCoastRamp(e / TERRAIN_LOWLAND_WIDTH, mLand, unused) +
+                 shape.maxHeight * (1.0f - TERRAIN_LOWLAND_SHARE) * inland * TERRAIN_MOUNTAINS_BOUND;
+    return clamp(e < 0.0f ? sea : land, -shape.oceanDepth, shape.maxHeight);
 }
 
 // Height above sea level in metres at a direction, in [-oceanDepth, maxHeight], and its
