@@ -600,8 +600,8 @@ TEST_F(TerrainShadowRender, TheSeaTakesItsShadowFromTheSamplesButForSlivers) {
         test::shadersWith("planet_test_sea_shadow_marched", "ocean/sea_light.frag",
                           "#define OCEAN_TERRAIN_SHADOW_FROM_SAMPLES 1", "#define OCEAN_TERRAIN_SHADOW_FROM_SAMPLES 0");
     const std::filesystem::path allLit = test::shadersWith(
-        "planet_test_sea_samples_lit", "render/terrain_shadow.frag",
-        "outClearance.g = TerrainShadowClearanceAbove(seaPoint, ocean.seaLevel, sun);", "outClearance.g = 1.0;");
+        "planet_test_sea_samples_lit", "render/terrain_shadow_sea.comp",
+        "clearance.g = TerrainShadowClearanceAbove(seaPoint, ocean.seaLevel, frame.sunDirection);", "clearance.g = 1.0;");
     const Session lake = lakeAtALowSun(kLakeSunAzimuthDeg);
     const Session beach = loadSession(test::repoPaths(), "earth", "beach");
     const Session sunset = loadSession(test::repoPaths(), "earth", "sunset");
@@ -635,9 +635,13 @@ TEST_F(TerrainShadowRender, TheSeaTakesItsShadowFromTheSamplesButForSlivers) {
             lit += clearance.pixels[i + 1] >= radius;
             shadowed += clearance.pixels[i + 1] <= -radius && clearance.pixels[i + 1] > -1.0e29f;
         }
-        std::printf("lake: samples of the sea's surface lit %d, shadowed %d\n", lit, shadowed);
+        // Marched after the sampling pass at the samples it listed (render/terrain_shadow_sea.comp).
+        const std::size_t marchedSamples = sampling.targets().readTerrainShadowSeaSamples().size();
+        std::printf("lake: samples of the sea's surface lit %d, shadowed %d; %zu marched after the sampling pass\n", lit,
+                    shadowed, marchedSamples);
         EXPECT_GT(lit, 100);
         EXPECT_GT(shadowed, 100);
+        EXPECT_GE(marchedSamples, std::size_t(shadowed));
         const SampledAgainstMarched lit_ = compareSurfaceRadiance(surfaceRadianceWith(allLit, *s, size), reference, size);
         std::printf("lake: samples all lit: %.3f %% differ, mean %.4f %%\n", 100.0 * lit_.differing,
                     100.0 * lit_.meanRelative);

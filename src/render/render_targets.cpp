@@ -130,6 +130,7 @@ bool RenderTargets::resize(glm::ivec2 size) {
     terrainShadowList_.label("sea terrain shadow list");
     clearTerrainShadowList();
     terrainReflectionList_ = makePixelList("terrain reflection list");
+    terrainShadowSeaSamples_ = makePixelList("terrain shadow sea samples list");
     landOnScreen_ = gl::Buffer();
     glNamedBufferStorage(landOnScreen_.id(), sizeof(GLuint), nullptr, GL_DYNAMIC_STORAGE_BIT);
     landOnScreen_.label("land on screen");

@@ -153,6 +153,8 @@ Renderer::Renderer(const std::filesystem::path& shaderRoot, const atmosphere::Ta
       seaReflection_(sources_, programTables_,
                      gl::ProgramDesc{"sea reflection", {"common/fullscreen.vert", "ocean/sea_reflection.frag"}},
                      {"SEA_REFLECTION_COMPOSE", "SEA_REFLECTION_LIST_ALL"}),
+      terrainShadowSea_(sources_, programTables_,
+                        gl::ProgramDesc{"terrain shadow, sea samples", {"render/terrain_shadow_sea.comp"}}),
       terrainShadowListed_(sources_, programTables_,
                            gl::ProgramDesc{"terrain shadow, listed pixels", {"render/terrain_shadow_list.comp"}},
                            {"TERRAIN_SHADOW_LIST_GROUND"}),
@@ -221,14 +223,28 @@ std::vector<Renderer::Pass> Renderer::makePasses() {
                           glBindTextureUnit(binding::UNIT_GBUFFER_NORMAL, g.normal.id());
                           glBindTextureUnit(binding::UNIT_GBUFFER_DEPTH, g.depth.id());
                           ocean_.bindBlock();  // the sea's level and its land bounds (the g channel)
+                          targets_.clearTerrainShadowSeaSamples();
+                          glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding::BUFFER_TERRAIN_SHADOW_SEA_SAMPLES,
+                                           targets_.terrainShadowSeaSamples().id());
                           glBindVertexArray(emptyVertexArray_.id());
                           glUseProgram(terrainShadow_.program().id());
                           // The samples that the pixels which can see the ground read around them.
                           drawScissored(blocksAround(lastPrepare_.groundBound, samples.spacing, samples.size),
                                         samples.size);
                           glViewport(0, 0, targets_.size().x, targets_.size().y);
+                          // The sea's march at the samples the pass listed (land within the sun
+                          // ray's reach), each on its own.
+                          glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT |
+                                          GL_FRAMEBUFFER_BARRIER_BIT);
+                          glBindImageTexture(binding::IMAGE_TERRAIN_SHADOW_SAMPLES, samples.visibility.id(), 0, GL_FALSE,
+                                             0, GL_READ_WRITE, GL_RG32F);
+                          glUseProgram(terrainShadowSea_.get(AtmosphereVariant{}).id());
+                          dispatchOverList(targets_.terrainShadowSeaSamples());
+                          glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
                       },
-                      [this] { return std::vector<gl::HotProgram*>{&terrainShadow_.program()}; }});
+                      [this] {
+                          return withPrograms({&terrainShadow_.program()}, terrainShadowSea_.built());
+                      }});
     // Reads the terrain shadow's samples only when the preset's terrain.shadows is on (the
     // block's terrainShadows), which is when that pass runs; so does the ocean (their g: the
     // sea's surface).
@@ -698,8 +714,8 @@ bool Renderer::matchAtmosphereTables() {
     seaFloorDark_.program().setSources(withAtmosphere(sources_, sizes));
     std::vector<gl::HotProgram*> rebuilt{&terrainShadow_.program(), &seaFloorDark_.program()};
     std::vector<AtmosphereProgram*> withTables = ocean_.atmospherePrograms();
-    for (AtmosphereProgram* p : {&surfaceLight_, &terrainShadowListed_, &seaReflection_, &seaReflectionListed_,
-                                 &terrainReflection_, &sky_, &skySparse_, &skyTemporal_, &skyRefine_})
+    for (AtmosphereProgram* p : {&surfaceLight_, &terrainShadowSea_, &terrainShadowListed_, &seaReflection_,
+                                 &seaReflectionListed_, &terrainReflection_, &sky_, &skySparse_, &skyTemporal_, &skyRefine_})
         withTables.push_back(p);
     for (AtmosphereProgram* p : withTables) {
         p->setTableSizes(sizes);
