@@ -21,6 +21,7 @@
 #include <fstream>
 #include <sstream>
 #include <variant>
+#include <vector>
 
 #include "app/session.h"
 #include "gl_test_support.h"
@@ -379,5 +380,35 @@ TEST_F(OceanReflections, RaysWhoseReachSpansUnderAPixelAreNotSearched) {
             EXPECT_GE(double(listed), 0.8 * double(listedWithout));
             EXPECT_EQ(cmp.maxRelativeError, 0.0);
         }
+    }
+}
+
+// The grid's reflection (ocean/grid_reflection.comp, the sea's sky and clouds from high up) is
+// not marched at points where no sea can lie in the four cells around them (land above the
+// highest crest as far as the farthest neighbour, by the continents' slope bound): no fragment
+// reads them. The frames are the same as with every point marched, from orbit and over a
+// continent's interior 400 km up (where most points are skipped). Able to fail: a bound that
+// skips a point a coast's pixels read leaves those pixels without their sky.
+TEST_F(OceanReflections, TheGridsReflectionIsNotMarchedWhereNoSeaCanLieAndThatChangesNoPixel) {
+    const fs::path everyPoint = test::shadersWith("planet_test_grid_reflection_all", "ocean/grid_reflection.comp",
+                                                  "k < (seaMayLieAround(x, y, n) ? 1 : 0)", "k < 1");
+    Session inland = loadSession(test::repoPaths(), "earth", "orbit");
+    View v = inland.view;
+    v.latitude_deg = 30.0;  // the `ground` view's meadow, from orbit, looking down
+    v.longitude_deg = -84.0;
+    v.pitch_deg = -60.0;
+    applyView(v, inland);
+    const Session orbit = loadSession(test::repoPaths(), "earth", "orbit");
+    for (const Session* s : std::vector<const Session*>{&orbit, &inland}) {
+        SCOPED_TRACE(s == &orbit ? "orbit" : "inland");
+        Renderer gated(test::repoPaths().shaders(), atmosphere::TableSizes::reduced(), s->continents);
+        gated.render(s->scene, s->camera, kSize);
+        Renderer all(everyPoint, atmosphere::TableSizes::reduced(), s->continents);
+        all.render(s->scene, s->camera, kSize);
+        const ImageComparison cmp = compareImages(readTextureRGBAF(gated.targets().hdr(), kSize.x, kSize.y),
+                                                  readTextureRGBAF(all.targets().hdr(), kSize.x, kSize.y));
+        std::printf("%s: max change %.3g %%\n", s == &orbit ? "orbit" : "inland", 100.0 * cmp.maxRelativeError);
+        EXPECT_EQ(cmp.nonFinitePixels, 0u);
+        EXPECT_EQ(cmp.maxRelativeError, 0.0);
     }
 }
