@@ -183,7 +183,10 @@ float terrainReachBelowLandKm(vec3 up, float startM, float sinRise, float limitK
     float reach = min(terrainReachBelowHeightKm(shape.maxHeight, startM, sinRise, planetRadiusKm), limitKm);
     if (!(continentLipschitz > 0.0f)) return reach;
     float e = continentValue(up, continents);
-    for (int i = 0; i < TERRAIN_REACH_TIGHTENINGS; i++) {
+    // Until the reach is 0 (no land near enough to rise into the ray): the open sea leaves after
+    // the first turn, and a group of pixels all at open sea with it (a software renderer runs a
+    // loop's turns while any pixel of the group is still in it; every turn here ran per sea pixel).
+    for (int i = 0; i < TERRAIN_REACH_TIGHTENINGS && reach > 0.0f; i++) {
         float eMax = e + continentLipschitz * (1.25f * reach / planetRadiusKm + sampleSlackRad);
         reach = min(reach, terrainReachBelowHeightKm(terrainHeightBound(shape, eMax), startM, sinRise, planetRadiusKm));
     }
