@@ -18,7 +18,7 @@ layout(std140, binding = BLOCK_OCEAN) uniform OceanBlock {
     float continentLipschitz;    // per radian, with a safety factor
     int landCulling;             // 0: off (tests compare with it on)
     // How far the filter may move a sample's place on the map, rad: its weight rounding, 1/32
-    // of a texel (src/ocean/land_cull.h), for the slope bounds (landMayLieWithin).
+    // of a texel (src/ocean/land_cull.h), for the slope bounds (terrainReachBelowLandKm).
     float continentSampleSlackRad;
     float padding0, padding1, padding2;  // to the C++ mirror's 64 bytes
 } ocean;

@@ -154,7 +154,7 @@ ScreenReflection searchScreenReflection(vec3 origin, vec3 dir, float reach, ivec
 // Whether the terrain may be reflected along `reflected` from the sea at `up`, heightM above
 // the planet radius and distanceM from the camera: whether the ray's reach below the highest
 // mountain spans a pixel on screen, and land may lie within it (terrain/terrain_shadow.glsl's
-// landMayLieWithin, the continents map's slope bound). A segment of length L seen from at least
+// terrainReachBelowLandKm, the continents map's slope bound). A segment of length L seen from at least
 // D - L away subtends at most L / (D - L) rad: under a pixel, the search could only meet the
 // pixel it starts from or its neighbour (from space, 22 km pixels against a few km of reach).
 // There the reflection covers at most that share of a coast pixel (the sea within reach of

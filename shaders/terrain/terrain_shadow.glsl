@@ -141,19 +141,6 @@ float terrainSunVisibility(vec3 point, vec3 sun, float planetRadiusKm, float sun
                                      shape, continents);
 }
 
-// Whether any ground above sea level (`seaLevelM`, at or above 0) may lie within `reachKm` of
-// the sea's point at `up`: false where the continent value stays below 0 (the sea floor, never
-// above sea level 0) everywhere that close, by the map's slope bound `continentLipschitz` (per
-// radian; src/ocean/land_cull.h) over the reach x 1.25 (a ray's curve over the sphere) plus
-// `sampleSlackRad` (the filter's rounding of a sample's place). A sea level below 0, or no slope
-// bound, says true.
-bool landMayLieWithin(vec3 up, float reachKm, float seaLevelM, float planetRadiusKm, float continentLipschitz,
-                      float sampleSlackRad, samplerCube continents) {
-    if (seaLevelM < 0.0f || !(continentLipschitz > 0.0f)) return true;
-    float reach = 1.25f * reachKm / planetRadiusKm + sampleSlackRad;
-    return continentValue(up, continents) + continentLipschitz * reach >= 0.0f;
-}
-
 // How far a ray from `startM` above sea level, rising with sine sinRise, can still meet terrain
 // no higher than `topM`, km: beyond it the ray stands above that height (the sphere falls away
 // below it by t^2 / 2R too). Solves t sinRise + t^2 / 2R = climb in its cancellation-free form.

@@ -26,7 +26,7 @@ struct OceanBlock {
     float continentLipschitz;  // per radian: the filtered map's steepest slope, with a safety factor
     int landCulling;           // 0: off (tests compare with it on)
     // How far the GPU's filter may move a sample's place on the map, radians (land_cull.h's
-    // continentSampleSlackRad), for the shaders' slope bounds (landMayLieWithin).
+    // continentSampleSlackRad), for the shaders' slope bounds (terrainReachBelowLandKm).
     float continentSampleSlackRad;
     float padding0, padding1, padding2;
 };

@@ -181,6 +181,20 @@ Renderer::Renderer(const std::filesystem::path& shaderRoot, const atmosphere::Ta
     if (!problems.empty()) throw std::logic_error("frame pass order: " + problems.front());
 }
 
+// The terrain's shadow at the pixels a pass listed (render/terrain_shadow_list.glsl), marched each
+// on its own from the ground or from sea level and taken from the surface radiance in place. (It
+// reads neither the clouds nor the scattering table: one program per start.)
+void Renderer::marchListedTerrainShadow(bool fromGround) {
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT |
+                    GL_TEXTURE_FETCH_BARRIER_BIT);
+    glBindImageTexture(binding::IMAGE_SURFACE_RADIANCE, targets_.surfaceRadiance().id(), 0, GL_FALSE, 0, GL_READ_WRITE,
+                       GL_RGBA16F);
+    glBindTextureUnit(binding::UNIT_SURFACE_DISTANCE, targets_.surfaceDistance().id());
+    ocean_.bindBlock();
+    glUseProgram(terrainShadowListed_.get(AtmosphereVariant{}, fromGround ? 1 : 0).id());
+    dispatchOverList(targets_.terrainShadowList());
+}
+
 std::vector<Renderer::Pass> Renderer::makePasses() {
     auto always = [](const Scene&) { return true; };
     std::vector<Pass> passes;
@@ -290,14 +304,8 @@ std::vector<Renderer::Pass> Renderer::makePasses() {
                           drawScissored(lastPrepare_.groundBound, targets_.size());  // it discards elsewhere
                           if (darkApart) stencilOff();
                           // The terrain's shadow at the pixels the lighting listed (a shadow's edge),
-                          // marched each on its own from the ground and taken from the radiance in
-                          // place, before the ocean copies what it sees through the water.
-                          glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT);
-                          glBindImageTexture(binding::IMAGE_SURFACE_RADIANCE, targets_.surfaceRadiance().id(), 0,
-                                             GL_FALSE, 0, GL_READ_WRITE, GL_RGBA16F);
-                          glBindTextureUnit(binding::UNIT_SURFACE_DISTANCE, targets_.surfaceDistance().id());
-                          glUseProgram(terrainShadowListed_.get(AtmosphereVariant{}, 1).id());
-                          dispatchOverList(targets_.terrainShadowList());
+                          // marched from the ground before the ocean copies what it sees through the water.
+                          marchListedTerrainShadow(true);
                       },
                       [this] {
                           std::vector<gl::HotProgram*> p = builtVariants({&surfaceLight_, &terrainShadowListed_});
@@ -346,17 +354,8 @@ std::vector<Renderer::Pass> Renderer::makePasses() {
                           drawScissored(lastPrepare_.groundBound, targets_.size());  // the sea lies within it
                           glEndConditionalRender();
                           stencilOff();
-                          // The terrain's shadow at the pixels the sea listed (a shadow's edge near
-                          // land), marched each on its own and taken from the radiance in place.
-                          glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT |
-                                          GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
-                          glBindImageTexture(binding::IMAGE_SURFACE_RADIANCE, targets_.surfaceRadiance().id(), 0,
-                                             GL_FALSE, 0, GL_READ_WRITE, GL_RGBA16F);
-                          glBindTextureUnit(binding::UNIT_SURFACE_DISTANCE, targets_.surfaceDistance().id());
-                          ocean_.bindBlock();
-                          // (It reads neither the clouds nor the scattering table: one program.)
-                          glUseProgram(terrainShadowListed_.get(AtmosphereVariant{}, 0).id());
-                          dispatchOverList(targets_.terrainShadowList());
+                          // The terrain's shadow at the pixels the sea listed (a shadow's edge near land).
+                          marchListedTerrainShadow(false);
                       },
                       [this] { return ocean_.builtPrograms(); }});  // (the listed march: the surface light's)
     // The terrain in the sea's reflection: searched at the pixels where the ocean's light found

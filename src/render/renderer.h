@@ -229,6 +229,7 @@ private:
         std::function<std::vector<gl::HotProgram*>()> programs;  // for hot reload
     };
     std::vector<Pass> makePasses();
+    void marchListedTerrainShadow(bool fromGround);  // the terrain shadow list's compute pass
     void prepare(const Scene& scene, const Camera& camera, glm::ivec2 size);
     // The variant of the programs that read the atmosphere for this frame (the last prepare()'s),
     // and the sky passes' (with the terrain's shadows in the air where the preset asks for them).
