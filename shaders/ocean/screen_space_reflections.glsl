@@ -151,9 +151,8 @@ ScreenReflection searchScreenReflection(vec3 origin, vec3 dir, float reach, ivec
     return hit;
 }
 
-// Whether the terrain may be reflected along `reflected` from the sea at `up`, heightM above
-// the planet radius and distanceM from the camera: whether the ray's reach below the highest
-// mountain spans a pixel on screen, and land may lie within it (terrain/terrain_shadow.glsl's
+// Whether the terrain may be reflected along a ray from the sea distanceM from the camera:
+// whether the ray's reach below the highest mountain spans a pixel on screen, and land may lie within it (terrain/terrain_shadow.glsl's
 // terrainReachBelowLandKm, the continents map's slope bound). A segment of length L seen from at least
 // D - L away subtends at most L / (D - L) rad: under a pixel, the search could only meet the
 // pixel it starts from or its neighbour (from space, 22 km pixels against a few km of reach).
@@ -162,12 +161,13 @@ ScreenReflection searchScreenReflection(vec3 origin, vec3 dir, float reach, ivec
 // over the whole pixel: left out, the pixel is nearer the truth wherever that share is under
 // half (tests/test_ocean_reflections.cpp: from space only coast pixels change, 0.008 % of the
 // frame's luminance on average).
-bool terrainMayBeReflected(vec3 up, vec3 reflected, float heightM, float distanceM, float pixelAngle) {
+// `reachM`: the reflected ray's reachBelowLand (the sea's light forms it with the sun's, at once:
+// terrain/terrain_shadow.glsl's terrainReachesBelowLandKm).
+bool terrainMayBeReflected(float reachM, float distanceM, float pixelAngle) {
 #if OCEAN_SCREEN_SPACE_REFLECTIONS
     if (TERRAIN_REFLECTION_SEARCH_ALL != 0) return true;
-    float reach = reachBelowLand(up, heightM, dot(reflected, up));
-    if (TERRAIN_REFLECTION_PIXEL_REACH != 0 && reach < pixelAngle * (distanceM - reach)) return false;
-    return reach > 0.0;
+    if (TERRAIN_REFLECTION_PIXEL_REACH != 0 && reachM < pixelAngle * (distanceM - reachM)) return false;
+    return reachM > 0.0;
 #else
     return false;
 #endif

@@ -165,7 +165,13 @@ void main() {
     // sea reflection pass (the clouds' change, but as a flat mirror, which has it) and the
     // terrain reflection pass, which searches the terrain where it may be reflected instead.
     outSeaReflection = vec4(reflected, coverage * fresnel);
-    if (terrainMayBeReflected(up, reflected, ocean.seaLevel, seaDistance, pixelAngle)) {
+    // How far the reflected ray (x) and the sun's (y) can still meet land near the pixel, km, both
+    // at once (one continent value, one loop of turns).
+    vec2 reachKm = terrainReachesBelowLandKm(up, ocean.seaLevel, vec2(dot(reflected, up), dot(up, sun)),
+                                             vec2(1.0e30, TERRAIN_SHADOW_MAX_KM), frame.planetRadius / M_PER_KM,
+                                             ocean.continentLipschitz, ocean.continentSampleSlackRad, terrainShape,
+                                             uContinents);
+    if (terrainMayBeReflected(reachKm.x * M_PER_KM, seaDistance, pixelAngle)) {
         outSeaSkyReflection = vec4(sky, seaDistance);
         if (landOnScreen != 0u || TERRAIN_REFLECTION_SEARCH_ALL != 0) listPixel(pixel);
     }
@@ -186,9 +192,7 @@ void main() {
         // not agree (a shadow's edge, the shore), and not here: the pixel is shaded as lit by the
         // terrain and listed (render/terrain_shadow_list.glsl), since a software renderer runs a
         // march's first turn for every pixel here, listed or not (README "Programs, not branches").
-        bool mayReach = terrainShadowMayReachSea(up, sun, ocean.seaLevel, frame.planetRadius / M_PER_KM,
-                                                 ocean.continentLipschitz, ocean.continentSampleSlackRad, terrainShape,
-                                                 uContinents);
+        bool mayReach = terrainShadowMayReachSeaWithin(reachKm.y, ocean.seaLevel, ocean.continentLipschitz);
         float clearance = 1.0;  // rad: lit, where no land is within reach
         // (Without shadows, or built without them, the march finds the sun clear.)
         marchLater = SUN_VISIBILITY_TERRAIN != 0 && mayReach && terrainShadows != 0;

@@ -12,6 +12,7 @@
 //   ...
 //   #undef OUT
 //   }
+using vec2 = glm::vec2;
 using vec3 = glm::vec3;
 using vec4 = glm::vec4;
 using samplerCube = const noise::CubeMap&;
