@@ -68,4 +68,5 @@ const int UNIT_SEA_REFLECTION_SAMPLES = 27; // RGBA16F, half size: the clouds' c
 const int UNIT_MESH_SURFACE_0 = 30;         // RGBA32F x 3: what a mesh's fragments leave for a pass over its pixels (terrain/mesh_surface.glsl)
 const int UNIT_MESH_SURFACE_1 = 31;
 const int UNIT_MESH_SURFACE_2 = 32;
+const int UNIT_CONTINENT_MAX = 33;          // R32F cube map, a mip level per level (src/terrain/continent_bound.h)
 const int UNIT_OCEAN_GRID_REFLECTION = 29;  // RGBA32F N x N, bilinear: the reflection at the ocean grid's points (ocean/sea_light.frag)

@@ -28,7 +28,8 @@ out ivec2 tcPoint[];
 
 // Whether the patch lies under the sea floor's dark depths throughout, where the sea is drawn over
 // it from above (terrainDarkFloorCulling; src/ocean/land_cull.h): its centre's continent value plus
-// the map's steepest slope times its angular radius (terrain/grid.glsl) below the value under
+// the map's steepest slope times its angular radius (terrain/grid.glsl), or the map's maxima
+// over it (src/terrain/continent_bound.h), below the value under
 // which the ground is surely SEA_FLOOR_DARK_DEPTH_M under the sea (ocean/water.glsl). Its light
 // through that much water is none, the ocean's water path there comes from the depth below the
 // sea, and the passes after the ocean see the sea: not drawing it changes no pixel (tests), and
@@ -40,12 +41,15 @@ bool underDarkSea() {
     vec3 centre;
     float radius = patchAngularRadius(g, d, centre);
     float e = continentValue(centre, uContinents);
-    float bound = e + terrainContinentLipschitz * radius;
+    // The slope bound, or the continents' maxima over the patch where tighter (from orbit: the
+    // slope bound over a patch hundreds of kilometres across says nothing).
+    float bound = min(e + terrainContinentLipschitz * radius,
+                      continentMaxWithin(centre, radius, terrainContinentMaxRadius));
     // A patch too large for that bound (from orbit) by its 4x4 parts, where its centre is dark
     // itself (terrain/patch_continents.glsl; a loop that other patches do not enter: land, the shelf).
     for (int k = 0; k < (bound >= terrainPatchDarkContinent && e < terrainPatchDarkContinent ? 1 : 0); ++k) {
         float lowest;
-        patchContinentRange(g, radius, terrainContinentLipschitz, lowest, bound);
+        patchContinentRange(g, radius, terrainContinentLipschitz, terrainContinentMaxRadius, lowest, bound);
     }
     return bound < terrainPatchDarkContinent;
 }

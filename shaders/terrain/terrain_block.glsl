@@ -16,7 +16,7 @@ layout(std140, binding = BLOCK_TERRAIN) uniform TerrainBlock {
     float terrainPatchDarkContinent;
     float terrainContinentLipschitz;
     int terrainDarkFloorCulling;    // 0: off
-    int terrainPadding1;
+    float terrainContinentMaxRadius;  // rad: the continents' maxima bound patches up to this radius; 0: not read
 };
 // The height field near the camera, formed in double each frame (terrain/height.glsl
 // TerrainNear; C++: terrain::makeTerrainNear).

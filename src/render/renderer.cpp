@@ -585,6 +585,7 @@ void Renderer::prepare(const Scene& scene, const Camera& camera, glm::ivec2 size
     continents_->update(scene.terrain);  // nothing when the session's ground already brought it up to date
     report.continentsUpdated = continents_->textureStale();
     glBindTextureUnit(binding::UNIT_CONTINENTS, continents_->texture().id());
+    glBindTextureUnit(binding::UNIT_CONTINENT_MAX, continents_->maxTexture().id());
     // Filter across cube faces as the CPU's sampleContinents does.
     glEnable(GL_TEXTURE_CUBE_MAP_SEAMLESS);
 

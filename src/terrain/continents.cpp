@@ -4,6 +4,7 @@
 #include <string>
 #include <utility>
 
+#include "terrain/continent_bound.h"
 #include "terrain/height.h"
 
 namespace planet::terrain {
@@ -32,6 +33,7 @@ bool Continents::update(const TerrainParams& params) {
     params_ = wanted;
     size_ = params.continent_map_size;
     textureStale_ = true;
+    maxTexture_.reset();
     ++loads_;
     return true;
 }
@@ -45,8 +47,15 @@ const gl::Texture& Continents::texture() {
     return *texture_;
 }
 
+const gl::Texture& Continents::maxTexture() {
+    if (!map_) throw std::logic_error("terrain::Continents::maxTexture() before update()");
+    if (!maxTexture_) maxTexture_ = makeContinentMaxTexture(buildContinentMaxPyramid(*map_));
+    return *maxTexture_;
+}
+
 void Continents::releaseTexture() {
     texture_.reset();
+    maxTexture_.reset();
     textureStale_ = true;
 }
 

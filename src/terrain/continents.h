@@ -45,6 +45,9 @@ public:
     // was made in: an owner that outlives the renderer's context (the session's) must have
     // its texture released while the context is there (the Renderer's destructor).
     void releaseTexture();
+    // The map's maxima (src/terrain/continent_bound.h) as a cube map with a mip level per level,
+    // built and uploaded on first use after each update(). Needs a GL context.
+    const gl::Texture& maxTexture();
     // Whether the next texture() uploads a new map.
     bool textureStale() const { return textureStale_; }
     // How many times the map was loaded or baked (tests: once per change).
@@ -56,6 +59,7 @@ private:
     std::optional<noise::ContinentParams> params_;  // what map_ was made from
     int size_ = 0;
     std::optional<gl::Texture> texture_;  // made by texture(): creating a GL object needs a context
+    std::optional<gl::Texture> maxTexture_;  // made by maxTexture()
     bool textureStale_ = true;
     int loads_ = 0;
 };

@@ -28,13 +28,16 @@ struct TerrainBlock {
     float patchDarkContinent;
     float continentLipschitz;         // per radian, the ocean's (src/ocean/land_cull.h)
     int darkFloorCulling;             // 0: off (no sea drawn, the camera under it, tests)
-    int padding1;
+    // The largest patch radius (rad) the continents' maxima bound (src/terrain/continent_bound.h):
+    // the patch's bound is also the pyramid's over it; 0: the slope bound alone.
+    float continentMaxRadius;
 };
 static_assert(offsetof(TerrainBlock, lowlandAlbedo) == 48 && offsetof(TerrainBlock, targetEdgePixels) == 60 &&
                   offsetof(TerrainBlock, hasOcean) == 64 &&
                   offsetof(TerrainBlock, shadows) == 68 && offsetof(TerrainBlock, padding0) == 72 &&
                   offsetof(TerrainBlock, lightShafts) == 76 && offsetof(TerrainBlock, patchDarkContinent) == 80 &&
-                  offsetof(TerrainBlock, darkFloorCulling) == 88 && sizeof(TerrainBlock) == 96,
+                  offsetof(TerrainBlock, darkFloorCulling) == 88 &&
+                  offsetof(TerrainBlock, continentMaxRadius) == 92 && sizeof(TerrainBlock) == 96,
               "TerrainBlock must match std140 (shaders/terrain/terrain_block.glsl)");
 
 inline TerrainBlock makeTerrainBlock(const Scene& scene) {

@@ -6,6 +6,7 @@
 #include <string_view>
 
 #include "render/bindings.h"
+#include "terrain/continent_bound.h"
 #include "terrain/detail_texture.h"
 #include "terrain/height.h"
 #include "terrain/terrain_block.h"
@@ -183,11 +184,13 @@ void TerrainPass::useMaterialProgram(bool detailed) {
         glUniform1fv(lostVariance, static_cast<GLsizei>(detailLostVariance_.size()), detailLostVariance_.data());
 }
 
-void TerrainPass::setDarkFloorCulling(double patchDarkContinent, double continentLipschitz) {
+void TerrainPass::setDarkFloorCulling(double patchDarkContinent, double continentLipschitz, bool continentMaxima) {
     struct {
         float patchDarkContinent, continentLipschitz;
         int darkFloorCulling;
-    } cull{static_cast<float>(patchDarkContinent), static_cast<float>(continentLipschitz), 1};
+        float continentMaxRadius;
+    } cull{static_cast<float>(patchDarkContinent), static_cast<float>(continentLipschitz), 1,
+           continentMaxima ? static_cast<float>(terrain::kContinentMaxRadiusRad) : 0.0f};
     glNamedBufferSubData(block_.id(), offsetof(terrain::TerrainBlock, patchDarkContinent), sizeof cull, &cull);
 }
 
