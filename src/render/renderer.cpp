@@ -316,7 +316,10 @@ std::vector<Renderer::Pass> Renderer::makePasses() {
                       [](const Scene& s) { return s.terrain.ocean; },
                       [this](const Scene& s) {
                           targets_.copySeabed();
-                          targets_.clearSeaReflection();
+                          // The sea's light writes both at every sea pixel; the terrain reflection reads
+                          // only those, the sea reflection pass the blocks around them too (0 past the
+                          // sea). Two RGBA32F targets: 4 ms of the pass at orbit, 1280x720.
+                          if (seaReflectionRuns(s)) targets_.clearSeaReflection();
                           targets_.clearSeaStencil();
                           // The sea's mesh first: which pixels show the sea and where its water is
                           // (the sea surface's G-buffer), marked in the stencil; then the water's
@@ -384,9 +387,7 @@ std::vector<Renderer::Pass> Renderer::makePasses() {
     // Only where the ocean's per-pixel program ran with clouds in the sky: from high up the
     // flat mirror has them from the grid, and from below the sea reflects nothing of them.
     passes.push_back({{"sea reflection", {R::SurfaceRadiance, R::SeaReflection}, {R::SurfaceRadiance}},
-                      [this](const Scene& s) {
-                          return s.terrain.ocean && s.clouds.enabled && !ocean_.flatMirror() && !lastPrepare_.underWater;
-                      },
+                      [this](const Scene& s) { return seaReflectionRuns(s); },
                       [this](const Scene& s) {
                           // Nothing to do where the ocean drew no pixel (an inland view): its
                           // draws skipped on the GPU, and the list left empty dispatches no group.
@@ -692,6 +693,10 @@ void Renderer::tonemapRadiance(const ImageRGBAF& radiance) {
 }
 
 bool Renderer::stillProgram() const { return lastPrepare_.stillFrame && stillFrameProgram_; }
+
+bool Renderer::seaReflectionRuns(const Scene& s) const {
+    return s.terrain.ocean && s.clouds.enabled && !ocean_.flatMirror() && !lastPrepare_.underWater;
+}
 
 AtmosphereVariant Renderer::variantFor(const Scene& scene) const {
     return AtmosphereVariant{scene.atmosphere.elek_3d_table, false, lastPrepare_.cloudFarField, lastPrepare_.cloudsOff};

@@ -237,6 +237,9 @@ private:
     AtmosphereVariant skyVariantFor(const Scene& scene) const;
     // Whether the sky's reconstruction and refine run their still-frame programs (STILL_FRAME) this frame.
     bool stillProgram() const;
+    // Whether the sea reflection pass runs this frame (the clouds in the sea's reflection, marched
+    // at the ocean's per-pixel program's pixels).
+    bool seaReflectionRuns(const Scene& scene) const;
     bool historyUsable(const Scene& scene, const Camera& camera, bool resized) const;
     // Space around the air's bound where it does not fill the frame (render/sky_space.frag), in
     // up to four scissored bands: the sky passes then run scissored to the bound.
