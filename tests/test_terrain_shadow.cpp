@@ -541,15 +541,15 @@ ImageRGBAF surfaceRadianceWith(const std::filesystem::path& shaders, const Sessi
 // (320x180, spacing 2): mountains 0.68 % of surface pixels differ, mean change 0.64 % of the
 // mean luminance (margin 0.01 rad: 0.72 / 0.74 %; 0.1: 0.33 / 0.43 % at half again the cost);
 // ground 0 and 0 (no terrain shadow in view). Able to fail: samples that all say "lit" (the
-// sampling pass writing 1) leave the shadowed valleys lit (71 %, 110 %); a pixel taking its
+// marches after the sampling pass writing 1) leave the shadowed valleys lit (71 %, 110 %); a pixel taking its
 // nearest sample alone, not the corners around it, 4.9 % and 5.5 %.
 TEST_F(TerrainShadowRender, TheSampledShadowIsTheMarchedOneButForSlivers) {
     const std::filesystem::path marched = test::shadersWith(
         "planet_test_shadow_marched", "render/surface_light.frag", "#define TERRAIN_SHADOW_FROM_SAMPLES 1",
         "#define TERRAIN_SHADOW_FROM_SAMPLES 0");
     const std::filesystem::path allLit = test::shadersWith(
-        "planet_test_shadow_samples_lit", "render/terrain_shadow.frag",
-        "outClearance.r = TerrainShadowClearance(s.point, sun);", "outClearance.r = 1.0;");
+        "planet_test_shadow_samples_lit", "render/terrain_shadow_sample_marches.comp",
+        "if (onGround) clearance.r = c;", "if (onGround) clearance.r = 1.0;");
     Session ground = loadSession(test::repoPaths(), "earth", "ground");
     ground.scene.clouds.enabled = false;
     const Session mountainsAtALowSun = mountains(kSunElevationDeg, kSunAzimuthDeg, true);
@@ -600,8 +600,8 @@ TEST_F(TerrainShadowRender, TheSeaTakesItsShadowFromTheSamplesButForSlivers) {
         test::shadersWith("planet_test_sea_shadow_marched", "ocean/sea_light.frag",
                           "#define OCEAN_TERRAIN_SHADOW_FROM_SAMPLES 1", "#define OCEAN_TERRAIN_SHADOW_FROM_SAMPLES 0");
     const std::filesystem::path allLit = test::shadersWith(
-        "planet_test_sea_samples_lit", "render/terrain_shadow_sea.comp",
-        "clearance.g = TerrainShadowClearanceAbove(seaPoint, ocean.seaLevel, frame.sunDirection);", "clearance.g = 1.0;");
+        "planet_test_sea_samples_lit", "render/terrain_shadow_sample_marches.comp",
+        "else clearance.g = c;", "else clearance.g = 1.0;");
     const Session lake = lakeAtALowSun(kLakeSunAzimuthDeg);
     const Session beach = loadSession(test::repoPaths(), "earth", "beach");
     const Session sunset = loadSession(test::repoPaths(), "earth", "sunset");
@@ -635,8 +635,8 @@ TEST_F(TerrainShadowRender, TheSeaTakesItsShadowFromTheSamplesButForSlivers) {
             lit += clearance.pixels[i + 1] >= radius;
             shadowed += clearance.pixels[i + 1] <= -radius && clearance.pixels[i + 1] > -1.0e29f;
         }
-        // Marched after the sampling pass at the samples it listed (render/terrain_shadow_sea.comp).
-        const std::size_t marchedSamples = sampling.targets().readTerrainShadowSeaSamples().size();
+        // Marched after the sampling pass at the samples it listed (render/terrain_shadow_sample_marches.comp).
+        const std::size_t marchedSamples = sampling.targets().readTerrainShadowSampleMarches().size();
         std::printf("lake: samples of the sea's surface lit %d, shadowed %d; %zu marched after the sampling pass\n", lit,
                     shadowed, marchedSamples);
         EXPECT_GT(lit, 100);

@@ -25,14 +25,14 @@ const int BUFFER_TERRAIN_REFLECTION_LIST = 7;  // the sea's pixels that may refl
 const int BUFFER_OCEAN_GRID_POINTS = 8;      // the ocean grid's coordinates, a vec2 per point (src/grid/grid_mesh.h)
 const int BUFFER_TERRAIN_SHADOW_LIST = 9;  // the sea's pixels whose terrain shadow is marched after the ocean (render/terrain_shadow_list.glsl)
 const int BUFFER_LAND_ON_SCREEN = 10;  // whether any ground above the sea is on screen (render/land_on_screen.glsl)
-const int BUFFER_TERRAIN_SHADOW_SEA_SAMPLES = 11;  // the terrain shadow's samples marched on the sea after the pass (render/terrain_shadow_sea.comp)
+const int BUFFER_TERRAIN_SHADOW_SAMPLE_MARCHES = 11;  // the terrain shadow's samples marched after the pass (render/terrain_shadow_sample_marches.comp)
 
 // Image units (the passes that store into a frame target from a compute shader).
 const int IMAGE_HDR_RADIANCE = 0;   // RGBA16F radiance arriving at the camera
 const int IMAGE_SKY_MEDIUM = 1;     // RGBA32UI the sky passes' T, S and samples (render/sky_medium.glsl)
 const int IMAGE_SURFACE_RADIANCE = 2;  // RGBA16F radiance leaving the surface (ocean/sea_reflection.comp adds to it)
 const int IMAGE_SEA_REFLECTION = 3;    // RGBA32F the sea's reflected ray and weight (ocean/terrain_reflection.comp lowers it)
-const int IMAGE_TERRAIN_SHADOW_SAMPLES = 5;  // RG32F the terrain shadow's samples (render/terrain_shadow_sea.comp writes g)
+const int IMAGE_TERRAIN_SHADOW_SAMPLES = 5;  // RG32F the terrain shadow's samples (render/terrain_shadow_sample_marches.comp writes g)
 const int IMAGE_OCEAN_GRID_REFLECTION = 4;  // RGBA32F N x N: the reflection at the ocean grid's points (ocean/grid_reflection.comp)
 
 // Texture units.

@@ -21,13 +21,17 @@ layout(std430, binding = PIXEL_LIST_BINDING) buffer PixelList {
     uint pixels[];  // x | y << 16
 } pixelList;
 
-void listPixel(ivec2 pixel) {
+// With two flags (bits 30 and 31 of the entry: y stays under 16384) for what the compute pass is
+// to do there (render/terrain_shadow_sample_marches.comp: which of two marches).
+void listPixelWithFlags(ivec2 pixel, uint flags) {
     uint i = atomicAdd(pixelList.count, 1u);
-    pixelList.pixels[i] = uint(pixel.x) | (uint(pixel.y) << 16);
+    pixelList.pixels[i] = uint(pixel.x) | (uint(pixel.y) << 16) | (flags << 30);
     if (i % PIXEL_LIST_GROUP_SIZE == 0u) atomicAdd(pixelList.groupsX, 1u);  // the first of a new group
 }
+void listPixel(ivec2 pixel) { listPixelWithFlags(pixel, 0u); }
 
 ivec2 listedPixel(uint i) {
     uint p = pixelList.pixels[i];
-    return ivec2(p & 0xffffu, p >> 16);
+    return ivec2(p & 0xffffu, (p >> 16) & 0x3fffu);
 }
+uint listedFlags(uint i) { return pixelList.pixels[i] >> 30; }

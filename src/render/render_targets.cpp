@@ -130,7 +130,7 @@ bool RenderTargets::resize(glm::ivec2 size) {
     terrainShadowList_.label("sea terrain shadow list");
     clearTerrainShadowList();
     terrainReflectionList_ = makePixelList("terrain reflection list");
-    terrainShadowSeaSamples_ = makePixelList("terrain shadow sea samples list");
+    terrainShadowSampleMarches_ = makePixelList("terrain shadow sample marches list");
     landOnScreen_ = gl::Buffer();
     glNamedBufferStorage(landOnScreen_.id(), sizeof(GLuint), nullptr, GL_DYNAMIC_STORAGE_BIT);
     landOnScreen_.label("land on screen");
@@ -232,7 +232,7 @@ std::vector<glm::ivec2> RenderTargets::readPixelList(const gl::Buffer& list) con
                                 packed.data());
     std::vector<glm::ivec2> pixels;
     pixels.reserve(packed.size());
-    for (GLuint p : packed) pixels.emplace_back(int(p & 0xffffu), int(p >> 16));
+    for (GLuint p : packed) pixels.emplace_back(int(p & 0xffffu), int((p >> 16) & 0x3fffu));  // (flags above)
     return pixels;
 }
 

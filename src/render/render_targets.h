@@ -136,10 +136,11 @@ public:
     const gl::Buffer& terrainReflectionList() const { return terrainReflectionList_; }
     void clearTerrainReflectionList() const { clearPixelList(terrainReflectionList_); }
     std::vector<glm::ivec2> readTerrainReflectionList() const { return readPixelList(terrainReflectionList_); }
-    // The terrain shadow's samples marched on the sea after the sampling pass (render/terrain_shadow_sea.comp).
-    const gl::Buffer& terrainShadowSeaSamples() const { return terrainShadowSeaSamples_; }
-    void clearTerrainShadowSeaSamples() const { clearPixelList(terrainShadowSeaSamples_); }
-    std::vector<glm::ivec2> readTerrainShadowSeaSamples() const { return readPixelList(terrainShadowSeaSamples_); }
+    // The terrain shadow's samples marched after the sampling pass, on the ground, the sea or both
+    // (render/terrain_shadow_sample_marches.comp; the entries' flags: render/pixel_list.glsl).
+    const gl::Buffer& terrainShadowSampleMarches() const { return terrainShadowSampleMarches_; }
+    void clearTerrainShadowSampleMarches() const { clearPixelList(terrainShadowSampleMarches_); }
+    std::vector<glm::ivec2> readTerrainShadowSampleMarches() const { return readPixelList(terrainShadowSampleMarches_); }
     // Whether any ground above the sea is on screen (one uint, render/land_on_screen.glsl).
     const gl::Buffer& landOnScreen() const { return landOnScreen_; }
     void clearLandOnScreen() const;
@@ -210,7 +211,7 @@ private:
     gl::Buffer terrainShadowList_;
     gl::Buffer terrainReflectionList_;
     gl::Buffer landOnScreen_;
-    gl::Buffer terrainShadowSeaSamples_;
+    gl::Buffer terrainShadowSampleMarches_;
     gl::Texture surfaceStencil_{GL_TEXTURE_2D};
     gl::Framebuffer surfaceFramebuffer_;
     gl::Framebuffer hdrFramebuffer_;

@@ -153,8 +153,8 @@ Renderer::Renderer(const std::filesystem::path& shaderRoot, const atmosphere::Ta
       seaReflection_(sources_, programTables_,
                      gl::ProgramDesc{"sea reflection", {"common/fullscreen.vert", "ocean/sea_reflection.frag"}},
                      {"SEA_REFLECTION_COMPOSE", "SEA_REFLECTION_LIST_ALL"}),
-      terrainShadowSea_(sources_, programTables_,
-                        gl::ProgramDesc{"terrain shadow, sea samples", {"render/terrain_shadow_sea.comp"}}),
+      terrainShadowMarches_(sources_, programTables_,
+                        gl::ProgramDesc{"terrain shadow, sample marches", {"render/terrain_shadow_sample_marches.comp"}}),
       terrainShadowListed_(sources_, programTables_,
                            gl::ProgramDesc{"terrain shadow, listed pixels", {"render/terrain_shadow_list.comp"}},
                            {"TERRAIN_SHADOW_LIST_GROUND"}),
@@ -237,9 +237,9 @@ std::vector<Renderer::Pass> Renderer::makePasses() {
                           glBindTextureUnit(binding::UNIT_GBUFFER_NORMAL, g.normal.id());
                           glBindTextureUnit(binding::UNIT_GBUFFER_DEPTH, g.depth.id());
                           ocean_.bindBlock();  // the sea's level and its land bounds (the g channel)
-                          targets_.clearTerrainShadowSeaSamples();
-                          glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding::BUFFER_TERRAIN_SHADOW_SEA_SAMPLES,
-                                           targets_.terrainShadowSeaSamples().id());
+                          targets_.clearTerrainShadowSampleMarches();
+                          glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding::BUFFER_TERRAIN_SHADOW_SAMPLE_MARCHES,
+                                           targets_.terrainShadowSampleMarches().id());
                           glBindVertexArray(emptyVertexArray_.id());
                           glUseProgram(terrainShadow_.program().id());
                           // The samples that the pixels which can see the ground read around them.
@@ -252,12 +252,12 @@ std::vector<Renderer::Pass> Renderer::makePasses() {
                                           GL_FRAMEBUFFER_BARRIER_BIT);
                           glBindImageTexture(binding::IMAGE_TERRAIN_SHADOW_SAMPLES, samples.visibility.id(), 0, GL_FALSE,
                                              0, GL_READ_WRITE, GL_RG32F);
-                          glUseProgram(terrainShadowSea_.get(AtmosphereVariant{}).id());
-                          dispatchOverList(targets_.terrainShadowSeaSamples());
+                          glUseProgram(terrainShadowMarches_.get(AtmosphereVariant{}).id());
+                          dispatchOverList(targets_.terrainShadowSampleMarches());
                           glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
                       },
                       [this] {
-                          return withPrograms({&terrainShadow_.program()}, terrainShadowSea_.built());
+                          return withPrograms({&terrainShadow_.program()}, terrainShadowMarches_.built());
                       }});
     // Reads the terrain shadow's samples only when the preset's terrain.shadows is on (the
     // block's terrainShadows), which is when that pass runs; so does the ocean (their g: the
@@ -719,7 +719,7 @@ bool Renderer::matchAtmosphereTables() {
     seaFloorDark_.program().setSources(withAtmosphere(sources_, sizes));
     std::vector<gl::HotProgram*> rebuilt{&terrainShadow_.program(), &seaFloorDark_.program()};
     std::vector<AtmosphereProgram*> withTables = ocean_.atmospherePrograms();
-    for (AtmosphereProgram* p : {&surfaceLight_, &terrainShadowSea_, &terrainShadowListed_, &seaReflection_,
+    for (AtmosphereProgram* p : {&surfaceLight_, &terrainShadowMarches_, &terrainShadowListed_, &seaReflection_,
                                  &seaReflectionListed_, &terrainReflection_, &sky_, &skySparse_, &skyTemporal_, &skyRefine_})
         withTables.push_back(p);
     for (AtmosphereProgram* p : withTables) {

@@ -260,7 +260,7 @@ private:
     AtmosphereProgram surfaceLight_;
     OceanPass ocean_;
     AtmosphereProgram seaReflection_;  // mode SEA_REFLECTION_COMPOSE: the samples' spread (ocean/sea_reflection.frag)
-    AtmosphereProgram terrainShadowSea_;  // the terrain shadow's listed samples on the sea (render/terrain_shadow_sea.comp)
+    AtmosphereProgram terrainShadowMarches_;  // the terrain shadow's listed samples (render/terrain_shadow_sample_marches.comp)
     AtmosphereProgram terrainShadowListed_;  // the terrain's shadow at the listed pixels, the ground's (mode 1) and the sea's (render/terrain_shadow_list.comp)
     AtmosphereProgram seaReflectionListed_;  // the pixels the spread could not serve (ocean/sea_reflection.comp)
     AtmosphereProgram terrainReflection_;      // their search (ocean/terrain_reflection.comp)
