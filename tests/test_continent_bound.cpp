@@ -2,6 +2,7 @@
 // map everywhere in it, seams and corners of the cube included, and it is tight enough to drop the
 // open sea's floor from orbit (tests/test_ocean_culling.cpp has the frames).
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <limits>
@@ -49,7 +50,10 @@ TEST(ContinentBound, LevelsCoverTheCapsTheyAreAskedFor) {
 TEST(ContinentBound, TheMaximaBoundTheMapOverEveryCap) {
     const Session s = loadSession(test::repoPaths(), "earth", "orbit");
     const noise::CubeMap& map = s.ground.continents();
+    const auto start = std::chrono::steady_clock::now();
     const terrain::ContinentMaxPyramid pyramid = terrain::buildContinentMaxPyramid(map);
+    std::printf("the pyramid of a %d map built in %.0f ms\n", map.size,
+                std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
     ASSERT_EQ(pyramid.size, map.size);
     ASSERT_EQ(pyramid.levels.size(), std::size_t(terrain::kContinentMaxLevels));
     std::mt19937 rng(11);
