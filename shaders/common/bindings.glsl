@@ -32,7 +32,7 @@ const int IMAGE_HDR_RADIANCE = 0;   // RGBA16F radiance arriving at the camera
 const int IMAGE_SKY_MEDIUM = 1;     // RGBA32UI the sky passes' T, S and samples (render/sky_medium.glsl)
 const int IMAGE_SURFACE_RADIANCE = 2;  // RGBA16F radiance leaving the surface (ocean/sea_reflection.comp adds to it)
 const int IMAGE_SEA_REFLECTION = 3;    // RGBA32F the sea's reflected ray and weight (ocean/terrain_reflection.comp lowers it)
-const int IMAGE_TERRAIN_SHADOW_SAMPLES = 5;  // RG32F the terrain shadow's samples (render/terrain_shadow_sample_marches.comp writes g)
+const int IMAGE_TERRAIN_SHADOW_SAMPLES = 5;  // RG32F the terrain shadow's samples (render/terrain_shadow_sample_marches.comp writes the marched ones)
 const int IMAGE_OCEAN_GRID_REFLECTION = 4;  // RGBA32F N x N: the reflection at the ocean grid's points (ocean/grid_reflection.comp)
 
 // Texture units.

@@ -71,7 +71,7 @@ void main() {
                                             uContinents);
         outClearance.g = 1.0;  // lit where no land is within reach, or the sun is down (no sunlight to shade)
     }
-    // (The sea's: 4.5 ms at `orbit`.) Flags: 1 the ground's march (r), 2 the sea's (g).
+    // (The sea's march there cost 4.5 ms at `orbit`.) The entry's flags: 1 the ground's march (r), 2 the sea's (g).
     uint marches = (groundMarch ? 1u : 0u) | (mayReach ? 2u : 0u);
     if (marches != 0u) listPixelWithFlags(ivec2(gl_FragCoord.xy), marches);
 }

@@ -197,21 +197,18 @@ float terrainReachBelowLandKm(vec3 up, float startM, float sinRise, float limitK
         .x;
 }
 
-// Whether the terrain may shadow the sea's surface at `up` (the march from `seaLevelM`, at or
-// above 0): false where the sun's ray stands above all the land near it may rise to
-// (terrainReachBelowLandKm's reach is 0) as far as the march reaches (at most
-// TERRAIN_SHADOW_MAX_KM): along a sea floor (continent value below 0, never above sea level 0),
-// and along low coasts. The open sea then pays no march: a dozen height fields a pixel, which
-// doubled the ocean pass where nothing could shadow it. A sea level below 0, or no slope bound,
-// always marches.
-// Whether the sun's reach below the land (terrainReachBelowLandKm's, at most TERRAIN_SHADOW_MAX_KM)
-// lets the terrain shadow the sea (for a caller that formed the reach with another).
+// Whether the terrain may shadow the sea's surface, given the sun's ray's reach below the land
+// near it (terrainReachBelowLandKm's, at most TERRAIN_SHADOW_MAX_KM; the sea's light forms it with
+// its reflected ray's): false where the ray stands above all the land near it may rise to as far as
+// the march reaches: along a sea floor (continent value below 0, never above sea level 0), and along
+// low coasts. The open sea then pays no march: a dozen height fields a pixel, which doubled the
+// ocean pass where nothing could shadow it. A sea level below 0, or no slope bound, always marches.
 bool terrainShadowMayReachSeaWithin(float reachKm, float seaLevelM, float continentLipschitz) {
     return seaLevelM < 0.0f || !(continentLipschitz > 0.0f) || reachKm > 0.0f;
 }
+// The same at the sea's point `up` (the march from `seaLevelM`), the reach formed here.
 bool terrainShadowMayReachSea(vec3 up, vec3 sun, float seaLevelM, float planetRadiusKm, float continentLipschitz,
                               float sampleSlackRad, TerrainShape shape, samplerCube continents) {
-    if (seaLevelM < 0.0f || !(continentLipschitz > 0.0f)) return true;
     return terrainShadowMayReachSeaWithin(terrainReachBelowLandKm(up, seaLevelM, dot(up, sun), TERRAIN_SHADOW_MAX_KM,
                                                                   planetRadiusKm, continentLipschitz, sampleSlackRad,
                                                                   shape, continents),

@@ -40,7 +40,7 @@ float texelsAround(const noise::CubeMap& map, glm::dvec3 direction) {
 
 int levelCount(int size) {
     int levels = 1;
-    while (levels < kContinentMaxLevels && (size >> levels) >= 1 && (1 << levels) <= size) ++levels;
+    while (levels < kContinentMaxLevels && (1 << levels) <= size) ++levels;
     return levels;
 }
 

@@ -29,7 +29,7 @@ struct TerrainBlock {
     float continentLipschitz;         // per radian, the ocean's (src/ocean/land_cull.h)
     int darkFloorCulling;             // 0: off (no sea drawn, the camera under it, tests)
     // The largest patch radius (rad) the continents' maxima bound (src/terrain/continent_bound.h):
-    // the patch's bound is also the pyramid's over it; 0: the slope bound alone.
+    // the patch's bound is also the pyramid's over it; 0 (culling off): not read.
     float continentMaxRadius;
 };
 static_assert(offsetof(TerrainBlock, lowlandAlbedo) == 48 && offsetof(TerrainBlock, targetEdgePixels) == 60 &&

@@ -184,13 +184,13 @@ void TerrainPass::useMaterialProgram(bool detailed) {
         glUniform1fv(lostVariance, static_cast<GLsizei>(detailLostVariance_.size()), detailLostVariance_.data());
 }
 
-void TerrainPass::setDarkFloorCulling(double patchDarkContinent, double continentLipschitz, bool continentMaxima) {
+void TerrainPass::setDarkFloorCulling(double patchDarkContinent, double continentLipschitz) {
     struct {
         float patchDarkContinent, continentLipschitz;
         int darkFloorCulling;
         float continentMaxRadius;
     } cull{static_cast<float>(patchDarkContinent), static_cast<float>(continentLipschitz), 1,
-           continentMaxima ? static_cast<float>(terrain::kContinentMaxRadiusRad) : 0.0f};
+           static_cast<float>(terrain::kContinentMaxRadiusRad)};
     glNamedBufferSubData(block_.id(), offsetof(terrain::TerrainBlock, patchDarkContinent), sizeof cull, &cull);
 }
 

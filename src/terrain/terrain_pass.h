@@ -77,9 +77,9 @@ public:
     // sea floor's dark depths (their continent values below patchDarkContinent by the map's slope
     // bound, per radian) are not drawn this frame (shaders/terrain/terrain.tesc). Off again at the
     // next prepare().
-    // continentMaxima: the patches' bound also the continents' maxima over them (UNIT_CONTINENT_MAX,
-    // src/terrain/continent_bound.h), where the slope bound alone keeps most of the sea floor from orbit.
-    void setDarkFloorCulling(double patchDarkContinent, double continentLipschitz, bool continentMaxima = true);
+    // The patches' bound is also the continents' maxima over them where tighter (UNIT_CONTINENT_MAX,
+    // src/terrain/continent_bound.h): the slope bound alone kept most of the sea floor from orbit.
+    void setDarkFloorCulling(double patchDarkContinent, double continentLipschitz);
     // Whether the last prepared frame draws with the ground detail's program: terrain.detail on
     // and the camera close enough to the ground for any of it to show (detailInReach).
     bool detailDrawn() const { return detailPatches_ > 0; }
