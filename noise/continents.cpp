@@ -127,27 +127,36 @@ double cubeTexelSolidAngle(int x, int y, int size) {
     return corner(x1, y1) - corner(x0, y1) - corner(x1, y0) + corner(x0, y0);
 }
 
-namespace {
-
-// The texel that bilinear tap (i, j) of `face` reads with seamless filtering: the face's own
-// when inside it; else, for a tap one texel beyond an edge, the neighbouring face's texel
-// along that edge at the same place (GL 4.5 §8.13.1); nullptr beyond a corner. The texel
-// is found by selecting the face of a point a quarter texel beyond the edge: its position
-// along the edge moves by under a quarter texel when projected onto the neighbour, and a
+// The texel is found by selecting the face of a point a quarter texel beyond the edge: its
+// position along the edge moves by under a quarter texel when projected onto the neighbour, and a
 // texel centre is half a texel from its texel's boundary.
-template <class Texel>
-const Texel* seamlessTexel(const CubeMapOf<Texel>& map, int face, int i, int j) {
-    const int n = map.size;
+bool seamlessTap(int size, int face, int i, int j, int& tapFace, int& x, int& y) {
+    const int n = size;
     const bool insideI = i >= 0 && i < n, insideJ = j >= 0 && j < n;
-    if (insideI && insideJ) return &map.at(face, i, j);
-    if (!insideI && !insideJ) return nullptr;
+    if (insideI && insideJ) {
+        tapFace = face;
+        x = i;
+        y = j;
+        return true;
+    }
+    if (!insideI && !insideJ) return false;
     const double beyond = 1.0 + 0.5 / n;
     const double sc = insideI ? 2.0 * (i + 0.5) / n - 1.0 : (i < 0 ? -beyond : beyond);
     const double tc = insideJ ? 2.0 * (j + 0.5) / n - 1.0 : (j < 0 ? -beyond : beyond);
     double s = 0.0, t = 0.0;
-    const int other = cubeFaceOf(facePoint(face, sc, tc), s, t);
+    tapFace = cubeFaceOf(facePoint(face, sc, tc), s, t);
     auto index = [n](double c) { return std::clamp(static_cast<int>(std::floor(c * n)), 0, n - 1); };
-    return &map.at(other, index(s), index(t));
+    x = index(s);
+    y = index(t);
+    return true;
+}
+
+namespace {
+
+template <class Texel>
+const Texel* seamlessTexel(const CubeMapOf<Texel>& map, int face, int i, int j) {
+    int tapFace = 0, x = 0, y = 0;
+    return seamlessTap(map.size, face, i, j, tapFace, x, y) ? &map.at(tapFace, x, y) : nullptr;
 }
 
 // The bilinear, seamless filter of sampleContinents, for a map of any texel type (a glm

@@ -113,6 +113,11 @@ glm::vec4 sampleContinents(const CubeMap& map, glm::dvec3 direction);
 // The same filtering of a two-channel map (noise/weather_map.h's sampleWeather).
 glm::vec2 sampleCubeMap(const CubeMapOf<glm::vec2>& map, glm::dvec3 direction);
 
+// The texel (tapFace, x, y) that bilinear tap (i, j) of `face` reads with that filtering on a map
+// of `size`: the face's own inside it; for a tap one texel beyond an edge, the neighbouring face's
+// texel along that edge at the same place (GL 4.5 §8.13.1); false beyond a corner (no texel).
+bool seamlessTap(int size, int face, int i, int j, int& tapFace, int& x, int& y);
+
 // Fraction of the sphere's solid angle whose texels' elevation is below 0.
 double seaFractionOf(const CubeMap& map);
 

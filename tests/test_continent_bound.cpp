@@ -14,23 +14,10 @@
 #include "app/session.h"
 #include "gl_test_support.h"
 #include "noise/continents.h"
+#include "test_util.h"
 #include "terrain/continent_bound.h"
 
 using namespace planet;
-
-namespace {
-
-// A unit direction at angle `angle` from `centre`, towards a random side.
-glm::dvec3 atAngle(glm::dvec3 centre, double angle, std::mt19937& rng) {
-    std::uniform_real_distribution<double> unit(-1.0, 1.0);
-    glm::dvec3 side;
-    do side = glm::cross(centre, glm::dvec3(unit(rng), unit(rng), unit(rng)));
-    while (glm::length(side) < 1e-3);
-    side = glm::normalize(side);
-    return std::cos(angle) * centre + std::sin(angle) * side;
-}
-
-}  // namespace
 
 TEST(ContinentBound, LevelsCoverTheCapsTheyAreAskedFor) {
     // The stretch: 3 at a face's corner for a point cap, 1 / cos^2(54.7 deg + 0.2) at 0.2 rad.
@@ -80,7 +67,7 @@ TEST(ContinentBound, TheMaximaBoundTheMapOverEveryCap) {
         float highest = -1e30f;
         for (int k = 0; k < 200; ++k) {
             const double angle = radius * std::sqrt(fraction(rng));
-            highest = std::max(highest, noise::sampleContinents(map, atAngle(centre, angle, rng)).x);
+            highest = std::max(highest, noise::sampleContinents(map, test::atAngle(centre, angle, rng)).x);
         }
         highest = std::max(highest, noise::sampleContinents(map, centre).x);
         if (highest > bound) ++violations;

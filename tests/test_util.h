@@ -1,6 +1,11 @@
 // Small helpers shared by several test files.
 #pragma once
 
+#include <cmath>
+#include <random>
+
+#include <glm/glm.hpp>
+
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -45,6 +50,16 @@ inline InputError expectInputError(const std::function<void()>& f) {
     }
     ADD_FAILURE() << "expected an InputError";
     return InputError("", 0, "", "none thrown");
+}
+
+// A unit direction at angle `angle` from the unit `centre`, towards a random side.
+inline glm::dvec3 atAngle(glm::dvec3 centre, double angle, std::mt19937& rng) {
+    std::uniform_real_distribution<double> unit(-1.0, 1.0);
+    glm::dvec3 side;
+    do side = glm::cross(centre, glm::dvec3(unit(rng), unit(rng), unit(rng)));
+    while (glm::length(side) < 1e-3);
+    side = glm::normalize(side);
+    return std::cos(angle) * centre + std::sin(angle) * side;
 }
 
 }  // namespace planet::test

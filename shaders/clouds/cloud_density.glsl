@@ -45,10 +45,30 @@ Number CloudVolumeLod(Length footprintKm) {
     return min(log2(max(footprintKm / clouds.voxelKm, 1.0)), 3.0);
 }
 
+// How far from `point` (km, along any straight way through the layer) no cloud lies for sure, where
+// the weather map's coverage there is `mapCoverage`: 0 where that is not 0; else the clear sky map's
+// angle there (src/clouds/clear_sky.h: the map's coverage is 0 within it) as the chord it allows
+// between two points of the layer (at least bottomRadius from the centre, so a chord d spans at most
+// 2 asin(d / (2 bottomRadius))). 0 too where the map says nothing: a layer of constant density, or
+// coverage over 1/2 (CloudLocalCoverage then lifts a 0). Read only where the weather has no
+// coverage: a software renderer skips the read when no pixel of a group takes it, so a march in
+// cloud does not pay for it (the `cumulus` view's march: 3 to 9 % dearer with a read at every step).
+Length CloudClearDistance(vec3 direction, Number mapCoverage) {
+    if (mapCoverage > 0.0 || clouds.coverage > 0.5 || clouds.constantDensity != 0) return 0.0;
+    Number angle = textureLod(clearSky, direction, 0.0).x;
+    return 2.0 * clouds.bottomRadius * sin(0.5 * angle);
+}
+
 // Density at `point` (Michelic Eq. 12-14), seen with a pixel footprint of `footprintKm`:
 // < 0 where the volume says the zero-density border is around (a large step is safe), else
 // >= 0. Where the footprint spans voxels, blended into the far field (cloud_model.glsl).
-Number CloudDensityAt(vec3 point, Length footprintKm) {
+// `clearKm`: how far no cloud lies for sure (CloudClearDistance): where the weather is read and has no
+// coverage, and where the volume's border answers first (no weather read) if `weatherClear` says the
+// last sample's weather had none; that is set to whether this one's has none, where it is read. (A
+// read of the clear sky in every border made the march in cloud 6 % dearer, `cumulus`; without
+// one there, the `ground` view's 40 ms march took 59: a border's short step before each long one.)
+Number CloudDensityAndClearAt(vec3 point, Length footprintKm, INOUT(bool) weatherClear, OUT(Length) clearKm) {
+    clearKm = 0.0;
     Length r = length(point);
     if (r < clouds.bottomRadius || r > clouds.topRadius) return -1.0;
 #if !CLOUD_FAR_FIELD_ONLY  // (only ever built for a layer that is not of constant density)
@@ -61,10 +81,15 @@ Number CloudDensityAt(vec3 point, Length footprintKm) {
     if (far < 1.0) {
         vec3 c = (clouds.cameraTileOffset + (point - clouds.cameraFromCentre)) / clouds.tileWidth;
         value = textureLod(cloudVolume, c, CloudVolumeLod(footprintKm)).x;
-        if (value < 0.0 && far == 0.0) return value;  // nothing within the border: the weather cannot add cloud
+        if (value < 0.0 && far == 0.0) {  // nothing within the border: the weather cannot add cloud
+            if (weatherClear) clearKm = CloudClearDistance(point / r, 0.0);  // (the clear sky may reach further)
+            return value;
+        }
     }
     vec4 weatherTexel = textureLod(weatherMap, point / r, 0.0);
     vec2 weather = vec2(weatherTexel.x, weatherTexel.y);  // coverage, type
+    clearKm = CloudClearDistance(point / r, weather.x);
+    weatherClear = weather.x <= 0.0;
     Number coverage = CloudLocalCoverage(weather.x, clouds.coverage);
     Length depth = clouds.topRadius - clouds.bottomRadius;
     Number fraction = (r - clouds.bottomRadius) / depth;
@@ -78,6 +103,13 @@ Number CloudDensityAt(vec3 point, Length footprintKm) {
     Number near = max(CloudDensityFromTexture(CloudCoverageRemap(value, coverage), h), 0.0);  // Eq. 14
     return mix(near, farDensity, far) * clouds.densityScale;
 #endif
+}
+
+// The density alone (the samples towards the sun).
+Number CloudDensityAt(vec3 point, Length footprintKm) {
+    bool weatherClear = false;
+    Length clearKm;
+    return CloudDensityAndClearAt(point, footprintKm, weatherClear, clearKm);
 }
 
 // A footprint that sees the far field alone (8 voxels), for a caller that wants no volume

@@ -69,4 +69,5 @@ const int UNIT_MESH_SURFACE_0 = 30;         // RGBA32F x 3: what a mesh's fragme
 const int UNIT_MESH_SURFACE_1 = 31;
 const int UNIT_MESH_SURFACE_2 = 32;
 const int UNIT_CONTINENT_MAX = 33;          // R32F cube map, a mip level per level (src/terrain/continent_bound.h)
+const int UNIT_CLEAR_SKY = 34;              // R32F cube map: the angle around a point where no cloud is, for sure (src/clouds/clear_sky.h)
 const int UNIT_OCEAN_GRID_REFLECTION = 29;  // RGBA32F N x N, bilinear: the reflection at the ocean grid's points (ocean/sea_light.frag)

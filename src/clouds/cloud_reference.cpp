@@ -41,11 +41,13 @@ CloudBlockDouble widen(const CloudBlock& b) {
 
 CloudMarchModel::CloudMarchModel(const AtmosphereParameters& atmosphere, const atmosphere::AtmosphereTables& tables,
                                  const CloudBlock& block, const noise::CloudVolume* volume,
-                                 const std::vector<noise::CloudVolume>* volumeMips, const noise::WeatherMap* weather)
+                                 const std::vector<noise::CloudVolume>* volumeMips, const noise::WeatherMap* weather,
+                                 const ClearSkyMap* clearSkyMap)
     : Model(tables.sizes),
       clouds(widen(block)),
       cloudVolume{volume, volumeMips},
       weatherMap{weather},
+      clearSky{clearSkyMap},
       transmittance_texture(tables.transmittance),
       scattering_texture(tables.scattering),
       single_mie_scattering_texture(tables.singleMie),
@@ -105,6 +107,11 @@ vec4 CloudMarchModel::textureLod(const WeatherSampler& sampler, vec3 direction, 
     return vec4(w.x, w.y, 0.0, 1.0);
 }
 
+// An R32F samplerCube, GL_NEAREST: reads as (r, 0, 0, 1).
+vec4 CloudMarchModel::textureLod(const ClearSkySampler& sampler, vec3 direction, Number) const {
+    return vec4(sampler.map ? clearSkyAngleAt(*sampler.map, direction) : 0.0, 0.0, 0.0, 1.0);
+}
+
 // interface.glsl with ELEK_TABLE 0: Bruneton's 4D table, without light shafts
 // (terrain.light_shafts: the CPU reference has none, its SunShadowLength is 0).
 CloudMarchModel::ViewRay CloudMarchModel::AirRay(vec3 up, Length altitudeKm, bool byAltitude, vec3 position,
@@ -136,10 +143,11 @@ CloudReference::CloudReference(const atmosphere::AtmosphereParameters& atmospher
       tables_(tables),
       volume_(volume),
       volumeMips_(volume ? noise::cloudVolumeMips(*volume, mipLevels) : std::vector<noise::CloudVolume>{}),
-      weather_(weather) {}
+      weather_(weather),
+      clearSky_(weather ? buildClearSkyMap(*weather) : ClearSkyMap{}) {}
 
 CloudProbeResult CloudReference::march(const CloudBlock& block, const CloudProbeRay& ray) const {
-    glsl::CloudMarchModel model(atmosphere_, tables_, block, volume_, &volumeMips_, weather_);
+    glsl::CloudMarchModel model(atmosphere_, tables_, block, volume_, &volumeMips_, weather_, &clearSky_);
     // clouds/cloud_probe.comp's call.
     const glsl::CloudMarchModel::ViewMarch m =
         model.MarchView(ray.origin, ray.direction, ray.distanceKm, ray.sun, model.MarchQualityOf(0.5));

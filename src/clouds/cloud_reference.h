@@ -6,10 +6,11 @@
 //
 //   clouds                      the CloudBlock, widened to double (CloudBlockDouble): the
 //                               float values the GPU is given, so both march the same layer
-//   cloudVolume, weatherMap     CPU samplers with GL's filtering: the volume trilinear with
-//                               GL_REPEAT, voxel (i, j, k) at ((i, j, k) + 0.5) / size, the
-//                               weather map noise::sampleWeather (a seamless samplerCube);
-//                               without data, CloudResources' placeholders (-1; coverage 0)
+//   cloudVolume, weatherMap,    CPU samplers with GL's filtering: the volume trilinear with
+//   clearSky                    GL_REPEAT, voxel (i, j, k) at ((i, j, k) + 0.5) / size, the
+//                               weather map noise::sampleWeather (a seamless samplerCube), the
+//                               clear sky map nearest (clearSkyAngleAt, built from the weather);
+//                               without data, CloudResources' placeholders (-1; coverage 0; 0)
 //   the atmosphere interface    AirRay, SkyRadianceOfRay, SkyRadianceToPointOfRay (4D table, no shadow
 //                               length: interface.glsl with ELEK_TABLE 0, as the probe is
 //                               built), atmosphereParameters(), the tables, and through the
@@ -40,6 +41,7 @@
 
 #include "atmosphere/model.h"
 #include "atmosphere/tables.h"
+#include "clouds/clear_sky.h"
 #include "clouds/cloud_block.h"
 #include "clouds/cloud_model.h"
 #include "clouds/cloud_probe.h"
@@ -84,6 +86,9 @@ struct VolumeSampler {
 struct WeatherSampler {
     const noise::WeatherMap* map = nullptr;
 };
+struct ClearSkySampler {
+    const ClearSkyMap* map = nullptr;  // clear_sky.h, nearest (nullptr: 0, the placeholder's)
+};
 
 // The GLSL globals and the shared march, in double (see the file header). Cheap to make:
 // it refers to the tables and the baked data, it does not copy them.
@@ -91,14 +96,17 @@ class CloudMarchModel : public atmosphere::glsl::Model {
 public:
     CloudMarchModel(const AtmosphereParameters& atmosphere, const atmosphere::AtmosphereTables& tables,
                     const CloudBlock& block, const noise::CloudVolume* volume,
-                    const std::vector<noise::CloudVolume>* volumeMips, const noise::WeatherMap* weather);
+                    const std::vector<noise::CloudVolume>* volumeMips, const noise::WeatherMap* weather,
+                    const ClearSkyMap* clearSkyMap);
 
     // clouds/cloud_block.glsl
     CloudBlockDouble clouds;
     VolumeSampler cloudVolume;
     WeatherSampler weatherMap;
+    ClearSkySampler clearSky;
     vec4 textureLod(const VolumeSampler& sampler, vec3 uvw, Number lod) const;
     vec4 textureLod(const WeatherSampler& sampler, vec3 direction, Number lod) const;
+    vec4 textureLod(const ClearSkySampler& sampler, vec3 direction, Number lod) const;
 
     // atmosphere/uniforms.glsl and atmosphere/interface.glsl
     AtmosphereParameters atmosphereParameters() const { return atmosphere_; }
@@ -111,8 +119,12 @@ public:
     vec3 SkyRadianceToPointOfRay(const ViewRay& ray, vec3 camera, vec3 viewRay, Length distance, vec3 sun,
                                  vec3& transmittance);
 
+#define OUT(x) x&
+#define INOUT(x) x&
 #include "shaders/clouds/cloud_density.glsl"
 #include "shaders/clouds/cloud_march.glsl"
+#undef OUT
+#undef INOUT
 
 private:
     AtmosphereParameters atmosphere_;
@@ -147,6 +159,7 @@ private:
     const noise::CloudVolume* volume_;
     std::vector<noise::CloudVolume> volumeMips_;  // the GL texture's mip levels 1, 2, 3
     const noise::WeatherMap* weather_;
+    ClearSkyMap clearSky_;  // of weather_, as CloudResources makes it
 };
 
 }  // namespace planet::clouds

@@ -130,7 +130,10 @@ CloudResources::Baked CloudResources::bake(const CloudParams& c, const std::shar
         return [progress, from, to](double f) { progress->store(from + (to - from) * f); };
     };
     if (volume) b.volume = noise::loadOrBakeCloudVolume(b.volumeParams, cacheRoot_, report(0.0, split));
-    if (weather) b.weather = noise::loadOrBakeWeatherMap(b.weatherParams, b.weatherSize, cacheRoot_, report(split, 1.0));
+    if (weather) {
+        b.weather = noise::loadOrBakeWeatherMap(b.weatherParams, b.weatherSize, cacheRoot_, report(split, 1.0));
+        b.clearSky = buildClearSkyMap(*b.weather);
+    }
     progress->store(1.0);
     return b;
 }
@@ -144,6 +147,7 @@ void CloudResources::upload(Baked&& b) {
     }
     if (b.weather) {
         weather_ = makeWeatherTexture(*b.weather);
+        clearSky_ = makeClearSkyTexture(b.clearSky ? *b.clearSky : ClearSkyMap{});
         weatherParams_ = std::make_pair(b.weatherParams, b.weatherSize);
     }
 }
@@ -191,6 +195,7 @@ void CloudResources::bind() const {
     glBindBufferBase(GL_UNIFORM_BUFFER, binding::BLOCK_CLOUDS, buffer_.id());
     glBindTextureUnit(binding::UNIT_CLOUD_VOLUME, volume_.id());
     glBindTextureUnit(binding::UNIT_WEATHER_MAP, weather_.id());
+    glBindTextureUnit(binding::UNIT_CLEAR_SKY, clearSky_.id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding::BUFFER_CLOUD_STATISTICS, statisticsBuffer_.id());
 }
 

@@ -20,6 +20,7 @@
 #include "clouds/cloud_block.h"
 #include "gl/handle.h"
 #include "noise/cloud_volume.h"
+#include "clouds/clear_sky.h"
 #include "noise/weather_map.h"
 #include "scene/camera.h"
 #include "scene/scene.h"
@@ -56,7 +57,7 @@ public:
     // the block for this frame. Returns true when it uploaded new textures.
     // `viewportHeight` (pixels) sets the footprints of the far field.
     bool update(const Scene& scene, const Camera& camera, int viewportHeight);
-    // Bind the block at BLOCK_CLOUDS and the textures at UNIT_CLOUD_VOLUME, UNIT_WEATHER_MAP.
+    // Bind the block at BLOCK_CLOUDS and the textures at UNIT_CLOUD_VOLUME, UNIT_WEATHER_MAP, UNIT_CLEAR_SKY.
     void bind() const;
     // The largest step through empty space the volume's border allows for a tile width, km.
     double largeStepKm(double tileWidthKm) const;
@@ -78,6 +79,7 @@ private:
         int weatherSize = 0;
         std::optional<noise::CloudVolume> volume;  // absent when only the weather changed
         std::optional<noise::WeatherMap> weather;
+        std::optional<ClearSkyMap> clearSky;  // with the weather
     };
     Baked bake(const CloudParams& clouds, const std::shared_ptr<std::atomic<double>>& progress) const;
     void upload(Baked&& baked);
@@ -86,6 +88,7 @@ private:
     std::filesystem::path cacheRoot_;
     gl::Texture volume_{GL_TEXTURE_3D};
     gl::Texture weather_{GL_TEXTURE_CUBE_MAP};
+    gl::Texture clearSky_ = makeClearSkyTexture({});
     gl::Buffer buffer_;
     gl::Buffer statisticsBuffer_;
     bool statistics_ = false;

@@ -24,17 +24,23 @@ glm::dvec3 facePlaneDirection(int face, double s, double t) {
     }
 }
 
-// The largest texel within the 4 x 4 around the place `direction` selects on its face: every
-// value the bilinear filter takes within half a texel of it (its taps).
-float texelsAround(const noise::CubeMap& map, glm::dvec3 direction) {
+// The largest texel among the 4 x 4 taps around the place `direction` selects on its face, as the
+// seamless filter reads them (noise::seamlessTap: past the face's edge, the neighbour's texels):
+// every value the bilinear filter takes within half a texel of it. (Taps beyond a corner, which the
+// filter makes the mean of the other three, are bounded by those.)
+template <class Texel>
+float texelsAround(const noise::CubeMapOf<Texel>& map, glm::dvec3 direction) {
     double s, t;
     const int face = noise::cubeFaceOf(direction, s, t);
     const int n = map.size;
     const int x0 = static_cast<int>(std::floor(s * n - 0.5)), y0 = static_cast<int>(std::floor(t * n - 0.5));
     float highest = -std::numeric_limits<float>::infinity();
-    for (int y = std::max(y0 - 1, 0); y <= std::min(y0 + 2, n - 1); ++y)
-        for (int x = std::max(x0 - 1, 0); x <= std::min(x0 + 2, n - 1); ++x)
-            highest = std::max(highest, map.elevation(face, x, y));
+    for (int j = y0 - 1; j <= y0 + 2; ++j)
+        for (int i = x0 - 1; i <= x0 + 2; ++i) {
+            int tapFace = 0, x = 0, y = 0;
+            if (noise::seamlessTap(n, face, std::clamp(i, -1, n), std::clamp(j, -1, n), tapFace, x, y))
+                highest = std::max(highest, map.elevation(tapFace, x, y));
+        }
     return highest;
 }
 
@@ -47,7 +53,8 @@ int levelCount(int size) {
 // One face's levels: the places of level 0's grid on the face's plane, `border` texels past
 // each edge, each the largest texel around it; their maxima over aligned blocks of 2^k; then each
 // level-k texel the largest block of the 3 x 3 around it.
-void buildFace(const noise::CubeMap& map, int face, int levels, ContinentMaxPyramid& pyramid) {
+template <class Texel>
+void buildFace(const noise::CubeMapOf<Texel>& map, int face, int levels, ContinentMaxPyramid& pyramid) {
     const int n = map.size;
     const int border = 1 << (levels - 1);
     int side = n + 2 * border;
@@ -87,7 +94,8 @@ void buildFace(const noise::CubeMap& map, int face, int levels, ContinentMaxPyra
 
 }  // namespace
 
-ContinentMaxPyramid buildContinentMaxPyramid(const noise::CubeMap& map) {
+template <class Texel>
+ContinentMaxPyramid buildContinentMaxPyramid(const noise::CubeMapOf<Texel>& map) {
     ContinentMaxPyramid pyramid;
     pyramid.size = map.size;
     if (map.size < 1) return pyramid;
@@ -102,6 +110,9 @@ ContinentMaxPyramid buildContinentMaxPyramid(const noise::CubeMap& map) {
     for (std::thread& t : pool) t.join();
     return pyramid;
 }
+
+template ContinentMaxPyramid buildContinentMaxPyramid(const noise::CubeMapOf<glm::vec4>&);
+template ContinentMaxPyramid buildContinentMaxPyramid(const noise::CubeMapOf<glm::vec2>&);
 
 double continentCapStretch(double radiusRad) {
     constexpr double kCornerRad = 0.9553166181245093;  // acos(1 / sqrt(3)): a face's corner from its axis

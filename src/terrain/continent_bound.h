@@ -40,8 +40,12 @@ struct ContinentMaxPyramid {
     std::vector<std::vector<float>> levels;  // level k: 6 faces of (size >> k)^2, index (face * n + y) * n + x
 };
 
-// The pyramid of `map` (a map of at least 1 texel a face).
-ContinentMaxPyramid buildContinentMaxPyramid(const noise::CubeMap& map);
+// The pyramid of `map`'s first channel (a map of at least 1 texel a face): the continents'
+// elevation, or the weather map's coverage (clouds/clear_sky.h: where it is 0 for sure).
+template <class Texel>
+ContinentMaxPyramid buildContinentMaxPyramid(const noise::CubeMapOf<Texel>& map);
+extern template ContinentMaxPyramid buildContinentMaxPyramid(const noise::CubeMapOf<glm::vec4>&);
+extern template ContinentMaxPyramid buildContinentMaxPyramid(const noise::CubeMapOf<glm::vec2>&);
 
 // The level whose texels bound a cap of `radiusRad` ((size / 2) s(r) r <= 2^k), or -1 where none
 // does (the cap too large for the pyramid's levels, or past kContinentMaxRadiusRad).

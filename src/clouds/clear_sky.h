@@ -1,0 +1,50 @@
+// Where the sky is clear for sure: for each texel of a coarse cube map over the weather map, an
+// angle around every point of the texel within which the weather map's coverage (bilinear, as the
+// GPU filters it, seams included) is 0. With the layer's coverage at most 1/2 (CloudLocalCoverage
+// then keeps a 0 at 0) and the volume's noise (not a constant layer), no cloud lies there, near or
+// far field, so the march crosses that much of the layer in one step (clouds/cloud_density.glsl,
+// CloudClearDistance; clouds/cloud_march.glsl). Without it a view from the ground under a clear
+// subtropical sky stepped through 100 km of empty layer along every ray near the horizon: the
+// `ground` view's reduced-rate march 199 ms at 1280x720 on llvmpipe (issue 15, docs/PERFORMANCE.md).
+//
+// From the pyramid of the coverage's maxima (terrain/continent_bound.h: level k's texel holds the
+// largest coverage within its 3 x 3 at that level): a point p in a level-k texel whose value is 0
+// has no coverage within angle r of it where its cap stays inside those 3 x 3, that is where
+// (size / 2) r / cos^2(a + r) <= 2^k texels of level 0 (a: p's angle from its face's axis, the
+// gnomonic map's stretch at angle a + r at most 1 / cos^2(a + r)). A texel of the coarse map takes
+// the largest such r over the levels, with a its farthest corner's angle, less 1 % (the GPU picks
+// the texel in float).
+#pragma once
+
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "gl/handle.h"
+#include "noise/weather_map.h"
+
+namespace planet::clouds {
+
+// The coarse map's face size: the weather map's, at most this (256: 40 km a texel on the earth's
+// 1024 map; a skip shorter than a few texels of the weather map is not worth a lookup).
+inline constexpr int kClearSkyMaxSize = 256;
+
+struct ClearSkyMap {
+    int size = 0;                // texels a face side
+    std::vector<float> radians;  // 6 * size * size, index (face * size + y) * size + x: the clear angle
+};
+
+// The clear angle of every texel of the coarse map over `weather` (its coverage channel).
+ClearSkyMap buildClearSkyMap(const noise::WeatherMap& weather);
+
+// The clear angle at `direction` (need not be unit length): the texel that holds it, as GL's
+// nearest filtering picks it (0 on an empty map).
+double clearSkyAngleAt(const ClearSkyMap& map, glm::dvec3 direction);
+
+// The largest r with (size / 2) r / cos^2(a + r) <= 2^k (see the header), a + r < pi / 2.
+double clearCapRadius(int size, int level, double axisAngle);
+
+// The map as an R32F cube map, nearest filtering (a 1 x 1 map of 0 where `map` is empty).
+gl::Texture makeClearSkyTexture(const ClearSkyMap& map);
+
+}  // namespace planet::clouds
