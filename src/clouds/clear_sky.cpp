@@ -18,14 +18,33 @@ double clearCapRadius(int size, int level, double axisAngle) {
     return lo;
 }
 
-ClearSkyMap buildClearSkyMap(const noise::WeatherMap& weather) {
+namespace {
+
+// The weather's coverage on a grid `factor` times coarser: each texel the largest of the fine texels
+// it covers.
+noise::WeatherMap coarseMaxima(const noise::WeatherMap& weather, int factor) {
+    noise::WeatherMap coarse;
+    coarse.size = weather.size / factor;
+    coarse.texels.assign(6 * static_cast<std::size_t>(coarse.size) * coarse.size, glm::vec2(0.0f));
+    for (int face = 0; face < 6; ++face)
+        for (int y = 0; y < weather.size; ++y)
+            for (int x = 0; x < weather.size; ++x) {
+                glm::vec2& c = coarse.at(face, x / factor, y / factor);
+                c.x = std::max(c.x, weather.elevation(face, x, y));
+            }
+    return coarse;
+}
+
+}  // namespace
+
+ClearSkyMap buildClearSkyMap(const noise::WeatherMap& weather, int maxSize) {
     ClearSkyMap map;
     if (weather.size < 1) return map;
-    const terrain::ContinentMaxPyramid pyramid = terrain::buildContinentMaxPyramid(weather);
-    const int n = weather.size, levels = static_cast<int>(pyramid.levels.size());
-    int coarse = 0;  // the level whose grid the map takes
-    while ((n >> coarse) > kClearSkyMaxSize) ++coarse;
-    const int m = map.size = n >> coarse;
+    int factor = 1;
+    while (weather.size / factor > maxSize && weather.size % (2 * factor) == 0) factor *= 2;
+    const noise::WeatherMap coarse = factor > 1 ? coarseMaxima(weather, factor) : weather;
+    const terrain::ContinentMaxPyramid pyramid = terrain::buildContinentMaxPyramid(coarse, kClearSkyLevels);
+    const int m = map.size = coarse.size, levels = static_cast<int>(pyramid.levels.size());
     map.radians.assign(6 * static_cast<std::size_t>(m) * m, 0.0f);
     for (int face = 0; face < 6; ++face)
         for (int y = 0; y < m; ++y)
@@ -34,15 +53,14 @@ ClearSkyMap buildClearSkyMap(const noise::WeatherMap& weather) {
                 const double s = std::max(std::abs(2.0 * x / m - 1.0), std::abs(2.0 * (x + 1) / m - 1.0));
                 const double t = std::max(std::abs(2.0 * y / m - 1.0), std::abs(2.0 * (y + 1) / m - 1.0));
                 const double axisAngle = std::atan(std::sqrt(s * s + t * t));
-                const int x0 = x << coarse, x1 = ((x + 1) << coarse) - 1, y0 = y << coarse, y1 = ((y + 1) << coarse) - 1;
-                for (int k = levels - 1; k >= coarse; --k) {  // the coarsest level that says clear: the widest cap
-                    const int mk = n >> k;
-                    if ((x0 >> k) != (x1 >> k) || (y0 >> k) != (y1 >> k) || (x1 >> k) >= mk || (y1 >> k) >= mk) continue;
-                    const float highest = pyramid.levels[static_cast<std::size_t>(k)]
-                                                        [(static_cast<std::size_t>(face) * mk + (y0 >> k)) * mk + (x0 >> k)];
+                for (int k = levels - 1; k >= 0; --k) {  // the coarsest level that says clear: the widest cap
+                    const int mk = m >> k;
+                    if ((x >> k) >= mk || (y >> k) >= mk) continue;
+                    const float highest =
+                        pyramid.levels[static_cast<std::size_t>(k)][(static_cast<std::size_t>(face) * mk + (y >> k)) * mk + (x >> k)];
                     if (highest > 0.0f) continue;
                     map.radians[(static_cast<std::size_t>(face) * m + y) * m + x] =
-                        static_cast<float>(0.99 * clearCapRadius(n, k, axisAngle));
+                        static_cast<float>(0.99 * clearCapRadius(m, k, axisAngle));
                     break;
                 }
             }

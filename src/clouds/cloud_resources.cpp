@@ -132,7 +132,11 @@ CloudResources::Baked CloudResources::bake(const CloudParams& c, const std::shar
     if (volume) b.volume = noise::loadOrBakeCloudVolume(b.volumeParams, cacheRoot_, report(0.0, split));
     if (weather) {
         b.weather = noise::loadOrBakeWeatherMap(b.weatherParams, b.weatherSize, cacheRoot_, report(split, 1.0));
+        const auto start = std::chrono::steady_clock::now();
         b.clearSky = buildClearSkyMap(*b.weather);
+        logInfo("clear sky map " + std::to_string(b.clearSky->size) + "^2 x 6 in " +
+                std::to_string(std::chrono::duration_cast<std::chrono::milliseconds>(std::chrono::steady_clock::now() - start).count()) +
+                " ms");
     }
     progress->store(1.0);
     return b;

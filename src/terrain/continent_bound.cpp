@@ -44,9 +44,9 @@ float texelsAround(const noise::CubeMapOf<Texel>& map, glm::dvec3 direction) {
     return highest;
 }
 
-int levelCount(int size) {
+int levelCount(int size, int maxLevels) {
     int levels = 1;
-    while (levels < kContinentMaxLevels && (1 << levels) <= size) ++levels;
+    while (levels < maxLevels && (1 << levels) <= size) ++levels;
     return levels;
 }
 
@@ -95,11 +95,11 @@ void buildFace(const noise::CubeMapOf<Texel>& map, int face, int levels, Contine
 }  // namespace
 
 template <class Texel>
-ContinentMaxPyramid buildContinentMaxPyramid(const noise::CubeMapOf<Texel>& map) {
+ContinentMaxPyramid buildContinentMaxPyramid(const noise::CubeMapOf<Texel>& map, int maxLevels) {
     ContinentMaxPyramid pyramid;
     pyramid.size = map.size;
     if (map.size < 1) return pyramid;
-    const int levels = levelCount(map.size);
+    const int levels = levelCount(map.size, std::max(maxLevels, 1));
     for (int k = 0; k < levels; ++k) {
         const std::size_t m = static_cast<std::size_t>(map.size >> k);
         pyramid.levels.emplace_back(6 * m * m);
@@ -111,8 +111,8 @@ ContinentMaxPyramid buildContinentMaxPyramid(const noise::CubeMapOf<Texel>& map)
     return pyramid;
 }
 
-template ContinentMaxPyramid buildContinentMaxPyramid(const noise::CubeMapOf<glm::vec4>&);
-template ContinentMaxPyramid buildContinentMaxPyramid(const noise::CubeMapOf<glm::vec2>&);
+template ContinentMaxPyramid buildContinentMaxPyramid(const noise::CubeMapOf<glm::vec4>&, int);
+template ContinentMaxPyramid buildContinentMaxPyramid(const noise::CubeMapOf<glm::vec2>&, int);
 
 double continentCapStretch(double radiusRad) {
     constexpr double kCornerRad = 0.9553166181245093;  // acos(1 / sqrt(3)): a face's corner from its axis

@@ -40,12 +40,13 @@ struct ContinentMaxPyramid {
     std::vector<std::vector<float>> levels;  // level k: 6 faces of (size >> k)^2, index (face * n + y) * n + x
 };
 
-// The pyramid of `map`'s first channel (a map of at least 1 texel a face): the continents'
-// elevation, or the weather map's coverage (clouds/clear_sky.h: where it is 0 for sure).
+// The pyramid of `map`'s first channel (a map of at least 1 texel a face), at most `maxLevels`
+// levels: the continents' elevation, or the weather map's coverage (clouds/clear_sky.h: where it
+// is 0 for sure). Each level's blocks reach 2^(levels - 1) texels past the faces' edges.
 template <class Texel>
-ContinentMaxPyramid buildContinentMaxPyramid(const noise::CubeMapOf<Texel>& map);
-extern template ContinentMaxPyramid buildContinentMaxPyramid(const noise::CubeMapOf<glm::vec4>&);
-extern template ContinentMaxPyramid buildContinentMaxPyramid(const noise::CubeMapOf<glm::vec2>&);
+ContinentMaxPyramid buildContinentMaxPyramid(const noise::CubeMapOf<Texel>& map, int maxLevels = kContinentMaxLevels);
+extern template ContinentMaxPyramid buildContinentMaxPyramid(const noise::CubeMapOf<glm::vec4>&, int);
+extern template ContinentMaxPyramid buildContinentMaxPyramid(const noise::CubeMapOf<glm::vec2>&, int);
 
 // The level whose texels bound a cap of `radiusRad` ((size / 2) s(r) r <= 2^k), or -1 where none
 // does (the cap too large for the pyramid's levels, or past kContinentMaxRadiusRad).
