@@ -158,9 +158,15 @@ Length CloudDensityPathToSun(vec3 point, vec3 sun, Length maxLength, Length foot
 #else
     if (CloudFarBlend(footprintKm) >= 1.0 && clouds.constantDensity == 0)
         return CloudFarFieldPathToSun(point + sun * first.x, point + sun * (first.x + way), way);
+    // Under a clear sky over the whole way (the clear sky map at its start: every sample lies within
+    // `way` of it) the samples would all read 0: none is taken (the surfaces' shadows under the
+    // `ground` view's clear sky: a third of the surface light's time).
+    vec3 entry = point + sun * first.x;
+    vec3 entryDirection = entry / length(entry);
+    bool clear = CloudClearDistance(entryDirection, textureLod(weatherMap, entryDirection, 0.0).x) >= way;
     Length step = way / Number(max(samples, 1));
     Length path = 0.0;
-    for (int i = 0; i < samples; ++i)
+    for (int i = 0; i < (clear ? 0 : samples); ++i)
         path += max(CloudDensityAt(point + sun * (first.x + (Number(i) + 0.5) * step), footprintKm), 0.0) * step;
     return path;
 #endif
