@@ -332,23 +332,35 @@ TEST(CloudReference, HalvingTheStepConvergesOnRaysThroughClouds) {
     EXPECT_LT(second.mean, 0.5 * first.mean);
 }
 
+namespace {
+
+// The suite's layer at coverage 0.5 (the clear sky map then holds: CloudLocalCoverage keeps a 0 at
+// 0) over a weather map of 128 a face (78 km a texel: on the suite's 16, 625 km, whose clear sky
+// must span several texels to be known for sure, the map holds no clear angle), with its map.
+struct ClearSkyCase {
+    const CpuData& d = cpuData();
+    noise::WeatherMap weather = noise::bakeWeatherMap(weatherParamsOf(d.scene.clouds), 128);
+    clouds::ClearSkyMap clear = clouds::buildClearSkyMap(weather);
+    std::vector<noise::CloudVolume> mips = noise::cloudVolumeMips(d.volume, noise::kCloudVolumeMipLevels);
+    Scene scene = [this] {
+        Scene s = d.scene;
+        s.clouds.coverage = 0.5;
+        return s;
+    }();
+};
+
+}  // namespace
+
 TEST(CloudReference, TheClearSkysLongStepsChangeTheCostNotTheSky) {
     // The march with the clear sky map (src/clouds/clear_sky.h) and without it (the model given
-    // none: CloudClearDistance 0), at coverage 0.5 (the map then holds: CloudLocalCoverage keeps a
-    // 0 at 0), on the geometries' rays from 40 places over the sphere, every other one under a
-    // clear sky near clouds. Where no cloud is met the
+    // none: CloudClearDistance 0) on ClearSkyCase's layer, on the geometries' rays from 40 places
+    // over the sphere, every other one under a clear sky near clouds. Where no cloud is met the
     // two are the same sky to the last bit (the air's slices do not depend on the cloud steps);
     // where one is, the samples past a long step within the same slice of the layer lie
     // elsewhere, which may move the light by about what halving the step does (the test above;
     // measured: 0.00 %, the long steps of the 4 such rays lie in other slices than their cloud).
-    // A weather map of 128 a face (78 km a texel): on the suite's 16 (625 km), whose clear sky
-    // must span several texels to be known for sure, the map holds no clear angle.
-    const CpuData& d = cpuData();
-    const noise::WeatherMap weather = noise::bakeWeatherMap(weatherParamsOf(d.scene.clouds), 128);
-    const clouds::ClearSkyMap clear = clouds::buildClearSkyMap(weather);
-    const std::vector<noise::CloudVolume> mips = noise::cloudVolumeMips(d.volume, noise::kCloudVolumeMipLevels);
-    Scene scene = d.scene;
-    scene.clouds.coverage = 0.5;
+    const ClearSkyCase c;
+    const CpuData& d = c.d;
     std::mt19937 rng(3);
     std::uniform_real_distribution<double> unit(-1.0, 1.0);
     int clearRays = 0, cloudyRays = 0, shortened = 0, shortenedCloudy = 0, differ = 0;
@@ -364,11 +376,11 @@ TEST(CloudReference, TheClearSkysLongStepsChangeTheCostNotTheSky) {
             for (int k = 0; k < 16; ++k) {
                 const double a = 2.0 * M_PI * k / 16.0, r = 150.0 / 6360.0;
                 const glm::dvec3 q = std::cos(r) * p + std::sin(r) * (std::cos(a) * f.north + std::sin(a) * f.east);
-                if (noise::sampleWeather(weather, q).x > 0.5f) return true;
+                if (noise::sampleWeather(c.weather, q).x > 0.5f) return true;
             }
             return false;
         };
-        while (place % 2 == 0 && (clouds::clearSkyAngleAt(clear, at) <= 0.0 || !cloudNear(at)))
+        while (place % 2 == 0 && (clouds::clearSkyAngleAt(c.clear, at) <= 0.0 || !cloudNear(at)))
             at = glm::normalize(glm::dvec3(unit(rng), unit(rng), unit(rng)));
         std::vector<Geometry> rays = geometries();
         for (int k = 0; k < 8; ++k) {  // and rays that go far through the layer, every way round
@@ -377,9 +389,9 @@ TEST(CloudReference, TheClearSkysLongStepsChangeTheCostNotTheSky) {
         }
         for (const Geometry& g : rays) {
             const CloudProbeRay ray = makeRay(g, 30.0, 40.0, d.atmosphere.bottom_radius, at);
-            const CloudBlock block = blockFor(scene, ray, largeStepKmOf(scene.clouds));
-            glsl::CloudMarchModel with(d.atmosphere, d.tables, block, &d.volume, &mips, &weather, &clear);
-            glsl::CloudMarchModel without(d.atmosphere, d.tables, block, &d.volume, &mips, &weather, nullptr);
+            const CloudBlock block = blockFor(c.scene, ray, largeStepKmOf(c.scene.clouds));
+            glsl::CloudMarchModel with(d.atmosphere, d.tables, block, &d.volume, &c.mips, &c.weather, &c.clear);
+            glsl::CloudMarchModel without(d.atmosphere, d.tables, block, &d.volume, &c.mips, &c.weather, nullptr);
             const auto a = with.MarchView(ray.origin, ray.direction, ray.distanceKm, ray.sun, with.MarchQualityOf(0.5));
             const auto b =
                 without.MarchView(ray.origin, ray.direction, ray.distanceKm, ray.sun, without.MarchQualityOf(0.5));
@@ -415,17 +427,14 @@ TEST(CloudReference, TheClearSkysLongStepsChangeTheCostNotTheSky) {
 
 TEST(CloudReference, TheSunsWayThroughAClearSkyIsNotSampledAndTheShadowIsTheSame) {
     // The clouds' optical depth towards the sun from the ground (the surfaces' shadows), with the
-    // clear sky map and without, at 2000 places and suns (every other one low): where the map says the whole way is
-    // clear its samples are not taken, and the depth must be what they would have read, 0.
+    // clear sky map and without, on ClearSkyCase's layer at 2000 places and suns (every other one
+    // low): where the map says the whole way is clear its samples are not taken, and the depth
+    // must be what they would have read, 0.
     // Measured: 550 ways through cloud, 51 not sampled, none differs. (The map's clear caps lie
     // far from cloud beside these ways: a shortcut taken where the cap reached a tenth of the way
     // went unnoticed; one at the wrong place, or without the map's gate, would not.)
-    const CpuData& d = cpuData();
-    const noise::WeatherMap weather = noise::bakeWeatherMap(weatherParamsOf(d.scene.clouds), 128);
-    const clouds::ClearSkyMap clear = clouds::buildClearSkyMap(weather);
-    const std::vector<noise::CloudVolume> mips = noise::cloudVolumeMips(d.volume, noise::kCloudVolumeMipLevels);
-    Scene scene = d.scene;
-    scene.clouds.coverage = 0.5;
+    const ClearSkyCase c;
+    const CpuData& d = c.d;
     std::mt19937 rng(9);
     std::uniform_real_distribution<double> unit(-1.0, 1.0);
     int differ = 0, shaded = 0, clearWays = 0;
@@ -441,9 +450,9 @@ TEST(CloudReference, TheSunsWayThroughAClearSkyIsNotSampledAndTheShadowIsTheSame
         const glm::dvec3 point = up * (d.atmosphere.bottom_radius + 0.5);
         CloudProbeRay ray;
         ray.origin = point;
-        const CloudBlock block = blockFor(scene, ray, largeStepKmOf(scene.clouds));
-        glsl::CloudMarchModel with(d.atmosphere, d.tables, block, &d.volume, &mips, &weather, &clear);
-        glsl::CloudMarchModel without(d.atmosphere, d.tables, block, &d.volume, &mips, &weather, nullptr);
+        const CloudBlock block = blockFor(c.scene, ray, largeStepKmOf(c.scene.clouds));
+        glsl::CloudMarchModel with(d.atmosphere, d.tables, block, &d.volume, &c.mips, &c.weather, &c.clear);
+        glsl::CloudMarchModel without(d.atmosphere, d.tables, block, &d.volume, &c.mips, &c.weather, nullptr);
         const double a = with.CloudDensityPathToSun(point, sun, 100.0, 0.0, 6);
         const double b = without.CloudDensityPathToSun(point, sun, 100.0, 0.0, 6);
         differ += a != b;
