@@ -426,10 +426,10 @@ TEST(CloudReference, TheClearSkysLongStepsChangeTheCostNotTheSky) {
 }
 
 TEST(CloudReference, TheSunsWayThroughAClearSkyIsNotSampledAndTheShadowIsTheSame) {
-    // The clouds' optical depth towards the sun from the ground (the surfaces' shadows), with the
+    // The clouds' transmittance towards the sun from the ground (the surfaces' shadows), with the
     // clear sky map and without, on ClearSkyCase's layer at 2000 places and suns (every other one
-    // low): where the map says the whole way is clear its samples are not taken, and the depth
-    // must be what they would have read, 0.
+    // low): where the map says the whole way is clear its samples are not taken, and the
+    // transmittance must be what they would have given, 1.
     // Measured: 550 ways through cloud, 51 not sampled, none differs. (The map's clear caps lie
     // far from cloud beside these ways: a shortcut taken where the cap reached a tenth of the way
     // went unnoticed; one at the wrong place, or without the map's gate, would not.)
@@ -453,18 +453,20 @@ TEST(CloudReference, TheSunsWayThroughAClearSkyIsNotSampledAndTheShadowIsTheSame
         const CloudBlock block = blockFor(c.scene, ray, largeStepKmOf(c.scene.clouds));
         glsl::CloudMarchModel with(d.atmosphere, d.tables, block, &d.volume, &c.mips, &c.weather, &c.clear);
         glsl::CloudMarchModel without(d.atmosphere, d.tables, block, &d.volume, &c.mips, &c.weather, nullptr);
-        const double a = with.CloudDensityPathToSun(point, sun, 100.0, 0.0, 6);
-        const double b = without.CloudDensityPathToSun(point, sun, 100.0, 0.0, 6);
+        const double a = with.CloudSunTransmittance(point, sun, 100.0);
+        const double b = without.CloudSunTransmittance(point, sun, 100.0);
         differ += a != b;
-        shaded += b > 0.0;
+        shaded += b < 1.0;
         // Whether the shortcut was taken: the clear sky at the way's start reaches past its end.
         glm::dvec2 first, second;
         const double r = glm::length(point);
         glsl::CloudLayerIntervals(r, glm::dot(point, sun) / r, 1.0e9, with.clouds.bottomRadius, with.clouds.topRadius,
                                  first, second);
         const glm::dvec3 entry = glm::normalize(point + sun * first.x);
-        clearWays += with.CloudClearDistance(entry, with.textureLod(with.weatherMap, entry, 0.0).x) >=
-                     std::min(first.y - first.x, 100.0);
+        const bool notSampled = with.CloudSunSamplesFrom(point, sun, 100.0) == 0;
+        EXPECT_EQ(notSampled, with.CloudClearDistance(entry, with.textureLod(with.weatherMap, entry, 0.0).x) >=
+                                  std::min(first.y - first.x, 100.0));
+        clearWays += notSampled;
     }
     std::printf("2000 ways to the sun: %d through cloud, %d not sampled (a clear sky); %d differ\n", shaded,
                 clearWays, differ);

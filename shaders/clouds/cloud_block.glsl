@@ -35,4 +35,5 @@ layout(std140, binding = BLOCK_CLOUDS) uniform CloudBlock {
 
 layout(binding = UNIT_CLOUD_VOLUME) uniform sampler3D cloudVolume;   // tiling density, < 0: empty (border)
 layout(binding = UNIT_WEATHER_MAP) uniform samplerCube weatherMap;   // r: coverage, g: cloud type
-layout(binding = UNIT_CLEAR_SKY) uniform samplerCube clearSky;       // r: rad around a point with no coverage (nearest)
+layout(binding = UNIT_CLEAR_SKY) uniform samplerCube clearSky;       // r: the chord 2 sin(a / 2) of the angle a around a
+                                                                     // point with no coverage (nearest; src/clouds/clear_sky.h)

@@ -77,13 +77,15 @@ double clearSkyAngleAt(const ClearSkyMap& map, glm::dvec3 direction) {
     return map.radians[(static_cast<std::size_t>(face) * m + y) * m + x];
 }
 
+double clearSkyChord(double angleRad) { return 2.0 * std::sin(0.5 * angleRad); }
+
 gl::Texture makeClearSkyTexture(const ClearSkyMap& map) {
     const int m = std::max(map.size, 1);
     gl::Texture texture(GL_TEXTURE_CUBE_MAP);
     glTextureStorage2D(texture.id(), 1, GL_R32F, m, m);
-    const std::vector<float> none(6, 0.0f);
-    glTextureSubImage3D(texture.id(), 0, 0, 0, 0, m, m, 6, GL_RED, GL_FLOAT,
-                        map.size > 0 ? map.radians.data() : none.data());  // the faces in GL's order
+    std::vector<float> chords(6 * static_cast<std::size_t>(m) * m, 0.0f);
+    for (std::size_t i = 0; i < map.radians.size(); ++i) chords[i] = static_cast<float>(clearSkyChord(map.radians[i]));
+    glTextureSubImage3D(texture.id(), 0, 0, 0, 0, m, m, 6, GL_RED, GL_FLOAT, chords.data());  // the faces in GL's order
     glTextureParameteri(texture.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
     glTextureParameteri(texture.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
     for (GLenum wrap : {GL_TEXTURE_WRAP_S, GL_TEXTURE_WRAP_T, GL_TEXTURE_WRAP_R})

@@ -52,7 +52,14 @@ double clearSkyAngleAt(const ClearSkyMap& map, glm::dvec3 direction);
 // The largest r with (size / 2) r / cos^2(a + r) <= 2^k (see the header), a + r < pi / 2.
 double clearCapRadius(int size, int level, double axisAngle);
 
-// The map as an R32F cube map, nearest filtering (a 1 x 1 map of 0 where `map` is empty).
+// The chord of the unit sphere an angle spans, 2 sin(angle / 2): what the texture holds, so that
+// the march's read is the chord its clear sky allows through the layer once scaled by the layer's
+// bottom radius (two points at least that far from the centre and a chord d apart are at most
+// 2 asin(d / (2 bottomRadius)) apart), with no sine at every step.
+double clearSkyChord(double angleRad);
+
+// The map as an R32F cube map of the angles' chords, nearest filtering (a 1 x 1 map of 0 where
+// `map` is empty).
 gl::Texture makeClearSkyTexture(const ClearSkyMap& map);
 
 }  // namespace planet::clouds

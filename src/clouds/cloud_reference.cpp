@@ -107,9 +107,9 @@ vec4 CloudMarchModel::textureLod(const WeatherSampler& sampler, vec3 direction, 
     return vec4(w.x, w.y, 0.0, 1.0);
 }
 
-// An R32F samplerCube, GL_NEAREST: reads as (r, 0, 0, 1).
+// An R32F samplerCube of the angles' chords (makeClearSkyTexture), GL_NEAREST: reads as (r, 0, 0, 1).
 vec4 CloudMarchModel::textureLod(const ClearSkySampler& sampler, vec3 direction, Number) const {
-    return vec4(sampler.map ? clearSkyAngleAt(*sampler.map, direction) : 0.0, 0.0, 0.0, 1.0);
+    return vec4(sampler.map ? clearSkyChord(clearSkyAngleAt(*sampler.map, direction)) : 0.0, 0.0, 0.0, 1.0);
 }
 
 // interface.glsl with ELEK_TABLE 0: Bruneton's 4D table, without light shafts
