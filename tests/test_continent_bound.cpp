@@ -7,11 +7,14 @@
 #include <cstdio>
 #include <limits>
 #include <random>
+#include <vector>
 
 #include <glm/glm.hpp>
 #include <gtest/gtest.h>
 
 #include "app/session.h"
+#include "gl/program.h"
+#include "render/bindings.h"
 #include "gl_test_support.h"
 #include "noise/continents.h"
 #include "test_util.h"
@@ -103,4 +106,84 @@ TEST(ContinentBound, SmallCapsAreBoundedNearTheirCentresValue) {
     // 2.5 texels: 0.68 at the face's centre).
     std::printf("a cap of 1e-5 rad: bound at most %.3f above its centre's value\n", worst);
     EXPECT_LT(worst, 0.6);
+}
+
+namespace {
+
+class ContinentBoundGpu : public test::GLTest {};
+
+}  // namespace
+
+TEST_F(ContinentBoundGpu, TheControlStagesLookupIsTheCpuTwins) {
+    // shaders/terrain/continent_max_probe.comp: continentMaxWithin (terrain/patch_continents.glsl),
+    // as terrain/terrain.tesc calls it, against terrain::continentMaxWithin over 4000 caps (a third
+    // near the faces' edges and corners), the pyramid's texture as the terrain pass uploads it. The
+    // GPU picks the level in float, rounded up by 1e-4 (a coarser level still bounds: its 3x3 holds
+    // the finer one's), and the texel by GL's face selection in float: where either falls on a
+    // boundary the GPU's value may be a neighbour's or a coarser level's. Measured on llvmpipe: of
+    // the 3555 caps whose centre is on one face, 3554 the same (342 past the pyramid: 1e30 on both),
+    // 1 looser (a coarser level), none tighter. A GLSL lookup with another stretch or level rounding
+    // than the twin's would pick other levels for many of them.
+    const Session s = loadSession(test::repoPaths(), "earth", "orbit");
+    const noise::CubeMap& map = s.ground.continents();
+    const terrain::ContinentMaxPyramid pyramid = terrain::buildContinentMaxPyramid(map);
+    const gl::Texture texture = terrain::makeContinentMaxTexture(pyramid);
+    std::mt19937 rng(13);
+    std::uniform_real_distribution<double> unit(-1.0, 1.0), fraction(0.0, 1.0);
+    std::vector<glm::vec4> caps;
+    for (int i = 0; i < 4000; ++i) {
+        glm::dvec3 centre = glm::normalize(glm::dvec3(unit(rng), unit(rng), unit(rng)));
+        if (i % 3 == 0) {
+            glm::dvec3 a = glm::abs(centre);
+            const int axis = a.x >= a.y && a.x >= a.z ? 0 : a.y >= a.z ? 1 : 2;
+            const int other = (axis + 1 + (i / 3) % 2) % 3;
+            centre[other] = std::copysign(std::abs(centre[axis]) * (1.0 - 0.002 * fraction(rng)), centre[other]);
+            if (i % 9 == 0) centre[3 - axis - other] = std::copysign(std::abs(centre[axis]), centre[3 - axis - other]);
+            centre = glm::normalize(centre);
+        }
+        caps.emplace_back(glm::vec3(centre), static_cast<float>(std::pow(10.0, -4.0 + 3.4 * fraction(rng))));
+    }
+    const gl::Program program =
+        gl::buildProgram({test::repoPaths().shaders(), gl::shaderPreamble()},
+                         {"continent_max_probe", {"terrain/continent_max_probe.comp"}});
+    gl::Buffer input, output;
+    glNamedBufferStorage(input.id(), static_cast<GLsizeiptr>(caps.size() * sizeof(glm::vec4)), caps.data(), 0);
+    glNamedBufferStorage(output.id(), static_cast<GLsizeiptr>(caps.size() * sizeof(float)), nullptr, 0);
+    glBindTextureUnit(binding::UNIT_CONTINENT_MAX, texture.id());
+    glUseProgram(program.id());
+    glUniform1i(0, static_cast<GLint>(caps.size()));
+    glUniform1f(1, static_cast<float>(terrain::kContinentMaxRadiusRad));
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, input.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, output.id());
+    glDispatchCompute(static_cast<GLuint>((caps.size() + 63) / 64), 1, 1);
+    glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+    std::vector<float> gpu(caps.size());
+    glGetNamedBufferSubData(output.id(), 0, static_cast<GLsizeiptr>(gpu.size() * sizeof(float)), gpu.data());
+    glUseProgram(0);
+    glBindTextureUnit(binding::UNIT_CONTINENT_MAX, 0);
+    int same = 0, looser = 0, tighter = 0, unbounded = 0, ties = 0;
+    for (std::size_t i = 0; i < caps.size(); ++i) {
+        // A centre on a cube edge (two largest components equal in float) is on two faces, and GL
+        // leaves the choice to the implementation: either face's texel bounds the cap.
+        const glm::vec3 a = glm::abs(glm::vec3(caps[i]));
+        const float largest = std::max(a.x, std::max(a.y, a.z));
+        if ((a.x == largest) + (a.y == largest) + (a.z == largest) > 1) {
+            ++ties;
+            continue;
+        }
+        // The CPU twin for the cap the GPU was given (float centre and radius).
+        float cpu = terrain::continentMaxWithin(pyramid, glm::dvec3(glm::vec3(caps[i])), double(caps[i].w));
+        if (!std::isfinite(cpu)) cpu = 1.0e30f;
+        unbounded += cpu >= 1.0e30f;
+        same += gpu[i] == cpu;
+        looser += gpu[i] > cpu;
+        tighter += gpu[i] < cpu;
+    }
+    std::printf("%zu caps (%d on an edge, not compared): %d the same (%d past the pyramid on the CPU), %d looser on "
+                "the GPU, %d tighter\n",
+                caps.size(), ties, same, unbounded, looser, tighter);
+    EXPECT_GE(same, 3960 - ties);
+    EXPECT_LE(tighter, 20);  // a neighbour's texel at a boundary, at most
+    EXPECT_GE(unbounded, 200);  // the caps reach past the pyramid, where both say nothing
+    EXPECT_LE(unbounded, 3000);
 }
