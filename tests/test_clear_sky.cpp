@@ -20,21 +20,6 @@ using namespace planet;
 
 namespace {
 
-// A random unit direction; every third near a face's edge, every ninth near a corner.
-glm::dvec3 randomDirection(int i, std::mt19937& rng) {
-    std::uniform_real_distribution<double> unit(-1.0, 1.0), fraction(0.0, 1.0);
-    glm::dvec3 d = glm::normalize(glm::dvec3(unit(rng), unit(rng), unit(rng)));
-    if (i % 3 == 0) {
-        const glm::dvec3 a = glm::abs(d);
-        const int axis = a.x >= a.y && a.x >= a.z ? 0 : a.y >= a.z ? 1 : 2;
-        const int other = (axis + 1 + (i / 3) % 2) % 3;
-        d[other] = std::copysign(std::abs(d[axis]) * (1.0 - 0.002 * fraction(rng)), d[other]);
-        if (i % 9 == 0) d[3 - axis - other] = std::copysign(std::abs(d[axis]), d[3 - axis - other]);
-        d = glm::normalize(d);
-    }
-    return d;
-}
-
 // The earth preset's weather map (its bake parameters) at 128 a face: 78 km a texel.
 const noise::WeatherMap& weather() {
     static const noise::WeatherMap map = [] {
@@ -72,7 +57,7 @@ CapCheck checkCaps(const noise::WeatherMap& map, const clouds::ClearSkyMap& clea
     std::uniform_real_distribution<double> fraction(0.0, 1.0);
     CapCheck c;
     for (int i = 0; i < 4000; ++i) {
-        const glm::dvec3 p = randomDirection(i, rng);
+        const glm::dvec3 p = test::randomCubeDirection(i, rng);
         ++c.points;
         c.uncovered += noise::sampleWeather(map, p).x <= 0.0f;
         const double angle = clouds::clearSkyAngleAt(clear, p);

@@ -51,15 +51,7 @@ TEST(ContinentBound, TheMaximaBoundTheMapOverEveryCap) {
     int caps = 0, violations = 0;
     double worstExcess = -1e30, meanSlack = 0.0;
     for (int i = 0; i < 3000; ++i) {
-        glm::dvec3 centre = glm::normalize(glm::dvec3(unit(rng), unit(rng), unit(rng)));
-        if (i % 3 == 0) {  // near a face's edge or corner, where the faces meet
-            glm::dvec3 a = glm::abs(centre);
-            const int axis = a.x >= a.y && a.x >= a.z ? 0 : a.y >= a.z ? 1 : 2;
-            const int other = (axis + 1 + (i / 3) % 2) % 3;
-            centre[other] = std::copysign(std::abs(centre[axis]) * (1.0 - 0.002 * fraction(rng)), centre[other]);
-            if (i % 9 == 0) centre[3 - axis - other] = std::copysign(std::abs(centre[axis]), centre[3 - axis - other]);
-            centre = glm::normalize(centre);
-        }
+        const glm::dvec3 centre = test::randomCubeDirection(i, rng);
         const double radius = std::pow(10.0, -4.0 + 3.3 * fraction(rng));  // 1e-4 .. 0.2 rad
         const float bound = terrain::continentMaxWithin(pyramid, centre, radius);
         if (!std::isfinite(bound)) {
@@ -132,15 +124,7 @@ TEST_F(ContinentBoundGpu, TheControlStagesLookupIsTheCpuTwins) {
     std::uniform_real_distribution<double> unit(-1.0, 1.0), fraction(0.0, 1.0);
     std::vector<glm::vec4> caps;
     for (int i = 0; i < 4000; ++i) {
-        glm::dvec3 centre = glm::normalize(glm::dvec3(unit(rng), unit(rng), unit(rng)));
-        if (i % 3 == 0) {
-            glm::dvec3 a = glm::abs(centre);
-            const int axis = a.x >= a.y && a.x >= a.z ? 0 : a.y >= a.z ? 1 : 2;
-            const int other = (axis + 1 + (i / 3) % 2) % 3;
-            centre[other] = std::copysign(std::abs(centre[axis]) * (1.0 - 0.002 * fraction(rng)), centre[other]);
-            if (i % 9 == 0) centre[3 - axis - other] = std::copysign(std::abs(centre[axis]), centre[3 - axis - other]);
-            centre = glm::normalize(centre);
-        }
+        const glm::dvec3 centre = test::randomCubeDirection(i, rng);
         caps.emplace_back(glm::vec3(centre), static_cast<float>(std::pow(10.0, -4.0 + 3.4 * fraction(rng))));
     }
     const gl::Program program =

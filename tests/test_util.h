@@ -62,4 +62,20 @@ inline glm::dvec3 atAngle(glm::dvec3 centre, double angle, std::mt19937& rng) {
     return std::cos(angle) * centre + std::sin(angle) * side;
 }
 
+// A random unit direction; the i-th near a cube face's edge when i is a multiple of 3, near a
+// corner when a multiple of 9 (where the faces of a cube map meet).
+inline glm::dvec3 randomCubeDirection(int i, std::mt19937& rng) {
+    std::uniform_real_distribution<double> unit(-1.0, 1.0), fraction(0.0, 1.0);
+    glm::dvec3 d = glm::normalize(glm::dvec3(unit(rng), unit(rng), unit(rng)));
+    if (i % 3 == 0) {
+        const glm::dvec3 a = glm::abs(d);
+        const int axis = a.x >= a.y && a.x >= a.z ? 0 : a.y >= a.z ? 1 : 2;
+        const int other = (axis + 1 + (i / 3) % 2) % 3;
+        d[other] = std::copysign(std::abs(d[axis]) * (1.0 - 0.002 * fraction(rng)), d[other]);
+        if (i % 9 == 0) d[3 - axis - other] = std::copysign(std::abs(d[axis]), d[3 - axis - other]);
+        d = glm::normalize(d);
+    }
+    return d;
+}
+
 }  // namespace planet::test
