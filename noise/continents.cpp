@@ -127,9 +127,9 @@ double cubeTexelSolidAngle(int x, int y, int size) {
     return corner(x1, y1) - corner(x0, y1) - corner(x1, y0) + corner(x0, y0);
 }
 
-// The texel is found by selecting the face of a point a quarter texel beyond the edge: its
-// position along the edge moves by under a quarter texel when projected onto the neighbour, and a
-// texel centre is half a texel from its texel's boundary.
+// (noise/continents.h.) Beyond an edge the texel is found by selecting the face of a point a
+// quarter texel beyond it: its position along the edge moves by under a quarter texel when
+// projected onto the neighbour, and a texel centre is half a texel from its texel's boundary.
 bool seamlessTap(int size, int face, int i, int j, int& tapFace, int& x, int& y) {
     const int n = size;
     const bool insideI = i >= 0 && i < n, insideJ = j >= 0 && j < n;

@@ -136,12 +136,24 @@ Length CloudFarFieldPathToSun(vec3 a, vec3 b, Length way) {
     return CloudFarFieldPath(coverage, span, ua, ub, way, depth, clouds.extinction);
 }
 
+// Whether no cloud lies for sure within `way` km of `start` (a point of the layer): the clear sky
+// there (CloudClearDistance, from the weather map's coverage at it) reaches that far.
+bool CloudClearAlong(vec3 start, Length way) {
+    vec3 direction = start / length(start);
+    return CloudClearDistance(direction, textureLod(weatherMap, direction, 0.0).x) >= way;
+}
+
 // Optical depth per unit extinction (the integral of the density, km) from `point` towards
-// the sun: clouds.sunSamples density samples spread over the sun ray's way through the
+// the sun: `samples` density samples spread over the sun ray's way through the
 // layer, or over `maxLength` km of it where that way is longer, seen with a footprint of
 // `footprintKm` (the view sample's); in closed form where that footprint sees the far field
-// alone. 0 without clouds.
-Length CloudDensityPathToSun(vec3 point, vec3 sun, Length maxLength, Length footprintKm, int samples) {
+// alone. 0 without clouds. `clearSkyCheck`: none of the samples where the clear sky at the way's
+// start covers the whole way (CloudClearAlong: every sample lies within the way's length of it),
+// where they would all read 0; for the surfaces' shadows (under the `ground` view's clear sky, a
+// third of the surface light's time), not for a cloud's own samples (CloudSource), which lie in
+// cloud: the check's weather read there made the march in cloud 8 to 15 % dearer.
+Length CloudDensityPathToSun(vec3 point, vec3 sun, Length maxLength, Length footprintKm, int samples,
+                             bool clearSkyCheck) {
 #if CLOUDS_OFF
     return 0.0;
 #else
@@ -157,42 +169,20 @@ Length CloudDensityPathToSun(vec3 point, vec3 sun, Length maxLength, Length foot
 #else
     if (CloudFarBlend(footprintKm) >= 1.0 && clouds.constantDensity == 0)
         return CloudFarFieldPathToSun(point + sun * first.x, point + sun * (first.x + way), way);
+    int taken = clearSkyCheck && CloudClearAlong(point + sun * first.x, way) ? 0 : samples;
     Length step = way / Number(max(samples, 1));
     Length path = 0.0;
-    for (int i = 0; i < samples; ++i)
+    for (int i = 0; i < taken; ++i)
         path += max(CloudDensityAt(point + sun * (first.x + (Number(i) + 0.5) * step), footprintKm), 0.0) * step;
     return path;
 #endif
 #endif  // CLOUDS_OFF
 }
 
-// The samples CloudDensityPathToSun takes towards the sun from `point` (over at most `maxLength` km
-// of the layer): clouds.sunSamples, or none under a clear sky over the whole way (the clear sky map
-// at the way's start: every sample lies within the way's length of it), where they would all read 0.
-// For the surfaces' shadows (under the `ground` view's clear sky, a third of the surface light's
-// time); not for a cloud's own samples (CloudSource), which lie in cloud: the check's weather read
-// there made the march in cloud 8 to 15 % dearer.
-int CloudSunSamplesFrom(vec3 point, vec3 sun, Length maxLength) {
-#if CLOUDS_OFF
-    return 0;
-#else
-    Length r = length(point);
-    vec2 first;
-    vec2 second;
-    if (CloudLayerIntervals(r, dot(point, sun) / r, 1.0e9, clouds.bottomRadius, clouds.topRadius, first, second) == 0)
-        return clouds.sunSamples;
-    vec3 entry = point + sun * first.x;
-    vec3 entryDirection = entry / length(entry);
-    bool clear = CloudClearDistance(entryDirection, textureLod(weatherMap, entryDirection, 0.0).x) >=
-                 min(first.y - first.x, maxLength);
-    return clear ? 0 : clouds.sunSamples;
-#endif
-}
-
 // The clouds' transmittance towards the sun (Michelic Eq. 15 along the sun ray: T_sun)
 // from a point the camera sees (the surfaces' shadows): with that point's footprint, so a
 // shadow seen from orbit is the far field's, not speckle.
 Number CloudSunTransmittance(vec3 point, vec3 sun, Length maxLength) {
-    return exp(-clouds.extinction * CloudDensityPathToSun(point, sun, maxLength, CloudFootprintAt(point),
-                                                          CloudSunSamplesFrom(point, sun, maxLength)));
+    return exp(-clouds.extinction *
+               CloudDensityPathToSun(point, sun, maxLength, CloudFootprintAt(point), clouds.sunSamples, true));
 }

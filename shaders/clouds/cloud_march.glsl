@@ -59,7 +59,8 @@ vec3 CloudSource(vec3 point, vec3 sun, Number cosTheta, Number density, Length f
     Length r = length(point);
     Number muS = dot(point, sun) / r;
     vec3 sunlight = atmosphere.solar_irradiance * GetTransmittanceToSun(atmosphere, transmittance_texture, r, muS);
-    Length opticalDepth = CloudDensityPathToSun(point, sun, Number(clouds.sunSamples) * clouds.sunStep, footprintKm, sunSamples);  // density x km
+    Length opticalDepth = CloudDensityPathToSun(point, sun, Number(clouds.sunSamples) * clouds.sunStep, footprintKm,
+                                                sunSamples, false);  // density x km
     vec3 light = vec3(0.0);
     Number a = 1.0;
     Number b = 1.0;
