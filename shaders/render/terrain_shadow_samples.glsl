@@ -5,7 +5,9 @@
 
 // Where the samples around a pixel all clear the sun's disc by this much more than its radius
 // (rad), the pixel is taken as lit without a march: the margin catches most shadows narrower
-// than the samples' spacing, cast by bumps whose horizon the samples only just clear.
+// than the samples' spacing, cast by bumps whose horizon the samples only just clear. It stays
+// below terrain/terrain_shadow.glsl's TERRAIN_SHADOW_EXACT_MARGIN: the march's clearance is
+// exact only up to the radius plus that.
 const float TERRAIN_SHADOW_LIT_MARGIN = 0.03;
 
 // The terrain's clearance at `pixel` from the samples' `channel` (0: the ground, 1: the sea's

@@ -35,6 +35,7 @@ using std::abs;
 using std::acos;
 using std::asin;
 using std::floor;
+using std::ldexp;
 using std::log2;
 using std::pow;
 using std::sqrt;

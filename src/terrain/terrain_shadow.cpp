@@ -48,6 +48,22 @@ float terrainSunVisibilityAbove(glm::vec3 pointKm, float startM, glm::vec3 sun, 
                                                   shadow_glsl::TERRAIN_SHADOW_SAMPLES, toGlsl(shape), continents);
 }
 
+float terrainShadowClearanceMarch(glm::vec3 pointKm, float startM, glm::vec3 sun, float planetRadiusKm,
+                                  float sunAngularRadius, float footprintKm, const TerrainShape& shape,
+                                  const noise::CubeMap& continents, float exactBelow, bool boundOctaves) {
+    return shadow_glsl::terrainShadowClearanceMarch(pointKm, startM, sun, planetRadiusKm, sunAngularRadius,
+                                                    footprintKm, shadow_glsl::TERRAIN_SHADOW_SAMPLES, toGlsl(shape),
+                                                    continents, exactBelow, boundOctaves);
+}
+
+float terrainShadowExactMargin() { return shadow_glsl::TERRAIN_SHADOW_EXACT_MARGIN; }
+
+float terrainShadowHeightBelow(glm::vec3 direction, const TerrainShape& shape, const noise::CubeMap& continents,
+                               int octaves, float ceilingM, bool boundOctaves) {
+    return shadow_glsl::terrainShadowHeightBelow(direction, toGlsl(shape), continents, octaves, ceilingM,
+                                                 boundOctaves);
+}
+
 bool terrainShadowMayReachSea(glm::vec3 up, glm::vec3 sun, float seaLevelM, float planetRadiusKm,
                               float continentLipschitz, float sampleSlackRad, const TerrainShape& shape,
                               const noise::CubeMap& continents) {

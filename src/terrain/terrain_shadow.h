@@ -30,6 +30,22 @@ float terrainSunVisibilityAbove(glm::vec3 pointKm, float startM, glm::vec3 sun, 
                                 float sunAngularRadius, float footprintKm, const TerrainShape& shape,
                                 const noise::CubeMap& continents);
 
+// The march's smallest clearance angle (rad; 1 where nothing was marched), with the octaves' bounds
+// taken where the terrain cannot come within `exactBelow` rad of the ray (`boundOctaves`; the
+// shader's: the sun's radius plus TERRAIN_SHADOW_EXACT_MARGIN) or every octave evaluated.
+// GLSL: terrainShadowClearanceMarch.
+float terrainShadowClearanceMarch(glm::vec3 pointKm, float startM, glm::vec3 sun, float planetRadiusKm,
+                                  float sunAngularRadius, float footprintKm, const TerrainShape& shape,
+                                  const noise::CubeMap& continents, float exactBelow, bool boundOctaves);
+// The shader's exactBelow margin: TERRAIN_SHADOW_EXACT_MARGIN.
+float terrainShadowExactMargin();
+
+// The height (m) of the field with `octaves` mountain octaves at a unit direction, or where it
+// cannot rise above `ceilingM` (the octaves summed so far show it), a bound on it no lower than
+// the height. GLSL: terrainShadowHeightBelow.
+float terrainShadowHeightBelow(glm::vec3 direction, const TerrainShape& shape, const noise::CubeMap& continents,
+                               int octaves, float ceilingM, bool boundOctaves = true);
+
 // Whether the terrain may shadow the sea's surface at `up` from `seaLevelM`: false only where
 // the map's slope bound keeps the continent value below 0 as far as the march reaches.
 // GLSL: terrainShadowMayReachSea (the ocean pass skips the march where it is false).
