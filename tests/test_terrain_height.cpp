@@ -723,7 +723,7 @@ TEST(TerrainMaterial, TheDefaultPlanetHasEveryMaterial) {
 TEST(TerrainParams, TableHasARowPerFieldWithTheDefaultsInRange) {
     std::vector<ParamSpec> table;
     addTerrainParams(table);
-    ASSERT_EQ(table.size(), 18u);
+    ASSERT_EQ(table.size(), 19u);
     Scene scene;
     for (const ParamSpec& row : table) {
         EXPECT_EQ(row.section, "terrain");

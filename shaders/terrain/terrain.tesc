@@ -20,11 +20,24 @@ in ivec2 vPoint[];
 in vec3 vGround[];
 in vec3 vLow[];
 in vec3 vHigh[];
+in float vSlope[];
 out vec2 tcGrid[];
 out ivec2 tcPoint[];
 
 #include "terrain/terrain_block.glsl"
 #include "terrain/patch_continents.glsl"
+
+// The relief an edge's segments can show (grid/tessellation.glsl's edgeSegmentsShown): the steeper
+// of its ends' slopes, times TERRAIN_RELIEF_MARGIN for the steeper ground between them (the
+// octaves finer than the edge each add as much slope as the coarse ones: lacunarity 2, gain 1/2;
+// 2 let a distant range's silhouette slip: RenderTest.MountainSilhouetteMatchesTheCpuHeightField),
+// at least the preset's terrain.min_relief_slope, at most 1 (an edge seen face on).
+const float TERRAIN_RELIEF_MARGIN = 3.0;
+float terrainEdgeLevel(int i, int j) {
+    float relief = clamp(TERRAIN_RELIEF_MARGIN * max(vSlope[i], vSlope[j]), terrainMinReliefSlope, 1.0);
+    return clamp(edgeSegmentsShown(vGround[i], vGround[j], terrainTargetEdgePixels, TERRAIN_MAX_SAG_M, relief), 1.0,
+                 MAX_TESSELLATION_LEVEL);
+}
 
 // Whether the patch lies under the sea floor's dark depths throughout, where the sea is drawn over
 // it from above (terrainDarkFloorCulling; src/ocean/land_cull.h): its centre's continent value plus
@@ -72,7 +85,8 @@ void main() {
         return;
     }
     if (grid.stride == 1) {
-        setQuadLevels(ground, terrainTargetEdgePixels, TERRAIN_MAX_SAG_M);
+        setQuadLevelsFromEdges(terrainEdgeLevel(0, 3), terrainEdgeLevel(0, 1), terrainEdgeLevel(1, 2),
+                               terrainEdgeLevel(3, 2));
         return;
     }
     float target = terrainTargetEdgePixels;

@@ -16,12 +16,16 @@ out ivec2 vPoint;  // the point's indices (i, j): a stride's patch (terrain.tesc
 out vec3 vGround;  // m, camera-relative (world axes): the point on the terrain
 out vec3 vLow;     // m, camera-relative: the lowest sea floor below it
 out vec3 vHigh;    // m, camera-relative: the highest possible terrain above it
+out float vSlope;  // the ground's slope there, rise over run: how much relief the edges from it can show
 
 void main() {
     vGrid = gridCoordinate;
     vPoint = ivec2(gl_VertexID % grid.pointsPerSide, gl_VertexID / grid.pointsPerSide);
     dvec3 d = gridDirection(gridCoordinate);
-    vGround = cameraRelative(d, gridSphereRadius() + double(terrainHeight(vec3(d), terrainShape, uContinents)));
+    vec3 gradient;
+    float height = terrainHeightGrad(vec3(d), terrainShape, uContinents, gradient);
+    vSlope = length(gradient - dot(gradient, vec3(d)) * vec3(d)) / (frame.planetRadius + height);
+    vGround = cameraRelative(d, gridSphereRadius() + double(height));
     vLow = cameraRelative(d, gridSphereRadius() - double(terrainShape.oceanDepth));
     vHigh = cameraRelative(d, gridSphereRadius() + double(terrainShape.maxHeight));
 }

@@ -9,7 +9,7 @@ layout(std140, binding = BLOCK_TERRAIN) uniform TerrainBlock {
     float terrainTargetEdgePixels;  // triangle edge on screen the tessellation aims for
     int terrainHasOcean;            // 1: water below sea level; 0: dry basins (Mars)
     int terrainShadows;             // 1: the terrain casts shadows (terrain/terrain_shadow.glsl)
-    int terrainPadding0;            // (the ground detail is the program's TERRAIN_DETAIL: terrain/ground_material.frag)
+    float terrainMinReliefSlope;    // the least relief an edge seen grazing is split for (terrain/terrain.tesc)
     int terrainLightShafts;         // 1: the terrain's shadows in the air (atmosphere/interface.glsl)
     // The sea floor's dark depths not drawn where the sea covers them from above (terrain/
     // terrain.tesc; src/terrain/terrain_block.h): below this continent value, by the map's slope bound.

@@ -18,7 +18,7 @@ struct TerrainBlock {
     float targetEdgePixels;           // px
     int hasOcean;                     // 1: water below sea level
     int shadows;                      // 1: the terrain casts shadows (terrain/terrain_shadow.glsl)
-    int padding0;                     // (the ground detail is a program of its own: TERRAIN_DETAIL, terrain_pass.h)
+    float minReliefSlope;             // preset terrain.min_relief_slope (terrain/terrain.tesc)
     int lightShafts;                  // 1: the terrain's shadows in the air (atmosphere/interface.glsl)
     // The sea floor's dark depths not drawn where the sea is drawn over them from above (issue 15;
     // src/ocean/land_cull.h, darkFloorContinentThreshold): a patch is dropped where its centre's
@@ -34,7 +34,7 @@ struct TerrainBlock {
 };
 static_assert(offsetof(TerrainBlock, lowlandAlbedo) == 48 && offsetof(TerrainBlock, targetEdgePixels) == 60 &&
                   offsetof(TerrainBlock, hasOcean) == 64 &&
-                  offsetof(TerrainBlock, shadows) == 68 && offsetof(TerrainBlock, padding0) == 72 &&
+                  offsetof(TerrainBlock, shadows) == 68 && offsetof(TerrainBlock, minReliefSlope) == 72 &&
                   offsetof(TerrainBlock, lightShafts) == 76 && offsetof(TerrainBlock, patchDarkContinent) == 80 &&
                   offsetof(TerrainBlock, darkFloorCulling) == 88 &&
                   offsetof(TerrainBlock, continentMaxRadius) == 92 && sizeof(TerrainBlock) == 96,
@@ -45,6 +45,7 @@ inline TerrainBlock makeTerrainBlock(const Scene& scene) {
     b.shape = makeTerrainShape(scene.terrain);
     b.lowlandAlbedo = glm::vec3(scene.planet.albedo);
     b.targetEdgePixels = static_cast<float>(scene.terrain.target_edge_px);
+    b.minReliefSlope = static_cast<float>(scene.terrain.min_relief_slope);
     b.hasOcean = scene.terrain.ocean ? 1 : 0;
     b.shadows = scene.terrain.shadows ? 1 : 0;
     b.lightShafts = scene.terrain.light_shafts ? 1 : 0;

@@ -47,6 +47,11 @@ void addTerrainParams(std::vector<ParamSpec>& table) {
         &TerrainParams::grid_hysteresis);
     add("target_edge_px", "px", 1.0, 200.0, "Triangle edge length on screen the tessellation aims for.",
         &TerrainParams::target_edge_px);
+    add("min_relief_slope", "", 0.0, 1.0,
+        "The least relief (rise over run) the tessellation allows along an edge seen at a grazing angle: it is "
+        "split by its size on screen as seen, or where larger by the relief its segments could show (its ends' "
+        "slope, tripled, at least this, times its length); 1 splits every edge as if seen face on.",
+        &TerrainParams::min_relief_slope);
     add("ocean", "", 0.0, 1.0, "Water fills everything below sea level; off for a dry world (basins stay ground).",
         &TerrainParams::ocean);
     add("shadows", "", 0.0, 1.0,

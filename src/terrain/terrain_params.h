@@ -29,6 +29,7 @@ struct TerrainParams {
     int grid_exponent = 4;              // n of Eq. 2's hemisphere pre-displacement, 2 or 4, [2, 4]
     double grid_hysteresis = 0.05;      // the anchor moves after this fraction of the altitude, [0, 1]
     double target_edge_px = 12.0;       // tessellation aims at triangle edges this long on screen, [1, 200]
+    double min_relief_slope = 0.1;      // the least relief (rise over run) an edge seen grazing is split for, [0, 1]
     bool ocean = true;                  // water fills everything below sea level (false: dry basins, Mars)
     bool shadows = true;                // mountains cast shadows (a march towards the sun per lit pixel; terrain/terrain_shadow.glsl)
     bool detail = true;                 // ground detail at close range (terrain/detail.glsl)
