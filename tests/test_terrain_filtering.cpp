@@ -89,6 +89,33 @@ TEST(TerrainFiltering, NoFootprintIsTheUnfilteredFieldExactly) {
     }
 }
 
+// terrainFootprintShowsEveryOctave says where the filter leaves the field exactly as it is (the
+// ground's material then takes its normal from the near field's evaluation instead,
+// terrain/ground_material.frag): at footprints it accepts the filtered normal and height are the
+// unfiltered ones to the bit, with no spread; just past its bound (2 % more) the finest octave
+// has begun to fade and they differ at most points. Able to fail: a bound one octave too coarse
+// (the second finest's cell) accepts footprints at which the finest fades.
+TEST(TerrainFiltering, AFootprintThatShowsEveryOctaveIsTheFieldExactly) {
+    const Ground& g = ground();
+    float bound = 0.0f;  // the largest footprint accepted, m (searched: the test does not assume the formula)
+    for (float f = 1.0f; f < 10000.0f; f *= 1.001f)
+        if (terrain::terrainFootprintShowsEveryOctave(g.shape, f, kRadiusM)) bound = f;
+    ASSERT_GT(bound, 1.0f);
+    std::printf("every octave whole up to a footprint of %.1f m\n", bound);
+    int differ = 0, points = 0;
+    for (const glm::vec3& d : inlandDirections(200)) {
+        terrain::FootprintSpread spread;
+        const glm::vec3 exact = terrain::terrainNormal(d, g.shape, g.map, kRadiusM);
+        EXPECT_EQ(terrain::terrainNormalFiltered(d, g.shape, g.map, kRadiusM, bound, spread), exact);
+        EXPECT_EQ(spread.meanHeightM, terrain::terrainHeight(d, g.shape, g.map));
+        EXPECT_EQ(spread.heightSpreadM, 0.0f);
+        EXPECT_EQ(spread.slopeSpread, 0.0f);
+        differ += terrain::terrainNormalFiltered(d, g.shape, g.map, kRadiusM, 1.02f * bound, spread) != exact;
+        ++points;
+    }
+    EXPECT_GT(differ, points / 2) << "past the bound the finest octave fades";
+}
+
 // The moments the filter assumes for one octave, re-measured over 400k random points.
 TEST(TerrainFiltering, OctaveMomentsAreTheNoisesOwn) {
     std::mt19937 random(9);

@@ -440,6 +440,20 @@ float terrainHeightNearGrad(vec3 pointFromCamera, TerrainNear near, TerrainShape
 // ground (the mesh's) lands a fraction of a millimetre from the crossing. (Trusting only a
 // small first step put a third of the `mountains` foreground on the mesh's point: its
 // aliasing error went from 2.3 to 4.0 %.)
+// One Newton step of terrainRayHitNearSteps at the point x = d t (camera-relative, d the unit ray)
+// where the height field's height h and gradient are known: f, the ray's height above the ground
+// there, and df/dt; `radial`, the unit vertical at x.
+float terrainRayNewtonTerms(vec3 x, vec3 d, TerrainNear near, float h, vec3 gradient, OUT(float) df,
+                            OUT(vec3) radial) {
+    float rise;
+    float radius;
+    terrainNearDirectionChange(x, near, rise, radius);
+    radial = (terrainXyz(near.cameraUp) * near.cameraUp.w + x) / radius;
+    vec3 tangential = gradient - dot(gradient, radial) * radial;
+    df = dot(d, radial) - dot(tangential, d) / radius;
+    return near.cameraPlace.w + rise - h;
+}
+
 bool terrainRayHitNearSteps(vec3 start, TerrainNear near, TerrainShape shape, int steps, OUT(vec3) hit) {
     float t0 = length(start);
     vec3 d = start / t0;
@@ -449,15 +463,11 @@ bool terrainRayHitNearSteps(vec3 start, TerrainNear near, TerrainShape shape, in
     for (int i = 0; i < 4; i++) {
         if (i >= steps) break;
         vec3 x = d * t;
-        float rise;
-        float radius;
-        terrainNearDirectionChange(x, near, rise, radius);
         vec3 gradient;
         float h = terrainHeightNearGrad(x, near, shape, gradient);
-        float f = near.cameraPlace.w + rise - h;
-        vec3 radial = (terrainXyz(near.cameraUp) * near.cameraUp.w + x) / radius;
-        vec3 tangential = gradient - dot(gradient, radial) * radial;
-        float df = dot(d, radial) - dot(tangential, d) / radius;  // df/dt
+        float df;
+        vec3 radial;
+        float f = terrainRayNewtonTerms(x, d, near, h, gradient, df, radial);
         if (i == 0) onTheGround = start - radial * f;
         if (df > -1.0e-4f) break;
         newtonStep = f / df;
@@ -470,6 +480,28 @@ bool terrainRayHitNearSteps(vec3 start, TerrainNear near, TerrainShape shape, in
     bool converged = stepped && abs(t - t0) < 0.1f * t0 + 1.0f;
     hit = converged ? d * t : onTheGround;
     return converged;
+}
+
+// terrainRayHitNearSteps's single step from `start` where the height h and gradient there are
+// already known (terrainHeightNearGrad at start): the same step, no height evaluated.
+bool terrainRayHitNearStepFrom(vec3 start, TerrainNear near, float h, vec3 gradient, OUT(vec3) hit) {
+    float t0 = length(start);
+    vec3 d = start / t0;
+    float df;
+    vec3 radial;
+    float f = terrainRayNewtonTerms(d * t0, d, near, h, gradient, df, radial);
+    float t = df > -1.0e-4f ? t0 : t0 - f / df;
+    bool converged = df <= -1.0e-4f && abs(t - t0) < 0.1f * t0 + 1.0f;
+    hit = converged ? d * t : start - radial * f;
+    return converged;
+}
+
+// Whether a footprint of `footprintM` metres shows every mountain octave whole
+// (terrainOctaveFade 1 for the finest: its lattice cell at least 1 / TERRAIN_FILTER_KEEP
+// footprints): then terrainHeightGradFiltered is terrainHeightGrad exactly, with no variance.
+bool terrainFootprintShowsEveryOctave(TerrainShape shape, float footprintM, float planetRadius) {
+    float finestFrequency = ldexp(shape.mountainFrequency, max(shape.mountainOctaves - 1, 0));
+    return footprintM / planetRadius * finestFrequency <= TERRAIN_FILTER_KEEP;
 }
 
 // terrainRayHitNearSteps to convergence: three or four height evaluations.

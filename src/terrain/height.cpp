@@ -118,6 +118,15 @@ bool terrainRayHitNearSteps(glm::vec3 start, const TerrainNear& near, const Terr
     return glsl::terrainRayHitNearSteps(start, toGlsl(near), toGlsl(shape), steps, hit);
 }
 
+bool terrainRayHitNearStepFrom(glm::vec3 start, const TerrainNear& near, float h, glm::vec3 gradient,
+                               glm::vec3& hit) {
+    return glsl::terrainRayHitNearStepFrom(start, toGlsl(near), h, gradient, hit);
+}
+
+bool terrainFootprintShowsEveryOctave(const TerrainShape& shape, float footprintM, float planetRadius) {
+    return glsl::terrainFootprintShowsEveryOctave(toGlsl(shape), footprintM, planetRadius);
+}
+
 float terrainNearRangeM() { return glsl::TERRAIN_NEAR_RANGE_M; }
 
 float terrainNearWrapM() { return glsl::TERRAIN_NEAR_WRAP_M; }

@@ -116,6 +116,17 @@ bool terrainRayHitNear(glm::vec3 start, const TerrainNear& near, const TerrainSh
 bool terrainRayHitNearSteps(glm::vec3 start, const TerrainNear& near, const TerrainShape& shape, int steps,
                             glm::vec3& hit);
 
+// terrainRayHitNearSteps's one step from `start` given the near field's height `h` and gradient
+// there (terrainHeightNearGrad at start): the same step, no height evaluated.
+// GLSL: terrainRayHitNearStepFrom (the ground's material, where one evaluation serves the
+// normal and the step).
+bool terrainRayHitNearStepFrom(glm::vec3 start, const TerrainNear& near, float h, glm::vec3 gradient,
+                               glm::vec3& hit);
+
+// Whether a footprint of `footprintM` shows every mountain octave whole, so that
+// terrainNormalFiltered is terrainNormal exactly. GLSL: terrainFootprintShowsEveryOctave.
+bool terrainFootprintShowsEveryOctave(const TerrainShape& shape, float footprintM, float planetRadius);
+
 // How far from the camera the near field is used, m (TERRAIN_NEAR_RANGE_M).
 float terrainNearRangeM();
 
