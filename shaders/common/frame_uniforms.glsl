@@ -66,6 +66,9 @@ float riseFromCameraM(vec3 pointFromCamera) {
 // (< 0 above it): the camera's depth less the point's rise.
 float depthBelowSeaM(vec3 pointFromCamera) { return frame.cameraDepthBelowSea - riseFromCameraM(pointFromCamera); }
 
+// The frame's height in pixels (the render targets' own, as src/render/render_targets.cpp sizes them).
+int frameHeightPixels() { return int(round(1.0 / frame.inverseViewportSize.y)); }
+
 // Angle one pixel subtends vertically, rad (from the vertical field of view).
 float radiansPerPixel() { return 2.0 * atan(1.0 / frame.clipFromView[1][1]) * frame.inverseViewportSize.y; }
 

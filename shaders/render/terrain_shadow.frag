@@ -1,4 +1,4 @@
-// The terrain's shadow at a sparse set of pixels, one of each TERRAIN_SHADOW_SPACING-square
+// The terrain's shadow at a sparse set of pixels, one of each terrainShadowSpacing-square
 // block, the block's corner: the march's clearance angle (rad; the sun's disc is whole at its
 // angular radius and above, hidden at minus that: terrain/terrain_shadow.glsl), both channels
 // marched after this pass at the samples it lists (render/terrain_shadow_sample_marches.comp)
@@ -49,7 +49,7 @@ bool seaSurfaceAt(vec3 dir, SurfacePoint ground, bool hasGround, out vec3 point)
 }
 
 void main() {
-    ivec2 pixel = ivec2(gl_FragCoord.xy) * TERRAIN_SHADOW_SPACING;
+    ivec2 pixel = ivec2(gl_FragCoord.xy) * terrainShadowSpacing(frameHeightPixels());
     vec3 sun = frame.sunDirection;
     SurfacePoint s;
     outClearance = vec2(TERRAIN_SHADOW_NO_SURFACE);

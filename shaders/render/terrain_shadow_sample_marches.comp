@@ -28,7 +28,7 @@ void main() {
     ivec2 texel = listedPixel(i);
     uint flags = listedFlags(i);  // 1: the ground's march, 2: the sea's
     SurfacePoint ground;
-    surfacePointAt(texel * TERRAIN_SHADOW_SPACING, ground);  // as render/terrain_shadow.frag's point and ray
+    surfacePointAt(texel * terrainShadowSpacing(frameHeightPixels()), ground);  // as render/terrain_shadow.frag's point and ray
     vec3 seaPoint = cameraFromPlanetCentreKm() + ground.dir * (seaSphereDistance(ground.dir) / M_PER_KM);
     vec4 clearance = imageLoad(samples, texel);
     for (int k = (flags & 1u) != 0u ? 0 : 1; k <= ((flags & 2u) != 0u ? 1 : 0); ++k) {

@@ -1,5 +1,5 @@
 // Reading the terrain shadow's samples (render/terrain_shadow.frag: the march's clearance angle at
-// one pixel of each TERRAIN_SHADOW_SPACING-square block) at a frame pixel: the surface light for
+// one pixel of each terrainShadowSpacing-square block) at a frame pixel: the surface light for
 // the ground (the samples' r) and the ocean for the sea's surface (their g). Include after
 // render/sample_spacing.glsl and render/block_samples.glsl, with the samples' texture declared.
 
@@ -21,7 +21,7 @@ const float TERRAIN_SHADOW_LIT_MARGIN = 0.03;
 bool terrainClearanceFromSamples(sampler2D samples, ivec2 pixel, int channel, float radius, inout float clearance,
                                  out float meanClearance) {
     ivec2 corners[4];
-    blockSampleCorners(pixel, TERRAIN_SHADOW_SPACING, textureSize(samples, 0) - 1, corners);
+    blockSampleCorners(pixel, terrainShadowSpacing(frameHeightPixels()), textureSize(samples, 0) - 1, corners);
     float a = texelFetch(samples, corners[0], 0)[channel];
     float b = texelFetch(samples, corners[1], 0)[channel];
     float c = texelFetch(samples, corners[2], 0)[channel];

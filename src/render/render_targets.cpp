@@ -66,6 +66,8 @@ gl::Framebuffer makeFramebuffer(std::initializer_list<const gl::Texture*> colour
 
 }  // namespace
 
+int terrainShadowSampleSpacing(int frameHeight) { return terrainShadowSpacing(frameHeight); }
+
 bool RenderTargets::resize(glm::ivec2 size) {
     if (size == size_) return false;
     if (size.x <= 0 || size.y <= 0) throw std::invalid_argument("render target size must be positive");
@@ -110,8 +112,8 @@ bool RenderTargets::resize(glm::ivec2 size) {
     hdr_ = makeTexture(GL_RGBA16F, size, "hdr");
     skyMedium_ = makeTexture(GL_RGBA32UI, size, "sky T, S");
     hdrFramebuffer_ = makeFramebuffer({&hdr_, &skyMedium_}, nullptr, "hdr + sky T, S");
-    terrainShadowSamples_.spacing = TERRAIN_SHADOW_SPACING;
-    terrainShadowSamples_.size = (size + TERRAIN_SHADOW_SPACING - 1) / TERRAIN_SHADOW_SPACING;
+    terrainShadowSamples_.spacing = terrainShadowSpacing(size.y);
+    terrainShadowSamples_.size = (size + terrainShadowSamples_.spacing - 1) / terrainShadowSamples_.spacing;
     terrainShadowSamples_.visibility = makeTexture(GL_RG32F, terrainShadowSamples_.size, "terrain shadow samples");
     terrainShadowSamples_.framebuffer =
         makeFramebuffer({&terrainShadowSamples_.visibility}, nullptr, "terrain shadow samples");

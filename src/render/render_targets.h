@@ -26,7 +26,7 @@
 //             size: that change marched at one pixel of each block (ocean/sea_reflection.frag),
 //             added back into the surface radiance by the same file's compose program
 //             (surfaceRadianceFramebuffer, additive)
-//   terrain shadow  RG32F, 1 / TERRAIN_SHADOW_SPACING of the size on each side (rounded up):
+//   terrain shadow  RG32F, 1 / terrainShadowSpacing of the size on each side (rounded up):
 //             the terrain's shadow at the corner pixel of each block, on the ground and on the
 //             sea's surface in front of it (render/terrain_shadow.frag)
 //   sparse    a quarter of the size on each side (rounded up): the reduced-rate march's
@@ -69,11 +69,15 @@ struct FrameHistory {
     gl::Texture skyMedium{GL_TEXTURE_2D};        // RGBA32UI, its sky T, S and sample count
 };
 
+// The terrain shadow samples' spacing for a frame `frameHeight` pixels high: pixels per side of a
+// block (render/sample_spacing.glsl's terrainShadowSpacing: 2, and 4 from 720 rows up).
+int terrainShadowSampleSpacing(int frameHeight);
+
 // The terrain shadow's samples (render/terrain_shadow.frag): one pixel of each
-// TERRAIN_SHADOW_SPACING-square block, the block's corner.
+// terrainShadowSpacing-square block (render/sample_spacing.glsl), the block's corner.
 struct TerrainShadowSamples {
     glm::ivec2 size{0, 0};
-    int spacing = 1;  // TERRAIN_SHADOW_SPACING: pixels per side of a block
+    int spacing = 1;  // terrainShadowSpacing(height): pixels per side of a block
     gl::Texture visibility{GL_TEXTURE_2D};  // RG32F: the march's clearance, rad, on the ground (r) and on the
                                             // sea's surface in front of it (g); TERRAIN_SHADOW_NO_SURFACE where none
     gl::Framebuffer framebuffer;

@@ -56,7 +56,8 @@ void addTerrainParams(std::vector<ParamSpec>& table) {
         &TerrainParams::ocean);
     add("shadows", "", 0.0, 1.0,
         "The terrain casts shadows: mountains shade the ground at a low sun (a march over the height field "
-        "towards the sun: on the ground at one pixel of each 2x2 block and where those disagree, on the sea "
+        "towards the sun: on the ground at one pixel of each 2x2 block (4x4 from 720 rows up) and where those "
+        "disagree, on the sea "
         "at each lit pixel near land).",
         &TerrainParams::shadows);
     add("light_shafts", "", 0.0, 1.0,
