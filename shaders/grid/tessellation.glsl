@@ -12,11 +12,16 @@ const float MAX_TESSELLATION_LEVEL = 64.0;
 // space at 160x90 the limb's 32-pixel chords of the sea sagged 3.5 pixels: segments of at most
 // 8.6 pixels there, 24 from space at 1280x720). Depends on the two points only, so patches
 // sharing the edge agree (no cracks).
+// Segments for an edge whose size on screen is `sizeRad`, its chord `chord` m long, its nearer end
+// `nearest` m away: the size over targetPixels, and the chords' sag bounds.
+float segmentsForSize(float sizeRad, float nearest, float chord, float targetPixels, float maxSagM) {
+    float sag = min(MAX_SAG_PIXELS * nearest * radiansPerPixel(), maxSagM);
+    return max(sizeRad / radiansPerPixel() / targetPixels, chord / sqrt(8.0 * frame.planetRadius * sag));
+}
 float edgeSegments(vec3 a, vec3 b, float targetPixels, float maxSagM) {  // unclamped
     float nearest = max(min(length(a), length(b)), 1e-3);
     float chord = length(a - b);
-    float sag = min(MAX_SAG_PIXELS * nearest * radiansPerPixel(), maxSagM);
-    return max(chord / nearest / radiansPerPixel() / targetPixels, chord / sqrt(8.0 * frame.planetRadius * sag));
+    return segmentsForSize(chord / nearest, nearest, chord, targetPixels, maxSagM);
 }
 float edgeLevel(vec3 a, vec3 b, float targetPixels, float maxSagM) {
     return clamp(edgeSegments(a, b, targetPixels, maxSagM), 1.0, MAX_TESSELLATION_LEVEL);
@@ -35,9 +40,7 @@ float edgeSegmentsShown(vec3 a, vec3 b, float targetPixels, float maxSagM, float
     float nearest = max(min(length(a), length(b)), 1e-3);
     float chord = length(a - b);
     float apparent = 2.0 * asin(min(0.5 * length(normalize(a) - normalize(b)), 1.0));
-    float size = max(apparent, reliefSlope * chord / nearest);
-    float sag = min(MAX_SAG_PIXELS * nearest * radiansPerPixel(), maxSagM);
-    return max(size / radiansPerPixel() / targetPixels, chord / sqrt(8.0 * frame.planetRadius * sag));
+    return segmentsForSize(max(apparent, reliefSlope * chord / nearest), nearest, chord, targetPixels, maxSagM);
 }
 
 // Segments a grid cell's edge keeps in a stride's patch where the sphere is seen nearly edge-on

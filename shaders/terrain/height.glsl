@@ -293,16 +293,26 @@ const float TERRAIN_MOUNTAINS_BOUND = 1.1f;
 // where maxHeight is 8 km.
 // (terrainHeightFromParts's height alone, both sides formed and one picked: it runs per pixel,
 // where a software renderer would run both sides of an if anyway, and their gradients for nothing.)
-float terrainHeightBound(TerrainShape shape, float e) {
-    float coastSlope = terrainCoastSlope(shape);
+// The land's height at continent value e >= 0 is lowlandM + mountainScaleM x the mountains' value
+// (noise^2 plus the variance a footprint hides; terrainHeightFromParts): its two parts, without
+// their gradients.
+void terrainLandParts(TerrainShape shape, float e, OUT(float) lowlandM, OUT(float) mountainScaleM) {
     float unused;
-    float mSea = shape.oceanDepth > 0.0f ? coastSlope * TERRAIN_SHELF_WIDTH / shape.oceanDepth : 0.0f;
-    float sea = -shape.oceanDepth * terrainCoastRamp(-e / TERRAIN_SHELF_WIDTH, mSea, unused);
     float lowlandHeight = TERRAIN_LOWLAND_SHARE * shape.maxHeight;
-    float mLand = lowlandHeight > 0.0f ? coastSlope * TERRAIN_LOWLAND_WIDTH / lowlandHeight : 0.0f;
-    float inland = terrainSmoothstepGrad(0.0f, TERRAIN_INLAND_WIDTH, e, unused);
-    float land = lowlandHeight * terrainCoastRamp(e / TERRAIN_LOWLAND_WIDTH, mLand, unused) +
-                 shape.maxHeight * (1.0f - TERRAIN_LOWLAND_SHARE) * inland * TERRAIN_MOUNTAINS_BOUND;
+    float mLand = lowlandHeight > 0.0f ? terrainCoastSlope(shape) * TERRAIN_LOWLAND_WIDTH / lowlandHeight : 0.0f;
+    lowlandM = lowlandHeight * terrainCoastRamp(e / TERRAIN_LOWLAND_WIDTH, mLand, unused);
+    mountainScaleM = shape.maxHeight * (1.0f - TERRAIN_LOWLAND_SHARE) *
+                     terrainSmoothstepGrad(0.0f, TERRAIN_INLAND_WIDTH, e, unused);
+}
+
+float terrainHeightBound(TerrainShape shape, float e) {
+    float unused;
+    float mSea = shape.oceanDepth > 0.0f ? terrainCoastSlope(shape) * TERRAIN_SHELF_WIDTH / shape.oceanDepth : 0.0f;
+    float sea = -shape.oceanDepth * terrainCoastRamp(-e / TERRAIN_SHELF_WIDTH, mSea, unused);
+    float lowlandM;
+    float mountainScaleM;
+    terrainLandParts(shape, e, lowlandM, mountainScaleM);
+    float land = lowlandM + mountainScaleM * TERRAIN_MOUNTAINS_BOUND;
     return clamp(e < 0.0f ? sea : land, -shape.oceanDepth, shape.maxHeight);
 }
 
@@ -424,6 +434,20 @@ float terrainHeightNearGrad(vec3 pointFromCamera, TerrainNear near, TerrainShape
                                   heightVariance, gradientVariance);
 }
 
+// One Newton step of terrainRayHitNearSteps at the point x = d t (camera-relative, d the unit ray)
+// where the height field's height h and gradient are known: f, the ray's height above the ground
+// there, and df/dt; `radial`, the unit vertical at x.
+float terrainRayNewtonTerms(vec3 x, vec3 d, TerrainNear near, float h, vec3 gradient, OUT(float) df,
+                            OUT(vec3) radial) {
+    float rise;
+    float radius;
+    terrainNearDirectionChange(x, near, rise, radius);
+    radial = (terrainXyz(near.cameraUp) * near.cameraUp.w + x) / radius;
+    vec3 tangential = gradient - dot(gradient, radial) * radial;
+    df = dot(d, radial) - dot(tangential, d) / radius;
+    return near.cameraPlace.w + rise - h;
+}
+
 // Where the ray from the camera through `start` (m, camera-relative: a point near the
 // surface, such as the mesh's) meets the height field near the camera: Newton's method on
 // f(t) = altitude(t d) - h(t d), the ray's height above the ground, from t = |start|, at most
@@ -440,20 +464,6 @@ float terrainHeightNearGrad(vec3 pointFromCamera, TerrainNear near, TerrainShape
 // ground (the mesh's) lands a fraction of a millimetre from the crossing. (Trusting only a
 // small first step put a third of the `mountains` foreground on the mesh's point: its
 // aliasing error went from 2.3 to 4.0 %.)
-// One Newton step of terrainRayHitNearSteps at the point x = d t (camera-relative, d the unit ray)
-// where the height field's height h and gradient are known: f, the ray's height above the ground
-// there, and df/dt; `radial`, the unit vertical at x.
-float terrainRayNewtonTerms(vec3 x, vec3 d, TerrainNear near, float h, vec3 gradient, OUT(float) df,
-                            OUT(vec3) radial) {
-    float rise;
-    float radius;
-    terrainNearDirectionChange(x, near, rise, radius);
-    radial = (terrainXyz(near.cameraUp) * near.cameraUp.w + x) / radius;
-    vec3 tangential = gradient - dot(gradient, radial) * radial;
-    df = dot(d, radial) - dot(tangential, d) / radius;
-    return near.cameraPlace.w + rise - h;
-}
-
 bool terrainRayHitNearSteps(vec3 start, TerrainNear near, TerrainShape shape, int steps, OUT(vec3) hit) {
     float t0 = length(start);
     vec3 d = start / t0;

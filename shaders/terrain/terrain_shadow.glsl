@@ -95,15 +95,12 @@ const float TERRAIN_SHADOW_OCTAVE_MAX = 1.05f;
 // of the cost, only where the ray passes close to the ground. `boundOctaves` false: every octave.
 float terrainShadowHeightBelow(vec3 direction, TerrainShape shape, samplerCube continents, int octaves,
                                float ceilingM, bool boundOctaves) {
-    vec3 continentGradient;
-    float e = continentValueGrad(direction, continents, continentGradient);
+    float e = continentValue(direction, continents);
     int count = e >= 0.0f ? clamp(octaves, 0, 10) : 0;  // the sea floor takes no octave (terrainHeight)
-    // The noise at which the land's height reaches the ceiling (terrainHeightFromParts's parts).
-    float unused;
-    float lowlandHeight = TERRAIN_LOWLAND_SHARE * shape.maxHeight;
-    float mLand = lowlandHeight > 0.0f ? terrainCoastSlope(shape) * TERRAIN_LOWLAND_WIDTH / lowlandHeight : 0.0f;
-    float lowland = lowlandHeight * terrainCoastRamp(e / TERRAIN_LOWLAND_WIDTH, mLand, unused);
-    float scale = shape.maxHeight * (1.0f - TERRAIN_LOWLAND_SHARE) * terrainSmoothstepGrad(0.0f, TERRAIN_INLAND_WIDTH, e, unused);
+    // The noise at which the land's height reaches the ceiling.
+    float lowland;
+    float scale;
+    terrainLandParts(shape, e, lowland, scale);
     float room = ceilingM - lowland;
     float noiseCeiling = scale > 0.0f ? sqrt(max(room, 0.0f) / scale) : (room >= 0.0f ? 1.0e30f : 0.0f);
     if (!boundOctaves) noiseCeiling = -1.0f;
@@ -129,8 +126,8 @@ float terrainShadowHeightBelow(vec3 direction, TerrainShape shape, samplerCube c
     vec3 gradient;
     float heightVariance;
     float gradientVariance;
-    return terrainHeightFromParts(shape, e, continentGradient, noise, vec3(0.0f), 0.0f, 0.0f, gradient,
-                                  heightVariance, gradientVariance);
+    return terrainHeightFromParts(shape, e, vec3(0.0f), noise, vec3(0.0f), 0.0f, 0.0f, gradient, heightVariance,
+                                  gradientVariance);
 }
 
 // Visibility of the sun from the ground at `point` (km from the planet centre; only its
