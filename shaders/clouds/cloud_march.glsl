@@ -51,6 +51,7 @@ struct CloudSegmentResult {
     int steps;      // small steps taken (in or near clouds)
     int skipped;    // large steps taken through empty space
     Length depthSum;  // sum of each step's distance along the ray times the opacity it added (cloud T)
+    Length reached;   // where the march stopped: past `end` where a step through empty space crossed it
 };
 
 // Radiance scattered towards the viewer per unit scattering coefficient at a cloud sample.
@@ -79,9 +80,10 @@ vec3 CloudSource(vec3 point, vec3 sun, Number cosTheta, Number density, Length f
 }
 
 // Eq. 15-16 from `start` to `end` km along `dir` from `origin` (km from the planet centre),
-// at most `budget` small steps.
-CloudSegmentResult MarchCloudSegment(vec3 origin, vec3 dir, Length start, Length end, vec3 sun, int budget,
-                                     MarchQuality quality) {
+// at most `budget` small steps; from `from` on (>= start: what lies before it is known to be
+// empty, the previous segment's step through empty space having crossed it).
+CloudSegmentResult MarchCloudSegment(vec3 origin, vec3 dir, Length start, Length from, Length end, vec3 sun,
+                                     int budget, MarchQuality quality) {
     CloudSegmentResult result;
     result.transmittance = vec3(1.0);
     result.inscatter = vec3(0.0);
@@ -99,7 +101,7 @@ CloudSegmentResult MarchCloudSegment(vec3 origin, vec3 dir, Length start, Length
     // Inside dense cloud the step shortens so that each step's optical depth stays about 1/2
     // (down to an eighth of the step, from the last sample's density): an opaque step would
     // put the cloud's surface at one of its ends and show the steps as bands or grain.
-    Length t = start;
+    Length t = from;
     Number previous = 0.0;
     bool weatherClear = true;  // the last sample's weather had no coverage (CloudDensityAndClearAt); at first,
                                // read the clear sky even in a border (a border's short step before each long one
@@ -140,6 +142,7 @@ CloudSegmentResult MarchCloudSegment(vec3 origin, vec3 dir, Length start, Length
         if (result.steps >= budget || max(result.transmittance.x, max(result.transmittance.y, result.transmittance.z)) < 1e-4)
             break;
     }
+    result.reached = t;
     return result;
 }
 
@@ -195,7 +198,7 @@ ViewMarch MarchViewFrom(vec3 origin, vec3 up, Length altitude, bool inside, vec3
     Number cloudTransmittance = 1.0;
     Length depthSum = 0.0;
     bool toSpace = distance <= 0.0;
-    Length t = 0.0;
+    Length t = 0.0;  // the air is combined up to here
 #if !CLOUDS_OFF  // (a program built for a frame without clouds crosses no layer: see cloud_density.glsl)
     vec2 crossings[2];
     int count = 0;
@@ -206,28 +209,43 @@ ViewMarch MarchViewFrom(vec3 origin, vec3 up, Length altitude, bool inside, vec3
     }
     for (int k = 0; k < count; ++k) {
         vec2 crossing = crossings[k];
-        if (crossing.x > t) {  // air up to the layer: one slice, T_C = 1, I_C = 0 (Eq. 17-18)
-            AirSlice slice = AirSliceFrom(up, altitude, inside, origin, dir, t, crossing.x - t, sun);
-            CombineSlice(slice.transmittance, slice.inscatter, vec3(1.0), vec3(0.0), m.transmittance, m.inscatter);
-        }
         int slices = max(quality.slicesPerCrossing, 1);
         Length width = (crossing.y - crossing.x) / Number(slices);
         int budget = max(quality.stepBudget / (slices * count), 1);
+        Length emptyTo = crossing.x;  // the clouds are known to be empty up to here
         for (int s = 0; s < slices; ++s) {  // inside the layer: slices of air with clouds in them (Eq. 19-20)
             Length a = crossing.x + Number(s) * width;
-            AirSlice slice = AirSliceFrom(up, altitude, inside, origin, dir, a, width, sun);
-            CloudSegmentResult c = MarchCloudSegment(origin, dir, a, a + width, sun, budget, quality);
-            CombineSlice(slice.transmittance, slice.inscatter, c.transmittance, c.inscatter, m.transmittance,
-                         m.inscatter);
+            // A slice that a step through empty space crossed whole marches nothing: its
+            // loop is not entered (a clear sky's long steps cross several slices at once).
+            CloudSegmentResult c =
+                MarchCloudSegment(origin, dir, a, max(a, emptyTo), a + width, sun, budget, quality);
+            emptyTo = c.reached;
             m.steps += c.steps;
             m.skipped += c.skipped;
+            // A slice without clouds (T_C = 1, I_C = 0) changes nothing in Eq. 19-20 but its
+            // air, which joins the air before and after it: a clear ray is one lookup of the air
+            // (the whole ray's, as without a layer), a cloudy one no more lookups than slices.
+            // A loop of one turn or none, not an if: a software renderer leaves a loop that
+            // no ray of a group enters, but runs an if's code for every ray.
+            bool cloudy = c.transmittance != vec3(1.0) || c.inscatter != vec3(0.0);
+            for (int i = 0; i < (cloudy ? 1 : 0); ++i) {
+                if (a > t) {  // the clear air up to the slice: T_C = 1, I_C = 0 (Eq. 17-18)
+                    AirSlice clear = AirSliceFrom(up, altitude, inside, origin, dir, t, a - t, sun);
+                    CombineSlice(clear.transmittance, clear.inscatter, vec3(1.0), vec3(0.0), m.transmittance,
+                                 m.inscatter);
+                }
+                AirSlice slice = AirSliceFrom(up, altitude, inside, origin, dir, a, width, sun);
+                CombineSlice(slice.transmittance, slice.inscatter, c.transmittance, c.inscatter, m.transmittance,
+                             m.inscatter);
+                t = a + width;
+            }
             depthSum += cloudTransmittance * c.depthSum;
             cloudTransmittance *= c.transmittance.x;
         }
-        t = crossing.y;
     }
 #endif
-    // The rest: air to the surface point, or the sky beyond.
+    // The rest: the air from the last cloudy slice (or the viewpoint) to the surface point, or
+    // the sky beyond.
     AirSlice rest;
     ViewRay restRay = AirRayFrom(up, altitude, inside, origin, dir, t, sun);
     if (!toSpace)
