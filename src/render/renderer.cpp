@@ -165,7 +165,7 @@ Renderer::Renderer(const std::filesystem::path& shaderRoot, const atmosphere::Ta
       sky_(sources_, programTables_, gl::ProgramDesc{"sky", {"common/fullscreen.vert", "render/sky.frag"}},
            {"UNDER_WATER"}),
       skySparse_(sources_, programTables_,
-                 gl::ProgramDesc{"sky march", {"common/fullscreen.vert", "render/sky_sparse.frag"}}),
+                 gl::ProgramDesc{"sky march", {"common/fullscreen.vert", "render/sky_sparse.frag"}}, {"STILL_FRAME"}),
       skyTemporal_(sources_, programTables_,
                    gl::ProgramDesc{"sky temporal", {"common/fullscreen.vert", "render/sky_temporal.frag"}},
                    {"STILL_FRAME", "STILL_FRAME_UNJITTERED"}),
@@ -462,7 +462,9 @@ std::vector<Renderer::Pass> Renderer::makePasses() {
                           glBindTextureUnit(binding::UNIT_HISTORY_SKY_MEDIUM, history.skyMedium.id());
                           glBindTextureUnit(binding::UNIT_HISTORY_SURFACE_DISTANCE, history.surfaceDistance.id());
                           glBindVertexArray(emptyVertexArray_.id());
-                          glUseProgram(skySparse_.get(skyVariantFor(s)).id());
+                          // A still frame's program leaves out the samples' history errors, which
+                          // only the general reconstruction reads (render/sky_sparse.frag).
+                          glUseProgram(skySparse_.get(skyVariantFor(s), stillProgram() ? 1 : 0).id());
                           // The blocks that the reconstruction reads around the pixels it marches.
                           drawScissored(blocksAround(lastPrepare_.skyBound, kSparseBlock, sparse.size), sparse.size);
                           glViewport(0, 0, targets_.size().x, targets_.size().y);
