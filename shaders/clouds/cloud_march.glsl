@@ -225,8 +225,8 @@ ViewMarch MarchViewFrom(vec3 origin, vec3 up, Length altitude, bool inside, vec3
             // A slice without clouds (T_C = 1, I_C = 0) changes nothing in Eq. 19-20 but its
             // air, which joins the air before and after it: a clear ray is one lookup of the air
             // (the whole ray's, as without a layer), a cloudy one no more lookups than slices.
-            // A loop of one turn or none, not an if: a software renderer leaves a loop that
-            // no ray of a group enters, but runs an if's code for every ray.
+            // (A loop of one turn or none: on llvmpipe a group of rays that none enters skips its
+            // texture reads; its arithmetic may still run, masked.)
             bool cloudy = c.transmittance != vec3(1.0) || c.inscatter != vec3(0.0);
             for (int i = 0; i < (cloudy ? 1 : 0); ++i) {
                 if (a > t) {  // the clear air up to the slice: T_C = 1, I_C = 0 (Eq. 17-18)

@@ -49,6 +49,10 @@
 #include "render/pixel_list.glsl"
 
 in vec2 vNdc;
+// The stencil's test before the shader, where the pass splits its pixels by it
+// (src/render/renderer.cpp, drawSkyTemporalSplit): the pixel list's writes would otherwise hold
+// it back. (No depth is written, and nothing is discarded.)
+layout(early_fragment_tests) in;
 layout(binding = UNIT_SURFACE_RADIANCE) uniform sampler2D surfaceRadiance;
 layout(binding = UNIT_SURFACE_DISTANCE) uniform sampler2D surfaceDistance;
 

@@ -112,6 +112,7 @@ bool RenderTargets::resize(glm::ivec2 size) {
     hdr_ = makeTexture(GL_RGBA16F, size, "hdr");
     skyMedium_ = makeTexture(GL_RGBA32UI, size, "sky T, S");
     hdrFramebuffer_ = makeFramebuffer({&hdr_, &skyMedium_}, nullptr, "hdr + sky T, S");
+    hdrStencilFramebuffer_ = makeFramebuffer({&hdr_, &skyMedium_}, &gbuffer_.depth, "hdr + sky T, S, stencil");
     terrainShadowSamples_.spacing = terrainShadowSpacing(size.y);
     terrainShadowSamples_.size = (size + terrainShadowSamples_.spacing - 1) / terrainShadowSamples_.spacing;
     terrainShadowSamples_.visibility = makeTexture(GL_RG32F, terrainShadowSamples_.size, "terrain shadow samples");

@@ -152,6 +152,8 @@ public:
     const FrameHistory& history() const { return history_; }
     // hdr and skyMedium (the sky passes').
     GLuint hdrFramebuffer() const { return hdrFramebuffer_.id(); }
+    // The same with the G-buffer's depth and stencil (the sky's reconstruction split by a stencil bit).
+    GLuint hdrStencilFramebuffer() const { return hdrStencilFramebuffer_.id(); }
     GLuint ldrFramebuffer() const { return ldrFramebuffer_.id(); }
     // surface radiance + distance with the G-buffer's depth attached.
     GLuint surfaceFramebuffer() const { return surfaceFramebuffer_.id(); }
@@ -219,6 +221,7 @@ private:
     gl::Texture surfaceStencil_{GL_TEXTURE_2D};
     gl::Framebuffer surfaceFramebuffer_;
     gl::Framebuffer hdrFramebuffer_;
+    gl::Framebuffer hdrStencilFramebuffer_;
     gl::Framebuffer ldrFramebuffer_;
     gl::Texture seabedDepth_{GL_TEXTURE_2D};
     gl::Texture seabedRadiance_{GL_TEXTURE_2D};

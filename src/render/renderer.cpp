@@ -171,6 +171,7 @@ Renderer::Renderer(const std::filesystem::path& shaderRoot, const atmosphere::Ta
                    {"STILL_FRAME", "STILL_FRAME_UNJITTERED"}),
       skyRefine_(sources_, programTables_, gl::ProgramDesc{"sky refine", {"render/sky_refine.comp"}}, {"STILL_FRAME"}),
       skySpace_(withAtmosphere(sources_, programTables_), "sky space", "render/sky_space.frag"),
+      skyUnderLayer_(sources_, "sky under the layer", "render/sky_under_layer.frag"),
       antialias_(sources_, "antialias", "render/antialias.frag"),
       tonemap_(sources_, "tonemap", "render/tonemap.frag"),
       passes_(makePasses()) {
@@ -489,10 +490,16 @@ std::vector<Renderer::Pass> Renderer::makePasses() {
                           drawSpaceAround(lastPrepare_.skyBound);
                           // Modes: 1 STILL_FRAME, 2 STILL_FRAME_UNJITTERED (the jitter stood too).
                           const int still = !stillProgram() ? 0 : lastPrepare_.jitterStood ? 2 : 1;
+                          if (lastPrepare_.clockOnlyUnderLayer) {
+                              drawSkyTemporalSplit(s);
+                              return;
+                          }
                           glUseProgram(skyTemporal_.get(skyVariantFor(s), still).id());
                           drawScissored(lastPrepare_.skyBound, targets_.size());
                       },
-                      [this] { return withPrograms(skyTemporal_.built(), {&skySpace_.program()}); }});
+                      [this] {
+                          return withPrograms(skyTemporal_.built(), {&skySpace_.program(), &skyUnderLayer_.program()});
+                      }});
     passes.push_back({{"sky refine", {R::SurfaceRadiance, R::SparseSky, R::SkyRefine}, {R::HdrRadiance}}, reducedRate,
                       [this](const Scene& s) {
                           glBindTextureUnit(binding::UNIT_SURFACE_RADIANCE, targets_.surfaceRadiance().id());
@@ -576,6 +583,36 @@ bool Renderer::historyUsable(const Scene& scene, const Camera& camera, bool resi
 
 Renderer::~Renderer() { continents_->releaseTexture(); }
 
+// A frame where only the clock ran, the camera under the cloud layer: the pixels whose ray stays
+// under the layer, marked in the stencil's top bit (render/sky_under_layer.frag), are rebuilt by the
+// still program, the rest by the general one, each kept off the other's pixels by the early stencil
+// test (a software renderer runs both sides of a branch in every pixel; the `ground` view with the
+// clock on: the general program over every pixel cost 126 ms, docs/PERFORMANCE.md, twenty-third).
+// The terrain's and the sea's stencil values stay in the lower bits.
+void Renderer::drawSkyTemporalSplit(const Scene& scene) {
+    constexpr GLuint kUnderLayer = 0x80;
+    glBindFramebuffer(GL_FRAMEBUFFER, targets_.hdrStencilFramebuffer());
+    glEnable(GL_STENCIL_TEST);
+    glStencilMask(kUnderLayer);
+    glStencilFunc(GL_ALWAYS, kUnderLayer, kUnderLayer);
+    glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
+    glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+    glUseProgram(skyUnderLayer_.program().id());
+    drawScissored(lastPrepare_.skyBound, targets_.size());
+    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    glStencilMask(0);
+    glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
+    // Modes: 1 STILL_FRAME, 2 STILL_FRAME_UNJITTERED (the jitter stood too); 0 the general program.
+    glStencilFunc(GL_EQUAL, kUnderLayer, kUnderLayer);
+    glUseProgram(skyTemporal_.get(skyVariantFor(scene), lastPrepare_.jitterStood ? 2 : 1).id());
+    drawScissored(lastPrepare_.skyBound, targets_.size());
+    glStencilFunc(GL_NOTEQUAL, kUnderLayer, kUnderLayer);
+    glUseProgram(skyTemporal_.get(skyVariantFor(scene), 0).id());
+    drawScissored(lastPrepare_.skyBound, targets_.size());
+    stencilOff();
+    glBindFramebuffer(GL_FRAMEBUFFER, targets_.hdrFramebuffer());
+}
+
 void Renderer::drawSpaceAround(const ScreenRect& skyBound) const {
     if (skyBound.coversScreen(targets_.size())) return;
     glUseProgram(skySpace_.program().id());
@@ -618,6 +655,9 @@ void Renderer::prepare(const Scene& scene, const Camera& camera, glm::ivec2 size
     // pixel's history is then its own texel all the same, render/sky_history.glsl).
     report.stillFrame = report.historyValid && uniforms.stillSincePrevious > 0.5f;  // the view stood too
     report.jitterStood = report.historyValid && previous_ && previous_->jitterPx == frameJitterPx_;
+    report.clockOnlyUnderLayer = report.reducedRate && report.historyValid && stillFrameProgram_ &&
+                                 !report.stillFrame && uniforms.viewStillSincePrevious > 0.5f &&
+                                 camera.altitude(scene.planetRadiusM()) < scene.clouds.bottom_altitude_km * 1000.0;
     // The air's sphere (the preset's top: the model's may end lower, never higher), and the
     // ground's highest (the terrain's highest above the sea, the waves' crests well under the
     // kilometre added).
