@@ -324,54 +324,66 @@ TEST_F(Temporal, WithOnlyTheClockRunningOnlyTheSamplesErrorsMarkPixels) {
     EXPECT_EQ(c.nonFinitePixels, 0u);
 }
 
-TEST_F(Temporal, WithOnlyTheClockRunningTheRaysUnderTheCloudLayerAreRebuiltAsInAStillFrame) {
-    // The clock moves only the clouds: a ray that stays under the layer (the camera and its
-    // surface point under the layer's bottom) sees nothing it moved, and the still program
-    // rebuilds it (src/render/renderer.cpp, drawSkyTemporalSplit): the meadow of the `ground`
-    // view with the clock running is the same, value for value, as with the clock stopped (the
-    // general program gave each traced pixel its newest sample alone: the two then differ); from
-    // above the layer, no pixel is split off.
+TEST_F(Temporal, WithOnlyTheClockRunningTheRaysThatMissTheCloudLayerAreRebuiltAsInAStillFrame) {
+    // The clock moves only the clouds: a ray that never enters the layer (from under it, to a surface
+    // point under it too; from above it, passing above its top) sees nothing it moved, and the still
+    // program rebuilds it (src/render/renderer.cpp, drawSkyTemporalSplit): with the clock running,
+    // the meadow of the `ground` view is the same, value for value, as with the clock stopped, and
+    // so is the sky above the deck of the `deck` view (6 km up, the layer's top at 4 km; the general
+    // program gave each traced pixel its newest sample alone: fewer of them are the same). From
+    // within the layer (`clouds`, 2.5 km up) no pixel is split off.
     const glm::ivec2 size{64, 36};
-    Session s = session("ground");
-    s.scene.time_s = 27.0;  // a scene no other test left in the history
-    Renderer clock(test::repoPaths().shaders(), atmosphere::TableSizes::reduced());
-    Renderer stopped(test::repoPaths().shaders(), atmosphere::TableSizes::reduced());
-    Renderer general(test::repoPaths().shaders(), atmosphere::TableSizes::reduced());
-    general.setStillFrameProgram(false);
-    Scene running = s.scene;
-    for (int frame = 0; frame < 20; ++frame) {
-        if (frame > 0) running.time_s += 1.0 / 30.0;
-        clock.render(running, s.camera, size);
-        general.render(running, s.camera, size);
-        stopped.render(s.scene, s.camera, size);
-        if (frame > 0) {
-            ASSERT_TRUE(clock.lastPrepare().clockOnlyUnderLayer) << "frame " << frame;
-            ASSERT_FALSE(clock.lastPrepare().stillFrame) << "frame " << frame;
-            ASSERT_TRUE(stopped.lastPrepare().stillFrame) << "frame " << frame;
+    for (const char* view : {"ground", "deck"}) {
+        Session s = session(view);
+        s.scene.time_s = 27.0;  // a scene no other test left in the history
+        Renderer clock(test::repoPaths().shaders(), atmosphere::TableSizes::reduced());
+        Renderer stopped(test::repoPaths().shaders(), atmosphere::TableSizes::reduced());
+        Renderer general(test::repoPaths().shaders(), atmosphere::TableSizes::reduced());
+        general.setStillFrameProgram(false);
+        Scene running = s.scene;
+        for (int frame = 0; frame < 20; ++frame) {
+            if (frame > 0) running.time_s += 1.0 / 30.0;
+            clock.render(running, s.camera, size);
+            general.render(running, s.camera, size);
+            stopped.render(s.scene, s.camera, size);
+            if (frame > 0) {
+                ASSERT_TRUE(clock.lastPrepare().clockOnlyOffLayer) << view << " frame " << frame;
+                ASSERT_FALSE(clock.lastPrepare().stillFrame) << view << " frame " << frame;
+                ASSERT_TRUE(stopped.lastPrepare().stillFrame) << view << " frame " << frame;
+            }
         }
+        const ImageRGBAF distance = readTextureRGBAF(clock.targets().surfaceDistance(), size.x, size.y);
+        const ImageRGBAF a = hdrOf(clock, size), b = hdrOf(stopped, size), c = hdrOf(general, size);
+        std::size_t ground = 0, same = 0, sameGround = 0, sameGeneral = 0;
+        for (std::size_t i = 0; i < distance.pixels.size(); i += 4) {
+            const bool equal = std::equal(&a.pixels[i], &a.pixels[i] + 4, &b.pixels[i]);
+            same += equal;
+            sameGeneral += std::equal(&c.pixels[i], &c.pixels[i] + 4, &b.pixels[i]);
+            if (!(distance.pixels[i] > 0.0f)) continue;
+            ++ground;
+            sameGround += equal;
+        }
+        std::printf("%s, clock running: %zu of %zu pixels as with the clock stopped (%zu of %zu surface pixels; the "
+                    "general program alone: %zu)\n", view, same, a.pixels.size() / 4, sameGround, ground, sameGeneral);
+        const std::size_t pixels = static_cast<std::size_t>(size.x) * size.y;
+        EXPECT_EQ(compareImages(a, b).nonFinitePixels, 0u) << view;
+        if (view == std::string("ground")) {
+            EXPECT_GT(ground, pixels / 4);
+            EXPECT_EQ(sameGround, ground);
+        } else {
+            EXPECT_GT(same, pixels / 4) << "the sky above the deck";
+        }
+        EXPECT_GT(same, sameGeneral + pixels / 8) << view;  // (llvmpipe, 64x36: ground 1667 against 648, deck 1028 against 569)
     }
-    const ImageRGBAF distance = readTextureRGBAF(clock.targets().surfaceDistance(), size.x, size.y);
-    const ImageRGBAF a = hdrOf(clock, size), b = hdrOf(stopped, size), c = hdrOf(general, size);
-    std::size_t ground = 0, same = 0, sameGeneral = 0;
-    for (std::size_t i = 0; i < distance.pixels.size(); i += 4) {
-        if (!(distance.pixels[i] > 0.0f)) continue;
-        ++ground;
-        same += std::equal(&a.pixels[i], &a.pixels[i] + 4, &b.pixels[i]);
-        sameGeneral += std::equal(&c.pixels[i], &c.pixels[i] + 4, &b.pixels[i]);
-    }
-    std::printf("ground, clock running: %zu of %zu ground pixels as with the clock stopped (the general program "
-                "alone: %zu)\n", same, ground, sameGeneral);
-    EXPECT_GT(ground, static_cast<std::size_t>(size.x * size.y / 4));
-    EXPECT_EQ(same, ground);
-    EXPECT_LT(sameGeneral, ground / 2);
-    EXPECT_EQ(compareImages(a, b).nonFinitePixels, 0u);
 
-    Session above = session("clouds");
-    above.scene.time_s = 27.0;
-    clock.render(above.scene, above.camera, size);
-    above.scene.time_s += 1.0 / 30.0;
-    clock.render(above.scene, above.camera, size);
-    EXPECT_FALSE(clock.lastPrepare().clockOnlyUnderLayer) << "the camera above the layer's bottom";
+    Renderer clock(test::repoPaths().shaders(), atmosphere::TableSizes::reduced());
+    Session within = session("clouds");
+    within.scene.time_s = 27.0;
+    clock.render(within.scene, within.camera, size);
+    within.scene.time_s += 1.0 / 30.0;
+    clock.render(within.scene, within.camera, size);
+    EXPECT_TRUE(clock.lastPrepare().historyValid);
+    EXPECT_FALSE(clock.lastPrepare().clockOnlyOffLayer) << "the camera within the layer";
 }
 
 TEST_F(Temporal, WithTheExplorersAntiAliasingAStillCameraWithTheClockOnStaysNearTheFullRate) {

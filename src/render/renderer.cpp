@@ -171,7 +171,7 @@ Renderer::Renderer(const std::filesystem::path& shaderRoot, const atmosphere::Ta
                    {"STILL_FRAME", "STILL_FRAME_UNJITTERED"}),
       skyRefine_(sources_, programTables_, gl::ProgramDesc{"sky refine", {"render/sky_refine.comp"}}, {"STILL_FRAME"}),
       skySpace_(withAtmosphere(sources_, programTables_), "sky space", "render/sky_space.frag"),
-      skyUnderLayer_(sources_, "sky under the layer", "render/sky_under_layer.frag"),
+      skyOffLayer_(sources_, "sky off the layer", "render/sky_off_layer.frag"),
       antialias_(sources_, "antialias", "render/antialias.frag"),
       tonemap_(sources_, "tonemap", "render/tonemap.frag"),
       passes_(makePasses()) {
@@ -490,7 +490,7 @@ std::vector<Renderer::Pass> Renderer::makePasses() {
                           drawSpaceAround(lastPrepare_.skyBound);
                           // Modes: 1 STILL_FRAME, 2 STILL_FRAME_UNJITTERED (the jitter stood too).
                           const int still = !stillProgram() ? 0 : lastPrepare_.jitterStood ? 2 : 1;
-                          if (lastPrepare_.clockOnlyUnderLayer) {
+                          if (lastPrepare_.clockOnlyOffLayer) {
                               drawSkyTemporalSplit(s);
                               return;
                           }
@@ -498,7 +498,7 @@ std::vector<Renderer::Pass> Renderer::makePasses() {
                           drawScissored(lastPrepare_.skyBound, targets_.size());
                       },
                       [this] {
-                          return withPrograms(skyTemporal_.built(), {&skySpace_.program(), &skyUnderLayer_.program()});
+                          return withPrograms(skyTemporal_.built(), {&skySpace_.program(), &skyOffLayer_.program()});
                       }});
     passes.push_back({{"sky refine", {R::SurfaceRadiance, R::SparseSky, R::SkyRefine}, {R::HdrRadiance}}, reducedRate,
                       [this](const Scene& s) {
@@ -583,8 +583,8 @@ bool Renderer::historyUsable(const Scene& scene, const Camera& camera, bool resi
 
 Renderer::~Renderer() { continents_->releaseTexture(); }
 
-// A frame where only the clock ran, the camera under the cloud layer: the pixels whose ray stays
-// under the layer, marked in the stencil's top bit (render/sky_under_layer.frag), are rebuilt by the
+// A frame where only the clock ran, the camera under or above the cloud layer: the pixels whose ray
+// never enters the layer, marked in the stencil's top bit (render/sky_off_layer.frag), are rebuilt by the
 // still program, the rest by the general one, each kept off the other's pixels by the early stencil
 // test (a software renderer runs both sides of a branch in every pixel; the `ground` view with the
 // clock on: the general program over every pixel cost 126 ms, docs/PERFORMANCE.md, twenty-third).
@@ -597,7 +597,7 @@ void Renderer::drawSkyTemporalSplit(const Scene& scene) {
     glStencilFunc(GL_ALWAYS, kUnderLayer, kUnderLayer);
     glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
     glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
-    glUseProgram(skyUnderLayer_.program().id());
+    glUseProgram(skyOffLayer_.program().id());
     drawScissored(lastPrepare_.skyBound, targets_.size());
     glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
     glStencilMask(0);
@@ -655,9 +655,10 @@ void Renderer::prepare(const Scene& scene, const Camera& camera, glm::ivec2 size
     // pixel's history is then its own texel all the same, render/sky_history.glsl).
     report.stillFrame = report.historyValid && uniforms.stillSincePrevious > 0.5f;  // the view stood too
     report.jitterStood = report.historyValid && previous_ && previous_->jitterPx == frameJitterPx_;
-    report.clockOnlyUnderLayer = report.reducedRate && report.historyValid && stillFrameProgram_ &&
-                                 !report.stillFrame && uniforms.viewStillSincePrevious > 0.5f &&
-                                 camera.altitude(scene.planetRadiusM()) < scene.clouds.bottom_altitude_km * 1000.0;
+    const double altitudeKm = camera.altitude(scene.planetRadiusM()) / 1000.0;
+    report.clockOnlyOffLayer = report.reducedRate && report.historyValid && stillFrameProgram_ && !report.stillFrame &&
+                               uniforms.viewStillSincePrevious > 0.5f &&
+                               (altitudeKm < scene.clouds.bottom_altitude_km || altitudeKm > scene.clouds.top_altitude_km);
     // The air's sphere (the preset's top: the model's may end lower, never higher), and the
     // ground's highest (the terrain's highest above the sea, the waves' crests well under the
     // kilometre added).

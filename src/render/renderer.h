@@ -118,9 +118,9 @@ struct PrepareReport {
                                          // (render/sky.frag, ocean/sea_light.frag)
     bool cloudFarField = false;          // every footprint the clouds are seen with is the far field's: the programs
                                          // built with CLOUD_FAR_FIELD_ONLY (clouds/cloud_block.h, seenInFarFieldOnly)
-    bool clockOnlyUnderLayer = false;    // only the clock ran (the camera and the sun stood, with a history), the
-                                         // camera under the cloud layer: the sky's reconstruction takes the still
-                                         // program where a pixel's ray stays under it (render/sky_under_layer.frag)
+    bool clockOnlyOffLayer = false;      // only the clock ran (the camera and the sun stood, with a history), the
+                                         // camera under or above the cloud layer: the sky's reconstruction takes the
+                                         // still program where a pixel's ray never enters it (render/sky_off_layer.frag)
     bool cloudsOff = false;              // no cloud layer this frame (the cloud block's enabled 0): the programs built
                                          // with CLOUDS_OFF (clouds/cloud_density.glsl), and never the far field's
     ScreenRect skyBound;                 // the pixels the sky passes ran their programs on: those that can see the air
@@ -273,7 +273,7 @@ private:
     AtmosphereProgram skyTemporal_;  // mode STILL_FRAME: frames where nothing moved (but the jitter, maybe)
     AtmosphereProgram skyRefine_;    // mode STILL_FRAME: a still frame's pixels whose surface changed
     FullscreenPass skySpace_;  // space around the air's bound (render/sky_space.frag)
-    FullscreenPass skyUnderLayer_;  // the rays under the cloud layer, into the stencil (render/sky_under_layer.frag)
+    FullscreenPass skyOffLayer_;  // the rays that miss the cloud layer, into the stencil (render/sky_off_layer.frag)
     FullscreenPass antialias_;
     FullscreenPass tonemap_;
     gl::Buffer frameUniforms_;
