@@ -590,11 +590,11 @@ Renderer::~Renderer() { continents_->releaseTexture(); }
 // clock on: the general program over every pixel cost 126 ms, docs/PERFORMANCE.md, twenty-third).
 // The terrain's and the sea's stencil values stay in the lower bits.
 void Renderer::drawSkyTemporalSplit(const Scene& scene) {
-    constexpr GLuint kUnderLayer = 0x80;
+    constexpr GLuint kOffLayer = 0x80;
     glBindFramebuffer(GL_FRAMEBUFFER, targets_.hdrStencilFramebuffer());
     glEnable(GL_STENCIL_TEST);
-    glStencilMask(kUnderLayer);
-    glStencilFunc(GL_ALWAYS, kUnderLayer, kUnderLayer);
+    glStencilMask(kOffLayer);
+    glStencilFunc(GL_ALWAYS, kOffLayer, kOffLayer);
     glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
     glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
     glUseProgram(skyOffLayer_.program().id());
@@ -603,10 +603,10 @@ void Renderer::drawSkyTemporalSplit(const Scene& scene) {
     glStencilMask(0);
     glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
     // Modes: 1 STILL_FRAME, 2 STILL_FRAME_UNJITTERED (the jitter stood too); 0 the general program.
-    glStencilFunc(GL_EQUAL, kUnderLayer, kUnderLayer);
+    glStencilFunc(GL_EQUAL, kOffLayer, kOffLayer);
     glUseProgram(skyTemporal_.get(skyVariantFor(scene), lastPrepare_.jitterStood ? 2 : 1).id());
     drawScissored(lastPrepare_.skyBound, targets_.size());
-    glStencilFunc(GL_NOTEQUAL, kUnderLayer, kUnderLayer);
+    glStencilFunc(GL_NOTEQUAL, kOffLayer, kOffLayer);
     glUseProgram(skyTemporal_.get(skyVariantFor(scene), 0).id());
     drawScissored(lastPrepare_.skyBound, targets_.size());
     stencilOff();
