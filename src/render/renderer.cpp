@@ -86,20 +86,21 @@ void drawScissored(const ScreenRect& rect, glm::ivec2 size) {
 }
 
 // The stencil's three states in the passes that split a draw by it: marking the pixels a draw
-// writes with `ref`; a test for `ref` alone, which writes nothing and so may run before the
-// shader (a software renderer then spares the pixels it rejects); off again, as every pass
-// finds it.
-void stencilMark(GLint ref) {
+// writes with `ref` (in the bits of `mask` alone: the others keep what an earlier pass left there);
+// a test for `ref` in those bits, or for anything else there (`equal` false), which writes nothing
+// and so may run before the shader (a software renderer then spares the pixels it rejects); off
+// again, as every pass finds it.
+void stencilMark(GLint ref, GLuint mask = 0xFF) {
     glEnable(GL_STENCIL_TEST);
-    glStencilMask(0xFF);
-    glStencilFunc(GL_ALWAYS, ref, 0xFF);
+    glStencilMask(mask);
+    glStencilFunc(GL_ALWAYS, ref, mask);
     glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
 }
-void stencilTest(GLint ref) {
+void stencilTest(GLint ref, GLuint mask = 0xFF, bool equal = true) {
     glEnable(GL_STENCIL_TEST);
     glStencilMask(0);
     glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
-    glStencilFunc(GL_EQUAL, ref, 0xFF);
+    glStencilFunc(equal ? GL_EQUAL : GL_NOTEQUAL, ref, mask);
 }
 void stencilOff() {
     glStencilMask(0xFF);
@@ -488,12 +489,12 @@ std::vector<Renderer::Pass> Renderer::makePasses() {
                           glBindTextureUnit(binding::UNIT_HISTORY_SURFACE_DISTANCE, history.surfaceDistance.id());
                           glBindVertexArray(emptyVertexArray_.id());
                           drawSpaceAround(lastPrepare_.skyBound);
-                          // Modes: 1 STILL_FRAME, 2 STILL_FRAME_UNJITTERED (the jitter stood too).
-                          const int still = !stillProgram() ? 0 : lastPrepare_.jitterStood ? 2 : 1;
                           if (lastPrepare_.clockOnlyOffLayer) {
                               drawSkyTemporalSplit(s);
                               return;
                           }
+                          // Modes: 1 STILL_FRAME, 2 STILL_FRAME_UNJITTERED (the jitter stood too).
+                          const int still = !stillProgram() ? 0 : lastPrepare_.jitterStood ? 2 : 1;
                           glUseProgram(skyTemporal_.get(skyVariantFor(s), still).id());
                           drawScissored(lastPrepare_.skyBound, targets_.size());
                       },
@@ -592,21 +593,16 @@ Renderer::~Renderer() { continents_->releaseTexture(); }
 void Renderer::drawSkyTemporalSplit(const Scene& scene) {
     constexpr GLuint kOffLayer = 0x80;
     glBindFramebuffer(GL_FRAMEBUFFER, targets_.hdrStencilFramebuffer());
-    glEnable(GL_STENCIL_TEST);
-    glStencilMask(kOffLayer);
-    glStencilFunc(GL_ALWAYS, kOffLayer, kOffLayer);
-    glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
+    stencilMark(kOffLayer, kOffLayer);
     glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
     glUseProgram(skyOffLayer_.program().id());
     drawScissored(lastPrepare_.skyBound, targets_.size());
     glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-    glStencilMask(0);
-    glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
     // Modes: 1 STILL_FRAME, 2 STILL_FRAME_UNJITTERED (the jitter stood too); 0 the general program.
-    glStencilFunc(GL_EQUAL, kOffLayer, kOffLayer);
+    stencilTest(kOffLayer, kOffLayer);
     glUseProgram(skyTemporal_.get(skyVariantFor(scene), lastPrepare_.jitterStood ? 2 : 1).id());
     drawScissored(lastPrepare_.skyBound, targets_.size());
-    glStencilFunc(GL_NOTEQUAL, kOffLayer, kOffLayer);
+    stencilTest(kOffLayer, kOffLayer, false);
     glUseProgram(skyTemporal_.get(skyVariantFor(scene), 0).id());
     drawScissored(lastPrepare_.skyBound, targets_.size());
     stencilOff();
