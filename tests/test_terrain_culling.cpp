@@ -91,13 +91,23 @@ TEST_F(TerrainCulling, HeightsOncePerGridPointAtTheGround) {
         << "the control stage evaluates heights again";
     EXPECT_NE(shaderCode("terrain/terrain.vert").find("terrainHeightGrad("), std::string::npos);
     ImageRGBAF image;
+    renderer->terrain().setViewCulling(false);  // the whole grid (the blocks out of view: below)
     const TerrainPass::Statistics st = render("ground", {320, 180}, PatchOrder::NearFirst, image);
+    renderer->terrain().setViewCulling(true);
     std::printf("ground 320x180: %lld vertex invocations, %lld patches, %lld evaluations, %lld primitives\n",
                 st.vertices, st.patches, st.evaluations, st.primitives);
     if (st.vertices < 0) GTEST_SKIP() << "no pipeline statistics queries";
     EXPECT_EQ(st.patches, 99 * 99);
     const bool runs = gl::softwareRenderer(gl::rendererDescription());
     EXPECT_LE(st.vertices, runs ? 19000 : 13000) << "the vertex stage's results are not reused between patches";
+    // With the blocks out of view left undrawn (grid/view_cull.h), the control stage runs on the
+    // patches the pass says it draws, and the vertex stage on about as few points.
+    const TerrainPass::Statistics culled = render("ground", {320, 180}, PatchOrder::NearFirst, image);
+    std::printf("ground 320x180, blocks out of view culled: %lld vertex invocations, %lld patches\n", culled.vertices,
+                culled.patches);
+    EXPECT_EQ(culled.patches, renderer->terrain().patchesDrawn());
+    EXPECT_LT(culled.patches, st.patches / 2);
+    EXPECT_LT(culled.vertices, st.vertices * 6 / 10);
 }
 
 // Patches tessellated at the highest levels stay in their place. Mesa's draw module numbers

@@ -1,6 +1,10 @@
 // The projected grids' constants that the C++ counts with too (src/grid/constants.h compiles this
 // file as C++, as src/render/bindings.h does shaders/common/bindings.glsl): one source of truth.
 
+// The frustum the grids' patches are culled against, its side planes' slopes this much wider than
+// the view's (grid/tessellation.glsl's outsideFrustum; src/grid/view_cull.h's blocks, on the CPU).
+const float FRUSTUM_WIDENING = 1.2;
+
 // The most a tessellated segment's chord of the sphere may sag, in pixels where it is nearest:
 // at the limb the sag is seen edge-on, and the silhouette recedes by it (grid/tessellation.glsl's
 // edgeSegments; src/grid/grid_stride.cpp's stride cap).

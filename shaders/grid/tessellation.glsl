@@ -1,7 +1,6 @@
 // Tessellation control helpers shared by the projected grids (terrain and ocean,
 // Michelic §3): levels from an edge's size on screen and its chord's sag, and culling against
 // a widened frustum. Include after common/frame_uniforms.glsl and terrain/grid.glsl.
-const float FRUSTUM_WIDENING = 1.2;  // culling planes 20 % wider than the view
 const float MAX_TESSELLATION_LEVEL = 64.0;
 #include "grid/constants.glsl"
 

@@ -8,6 +8,7 @@
 #include <cstdlib>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -75,6 +76,18 @@ std::vector<PatchRing> ringsOf(const std::vector<std::vector<PatchBlock>>& ringB
 
 std::vector<PatchRing> nearFirstRings(int size) { return ringsOf(ringBlocks(size), size); }
 
+std::vector<PatchBlockRun> nearFirstBlocks(int size) {
+    std::vector<PatchBlockRun> runs;
+    int first = 0;
+    for (const std::vector<PatchBlock>& ring : ringBlocks(size))
+        for (const PatchBlock& b : ring) {
+            const int count = (b.to.x - b.from.x) * (b.to.y - b.from.y);
+            runs.push_back({first, count, b.from, b.to});
+            first += count;
+        }
+    return runs;
+}
+
 std::vector<GLuint> stridePatches(int size, int stride) {
     const int n = size - 1;  // cells per side
     std::vector<int> starts;
@@ -111,6 +124,8 @@ void GridMesh::resize(int size) {
     const auto add = [&](int i, int j) { patches.insert(patches.end(), {at(i, j), at(i + 1, j), at(i + 1, j + 1), at(i, j + 1)}); };
     const int n = size - 1;  // patches per side
     rings_.clear();
+    blocks_.clear();
+    shown_.clear();
     if (order_ == PatchOrder::Rows) {
         for (int j = 0; j < n; ++j)
             for (int i = 0; i < n; ++i) add(i, j);
@@ -121,6 +136,7 @@ void GridMesh::resize(int size) {
             for (const PatchBlock& b : ring)
                 for (int j = b.from.y; j < b.to.y; ++j)
                     for (int i = b.from.x; i < b.to.x; ++i) add(i, j);
+        blocks_ = nearFirstBlocks(size);
     }
     vertices_ = gl::Buffer();
     indices_ = gl::Buffer();
@@ -155,6 +171,7 @@ void GridMesh::setStride(int stride) {
     }
     if (stride == stride_) return;
     stride_ = stride;
+    shown_.clear();
     if (stride == 1) {
         glVertexArrayElementBuffer(vertexArray_.id(), indices_.id());
         patchCount_ = (size_ - 1) * (size_ - 1);
@@ -196,22 +213,48 @@ void GridMesh::setProjection(const GridBlock& block) {
 
 void GridMesh::bindBlock() const { glBindBufferBase(GL_UNIFORM_BUFFER, binding::BLOCK_GRID, block_.id()); }
 
+void GridMesh::showBlocks(std::vector<bool> shown) {
+    if (!shown.empty() && shown.size() != blocks().size()) throw std::invalid_argument("GridMesh::showBlocks: one flag per block");
+    shown_ = std::move(shown);
+}
+
+std::vector<glm::ivec2> GridMesh::runs(int first, int count) const {
+    if (shown_.empty() || blocks().empty()) return {glm::ivec2(first, count)};
+    std::vector<glm::ivec2> runs;
+    for (std::size_t b = 0; b < blocks_.size(); ++b) {
+        if (!shown_[b]) continue;
+        const int from = std::max(first, blocks_[b].firstPatch);
+        const int to = std::min(first + count, blocks_[b].firstPatch + blocks_[b].patchCount);
+        if (from >= to) continue;
+        if (!runs.empty() && runs.back().x + runs.back().y == from)
+            runs.back().y += to - from;  // the previous block's run goes on
+        else
+            runs.push_back(glm::ivec2(from, to - from));
+    }
+    return runs;
+}
+
+int GridMesh::patchesDrawn(int first, int count) const {
+    int drawn = 0;
+    for (const glm::ivec2& run : runs(first, count)) drawn += run.y;
+    return drawn;
+}
+
 void GridMesh::draw(int first, int count) const {
     if (count <= 0) return;
     bindBlock();
     glBindVertexArray(vertexArray_.id());
     glPatchParameteri(GL_PATCH_VERTICES, 4);
     const auto offset = [](int patch) { return reinterpret_cast<const void*>(static_cast<std::uintptr_t>(patch) * 4 * sizeof(GLuint)); };
-    if (!splitDraws_) {
-        glDrawElements(GL_PATCHES, 4 * count, GL_UNSIGNED_INT, offset(first));
-        return;
-    }
     std::vector<GLsizei> counts;
     std::vector<const void*> offsets;
-    for (int patch = first; patch < first + count; patch += kPatchesPerSoftwareDraw) {
-        counts.push_back(4 * std::min(kPatchesPerSoftwareDraw, first + count - patch));
-        offsets.push_back(offset(patch));
-    }
+    const int longest = splitDraws_ ? kPatchesPerSoftwareDraw : count;
+    for (const glm::ivec2& run : runs(first, count))
+        for (int patch = run.x; patch < run.x + run.y; patch += longest) {
+            counts.push_back(4 * std::min(longest, run.x + run.y - patch));
+            offsets.push_back(offset(patch));
+        }
+    if (counts.empty()) return;
     glMultiDrawElements(GL_PATCHES, counts.data(), GL_UNSIGNED_INT, offsets.data(), static_cast<GLsizei>(counts.size()));
 }
 

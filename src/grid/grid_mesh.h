@@ -53,6 +53,17 @@ struct PatchRing {
 };
 std::vector<PatchRing> nearFirstRings(int size);
 
+// NearFirst's blocks of 8 x 8 patches (stride 1) in draw order: a run of the patches, and the box of
+// grid points (indices, inclusive) their corners are.
+struct PatchBlockRun {
+    int firstPatch = 0;
+    int patchCount = 0;
+    glm::ivec2 pointMin{0};
+    glm::ivec2 pointMax{0};
+};
+
+std::vector<PatchBlockRun> nearFirstBlocks(int size);
+
 // The patches of stride x stride cells (GridMesh::setStride) of a size x size grid, in row
 // order: four point indices (j * size + i) each, corners (i0, j0), (i1, j0), (i1, j1), (i0, j1).
 std::vector<GLuint> stridePatches(int size, int stride);
@@ -87,6 +98,13 @@ public:
     void bindBlock() const;
     // NearFirst's rings (empty in row order).
     const std::vector<PatchRing>& rings() const { return stride_ == 1 ? rings_ : noRings_; }
+    // NearFirst's blocks (empty in row order or with a stride), and which of them the draws draw:
+    // `shown` one flag per block (grid/view_cull.h), or empty for all; until the next call, or until
+    // the size, the order or the stride changes.
+    const std::vector<PatchBlockRun>& blocks() const { return stride_ == 1 ? blocks_ : noBlocks_; }
+    void showBlocks(std::vector<bool> shown);
+    // The patches the draws draw of `count` from `first` (all, or those of the shown blocks).
+    int patchesDrawn(int first, int count) const;
 
     // Mesa's software renderers (llvmpipe, softpipe) tessellate in the Gallium draw module,
     // which numbers the tessellated vertices of one chunk of input (up to 4096 vertices: 1024
@@ -112,6 +130,11 @@ private:
     bool splitDraws_;  // a software renderer: draw in runs (above)
     std::vector<PatchRing> rings_;
     std::vector<PatchRing> noRings_;
+    std::vector<PatchBlockRun> blocks_;
+    std::vector<PatchBlockRun> noBlocks_;
+    std::vector<bool> shown_;  // per block; empty: all
+    // The runs of patches (first, count) the draws draw of `count` from `first`, in draw order.
+    std::vector<glm::ivec2> runs(int first, int count) const;
 };
 
 }  // namespace planet

@@ -5,6 +5,7 @@
 #include <numbers>
 #include <string_view>
 
+#include "grid/view_cull.h"
 #include "render/bindings.h"
 #include "terrain/continent_bound.h"
 #include "terrain/detail_texture.h"
@@ -77,6 +78,13 @@ void TerrainPass::prepare(const Scene& scene, const Camera& camera, const noise:
     mesh_.setProjection(gridBlock);
 
     const terrain::TerrainBlock block = terrain::makeTerrainBlock(scene);
+    // The blocks of patches that cannot reach the view not drawn (grid/view_cull.h): at `ground` the
+    // vertex and control stages ran for the whole grid, on llvmpipe's one submitting thread.
+    mesh_.showBlocks(viewCulling_ && !mesh_.blocks().empty()
+                         ? gridBlocksInView(mesh_.blocks(), gridBlock, camera, aspect,
+                                            radius - static_cast<double>(block.shape.oceanDepth),
+                                            radius + static_cast<double>(block.shape.maxHeight))
+                         : std::vector<bool>{});
     glNamedBufferSubData(block_.id(), 0, sizeof block, &block);
     glBindBufferBase(GL_UNIFORM_BUFFER, binding::BLOCK_TERRAIN, block_.id());
     const terrain::TerrainNear near = terrain::makeTerrainNear(block.shape, continents, camera.position, radius);

@@ -104,6 +104,10 @@ public:
     // prepared frame's.
     void setStrideOverride(int stride) { strideOverride_ = stride; }
     int stride() const { return mesh_.stride(); }
+    // Tests: whole blocks of patches out of the view left undrawn (grid/view_cull.h; on by default),
+    // and how many patches the last prepared frame draws.
+    void setViewCulling(bool on) { viewCulling_ = on; }
+    int patchesDrawn() const { return mesh_.patchesDrawn(0, mesh_.patchCount()); }
     const Statistics& lastStatistics() const { return lastStatistics_; }
 
 private:
@@ -125,6 +129,7 @@ private:
     GridAnchor anchor_;
     GridStride stride_;
     int strideOverride_ = 0;
+    bool viewCulling_ = true;
     bool statistics_ = false;
     Statistics lastStatistics_;
     gl::Query primitives_{GL_PRIMITIVES_GENERATED};
