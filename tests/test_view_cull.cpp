@@ -33,7 +33,7 @@ struct CulledGrid {
     double low = 0.0, high = 0.0;  // m from the centre
 };
 
-CulledGrid cull(const Session& s, double aspect) {
+CulledGrid cull(const Session& s, double aspect, bool rows = false) {
     CulledGrid c;
     const double radius = s.scene.planetRadiusM();
     GridParams params;
@@ -43,7 +43,7 @@ CulledGrid cull(const Session& s, double aspect) {
     updateAnchor(anchor, s.camera, anchorThresholdM(params, s.camera.altitude(radius)), false);
     const GridProjection projection = gridProjection(anchor, radius, s.scene.terrain.max_height_m);
     c.grid = makeGridBlock(projection, params.exponent, s.camera.position, radius, params.size);
-    c.blocks = nearFirstBlocks(params.size);
+    c.blocks = rows ? rowBlocks(params.size) : nearFirstBlocks(params.size);
     const terrain::TerrainBlock block = terrain::makeTerrainBlock(s.scene);
     c.low = radius - block.shape.oceanDepth;
     c.high = radius + block.shape.maxHeight;
@@ -82,9 +82,10 @@ TEST(ViewCull, EveryPointInViewKeepsItsBlock) {
     const double aspect = 16.0 / 9.0;
     std::mt19937 random(7);
     std::uniform_real_distribution<double> unit(0.0, 1.0);
-    for (const std::string view : {"ground", "beach", "mountains", "sunset", "orbit", "clouds"}) {
+    for (const std::string view : {"ground", "beach", "mountains", "sunset", "orbit", "clouds"})
+      for (const bool rows : {false, true}) {  // NearFirst's blocks' rows, row order's runs of 8
         const Session s = loadSession(test::repoPaths(), "earth", view);
-        const CulledGrid c = cull(s, aspect);
+        const CulledGrid c = cull(s, aspect, rows);
         ASSERT_EQ(c.shown.size(), c.blocks.size());
         int culledPatches = 0, allPatches = 0, pointsInView = 0, missed = 0;
         for (std::size_t b = 0; b < c.blocks.size(); ++b) {
@@ -107,8 +108,8 @@ TEST(ViewCull, EveryPointInViewKeepsItsBlock) {
                 if (!c.shown[b]) ++missed;
             }
         }
-        std::printf("%-9s %d of %d patches culled; %d sampled points in view, %d of them in culled blocks\n",
-                    view.c_str(), culledPatches, allPatches, pointsInView, missed);
+        std::printf("%-9s %-10s %d of %d patches culled; %d sampled points in view, %d of them in culled blocks\n",
+                    view.c_str(), rows ? "row order" : "near first", culledPatches, allPatches, pointsInView, missed);
         EXPECT_GT(pointsInView, 0) << view;
         EXPECT_EQ(missed, 0) << view << ": a block the view shows was culled";
         if (view == "ground" || view == "beach") {
@@ -168,4 +169,31 @@ TEST_F(ViewCullRender, CullingChangesNoPixel) {
         }
     }
     renderer->terrain().setViewCulling(true);
+}
+
+// The sea's grid likewise, its blocks widened by the waves' reach (up, down and sideways): the sea
+// and the beach the same value for value.
+TEST_F(ViewCullRender, TheSeasCullingChangesNoPixel) {
+    auto renderer = std::make_unique<Renderer>(test::repoPaths().shaders(), atmosphere::TableSizes::reduced());
+    const glm::ivec2 size{160, 90};
+    for (const std::string view : {"sea", "beach", "sunset"}) {
+        Session s = loadSession(test::repoPaths(), "earth", view);
+        s.scene.render.temporal = false;
+        ImageRGBAF images[2];
+        int drawn[2] = {0, 0};
+        for (int culling = 0; culling < 2; ++culling) {
+            renderer->ocean().setViewCulling(culling == 1);
+            renderer->render(s.scene, s.camera, size);
+            images[culling] = readTextureRGBAF(renderer->targets().hdr(), size.x, size.y);
+            drawn[culling] = renderer->ocean().patchesDrawn();
+        }
+        std::size_t differing = 0;
+        for (std::size_t i = 0; i < images[0].pixels.size(); ++i)
+            differing += images[0].pixels[i] != images[1].pixels[i] ? 1 : 0;
+        std::printf("%-9s sea patches drawn %d without the culling, %d with it; %zu values differ\n", view.c_str(),
+                    drawn[0], drawn[1], differing);
+        EXPECT_EQ(differing, 0u) << view;
+        EXPECT_LT(drawn[1], drawn[0]) << view;
+    }
+    renderer->ocean().setViewCulling(true);
 }

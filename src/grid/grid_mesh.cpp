@@ -80,11 +80,12 @@ std::vector<PatchBlockRun> nearFirstBlocks(int size) {
     std::vector<PatchBlockRun> runs;
     int first = 0;
     for (const std::vector<PatchBlock>& ring : ringBlocks(size))
-        for (const PatchBlock& b : ring) {
-            const int count = (b.to.x - b.from.x) * (b.to.y - b.from.y);
-            runs.push_back({first, count, b.from, b.to});
-            first += count;
-        }
+        for (const PatchBlock& b : ring)
+            for (int j = b.from.y; j < b.to.y; ++j) {  // the block's rows, each a run of the index buffer
+                const int count = b.to.x - b.from.x;
+                runs.push_back({first, count, {b.from.x, j}, {b.to.x, j + 1}});
+                first += count;
+            }
     return runs;
 }
 
@@ -102,6 +103,17 @@ std::vector<GLuint> stridePatches(int size, int stride) {
             patches.insert(patches.end(), {at(i0, j0), at(i1, j0), at(i1, j1), at(i0, j1)});
         }
     return patches;
+}
+
+std::vector<PatchBlockRun> rowBlocks(int size) {
+    const int n = size - 1;
+    std::vector<PatchBlockRun> runs;
+    for (int j = 0; j < n; ++j)
+        for (int i = 0; i < n; i += kBlock) {
+            const int to = std::min(i + kBlock, n);
+            runs.push_back({j * n + i, to - i, {i, j}, {to, j + 1}});
+        }
+    return runs;
 }
 
 void GridMesh::setOrder(PatchOrder order) {
@@ -129,6 +141,7 @@ void GridMesh::resize(int size) {
     if (order_ == PatchOrder::Rows) {
         for (int j = 0; j < n; ++j)
             for (int i = 0; i < n; ++i) add(i, j);
+        blocks_ = rowBlocks(size);
     } else {
         const std::vector<std::vector<PatchBlock>> blocks = ringBlocks(size);
         rings_ = ringsOf(blocks, size);

@@ -53,8 +53,9 @@ struct PatchRing {
 };
 std::vector<PatchRing> nearFirstRings(int size);
 
-// NearFirst's blocks of 8 x 8 patches (stride 1) in draw order: a run of the patches, and the box of
-// grid points (indices, inclusive) their corners are.
+// The patches in runs of up to 8 along a row (stride 1), in draw order: the rows of NearFirst's
+// blocks of 8 x 8, or in row order each row's runs: a run of the index buffer's patches, and the
+// box of grid points (indices, inclusive) their corners are (grid/view_cull.h culls them).
 struct PatchBlockRun {
     int firstPatch = 0;
     int patchCount = 0;
@@ -63,6 +64,7 @@ struct PatchBlockRun {
 };
 
 std::vector<PatchBlockRun> nearFirstBlocks(int size);
+std::vector<PatchBlockRun> rowBlocks(int size);
 
 // The patches of stride x stride cells (GridMesh::setStride) of a size x size grid, in row
 // order: four point indices (j * size + i) each, corners (i0, j0), (i1, j0), (i1, j1), (i0, j1).
@@ -98,7 +100,7 @@ public:
     void bindBlock() const;
     // NearFirst's rings (empty in row order).
     const std::vector<PatchRing>& rings() const { return stride_ == 1 ? rings_ : noRings_; }
-    // NearFirst's blocks (empty in row order or with a stride), and which of them the draws draw:
+    // The patches' blocks (empty with a stride), and which of them the draws draw:
     // `shown` one flag per block (grid/view_cull.h), or empty for all; until the next call, or until
     // the size, the order or the stride changes.
     const std::vector<PatchBlockRun>& blocks() const { return stride_ == 1 ? blocks_ : noBlocks_; }

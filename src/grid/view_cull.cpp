@@ -45,7 +45,8 @@ Cap blockCap(const PatchBlockRun& block, const GridBlock& grid) {
 }  // namespace
 
 std::vector<bool> gridBlocksInView(const std::vector<PatchBlockRun>& blocks, const GridBlock& grid,
-                                   const Camera& camera, double aspect, double lowRadiusM, double highRadiusM) {
+                                   const Camera& camera, double aspect, double lowRadiusM, double highRadiusM,
+                                   double sidewaysM) {
     // The widened side planes through the camera, in view space (x right, y up, -z forward): a point
     // is outside the one of +x where P00 x > w (-z) with P00 = 1 / (aspect tan(fovY / 2)), w the
     // widening (outsideFrustum's c.x > w c.w); their unit normals, outwards.
@@ -70,7 +71,7 @@ std::vector<bool> gridBlocksInView(const std::vector<PatchBlockRun>& blocks, con
         const double c = std::cos(cap.angle);
         const double middle = 0.5 * (lowRadiusM + highRadiusM) * c;
         const auto reach = [&](double r) { return std::sqrt(std::max(r * r - 2.0 * r * middle * c + middle * middle, 0.0)); };
-        const double radius = std::max(reach(lowRadiusM), reach(highRadiusM));
+        const double radius = std::max(reach(lowRadiusM), reach(highRadiusM)) + sidewaysM;
         const glm::dvec3 centre = viewFromWorld * (cap.centre * middle - camera.position);
         bool outside = false;
         for (const glm::dvec3& n : planes) outside = outside || glm::dot(n, centre) > radius;

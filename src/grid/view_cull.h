@@ -3,8 +3,8 @@
 // outsideFrustum), but only after the vertex stage evaluated its corners' heights and the control
 // stage ran: on a software renderer both run on the single thread that submits the draw, for
 // every patch of the grid. At the ground view most of the grid lies behind the camera or beside the
-// view (the grid covers the whole cap out to the horizon's peaks, every way round), so whole blocks
-// of patches (GridMesh's NearFirst blocks) that cannot reach the view are not drawn at all.
+// view (the grid covers the whole cap out to the horizon's peaks, every way round), so the runs of
+// patches (GridMesh::blocks(): up to 8 along a row) that cannot reach the view are not drawn at all.
 #pragma once
 
 #include <vector>
@@ -21,8 +21,11 @@ namespace planet {
 // direction its patches span (Eq. 1-4 at its grid points, widened for what lies between them) and
 // every radius in [lowRadiusM, highRadiusM] (the lowest sea floor, the highest peak), lies outside
 // one side plane of the frustum widened by FRUSTUM_WIDENING (grid/constants.glsl), or behind the
-// camera. Conservative: a block kept may still be culled patch by patch on the GPU.
+// camera; `sidewaysM`: how far the surface may move along the sphere from its grid point (the
+// waves' horizontal displacement). Conservative: a block kept may still be culled patch by patch on
+// the GPU.
 std::vector<bool> gridBlocksInView(const std::vector<PatchBlockRun>& blocks, const GridBlock& grid,
-                                   const Camera& camera, double aspect, double lowRadiusM, double highRadiusM);
+                                   const Camera& camera, double aspect, double lowRadiusM, double highRadiusM,
+                                   double sidewaysM = 0.0);
 
 }  // namespace planet

@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "grid/constants.h"
+#include "grid/view_cull.h"
 #include "ocean/far_field.h"
 #include "ocean/flat_mirror.h"
 #include "ocean/ocean_block.h"
@@ -76,7 +77,15 @@ void OceanPass::prepare(const Scene& scene, const Camera& camera, double radians
                           terrain::terrainNearRangeM()),
         grid, anchor_, radius, maxHeight, camera, radiansPerPixel, aspect, scene.ocean.target_edge_px, 1.0e30));
     const GridProjection projection = gridProjection(anchor_, radius, maxHeight);
-    mesh_.setProjection(makeGridBlock(projection, grid.exponent, camera.position, radius, grid.size, mesh_.stride()));
+    const GridBlock gridBlock = makeGridBlock(projection, grid.exponent, camera.position, radius, grid.size, mesh_.stride());
+    mesh_.setProjection(gridBlock);
+    // The runs of patches that cannot reach the view not drawn (grid/view_cull.h): the control
+    // stage formed four directions in double and read the continents for every patch of the grid.
+    // The waves move the surface up, down and sideways by at most the sum of their amplitudes.
+    mesh_.showBlocks(viewCulling_ && !mesh_.blocks().empty()
+                         ? gridBlocksInView(mesh_.blocks(), gridBlock, camera, aspect, radius - maxHeight,
+                                            radius + maxHeight, maxHeight)
+                         : std::vector<bool>{});
     uploadWaves(scene, camera);
     ocean::OceanBlock block = ocean::makeOceanBlock(scene);
     if (continents != continents_) {  // a new map: measure its slope once

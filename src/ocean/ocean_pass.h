@@ -106,6 +106,10 @@ public:
     void setStrideOverride(int stride) { strideOverride_ = stride; }
     int stride() const { return mesh_.stride(); }
     bool landCulling() const { return landCulling_; }
+    // Tests: whole blocks of patches out of the view left undrawn (grid/view_cull.h; on by default),
+    // and how many patches the last prepared frame draws.
+    void setViewCulling(bool on) { viewCulling_ = on; }
+    int patchesDrawn() const { return mesh_.patchesDrawn(0, mesh_.patchCount()); }
     // Counts the primitives the pass's tessellation emits (GL_PRIMITIVES_GENERATED) while on;
     // lastPrimitives() is the last drawn frame's count (read back at once: tests, bench).
     void setCountPrimitives(bool on) { countPrimitives_ = on; }
@@ -141,6 +145,7 @@ private:
     GridStride stride_;
     int strideOverride_ = 0;
     bool landCulling_ = true;
+    bool viewCulling_ = true;
     double darkContinent_ = -2.0;
     bool countPrimitives_ = false;
     long long lastPrimitives_ = -1;

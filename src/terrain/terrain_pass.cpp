@@ -78,8 +78,9 @@ void TerrainPass::prepare(const Scene& scene, const Camera& camera, const noise:
     mesh_.setProjection(gridBlock);
 
     const terrain::TerrainBlock block = terrain::makeTerrainBlock(scene);
-    // The blocks of patches that cannot reach the view not drawn (grid/view_cull.h): at `ground` the
-    // vertex and control stages ran for the whole grid, on llvmpipe's one submitting thread.
+    // The runs of patches that cannot reach the view not drawn (grid/view_cull.h): at `ground` the
+    // vertex and control stages ran for the whole grid (9801 patches; now 3592 at 160x90), on
+    // llvmpipe's one submitting thread.
     mesh_.showBlocks(viewCulling_ && !mesh_.blocks().empty()
                          ? gridBlocksInView(mesh_.blocks(), gridBlock, camera, aspect,
                                             radius - static_cast<double>(block.shape.oceanDepth),
