@@ -137,63 +137,58 @@ TEST(ViewCull, LookingAwayCullsEverythingLookingDownKeepsTheGroundBelow) {
 
 namespace {
 
-class ViewCullRender : public test::GLTest {};
+class ViewCullRender : public test::GLTest {
+protected:
+    void SetUp() override {
+        GLTest::SetUp();
+        renderer = std::make_unique<Renderer>(test::repoPaths().shaders(), atmosphere::TableSizes::reduced());
+    }
+    // `view` at 160x90, full rate, without the culling (`setCulling(false)`) and with it: how many
+    // values of the HDR image differ, and the patches `drawn` each time.
+    template <class Pass>
+    std::size_t differingWithCulling(const std::string& view, Pass& pass, int drawn[2]) {
+        const glm::ivec2 size{160, 90};
+        Session s = loadSession(test::repoPaths(), "earth", view);
+        s.scene.render.temporal = false;
+        ImageRGBAF images[2];
+        for (int culling = 0; culling < 2; ++culling) {
+            pass.setViewCulling(culling == 1);
+            renderer->render(s.scene, s.camera, size);
+            images[culling] = readTextureRGBAF(renderer->targets().hdr(), size.x, size.y);
+            drawn[culling] = pass.patchesDrawn();
+        }
+        pass.setViewCulling(true);
+        std::size_t differing = 0;
+        for (std::size_t i = 0; i < images[0].pixels.size(); ++i)
+            differing += images[0].pixels[i] != images[1].pixels[i] ? 1 : 0;
+        std::printf("%-9s patches drawn %d without the culling, %d with it; %zu values differ\n", view.c_str(), drawn[0],
+                    drawn[1], differing);
+        return differing;
+    }
+    std::unique_ptr<Renderer> renderer;
+};
 
 }  // namespace
 
 // The pictures with and without the culling are the same value for value, with far fewer patches drawn
 // at the ground.
 TEST_F(ViewCullRender, CullingChangesNoPixel) {
-    auto renderer = std::make_unique<Renderer>(test::repoPaths().shaders(), atmosphere::TableSizes::reduced());
-    const glm::ivec2 size{160, 90};
     for (const std::string view : {"ground", "mountains", "orbit"}) {
-        Session s = loadSession(test::repoPaths(), "earth", view);
-        s.scene.render.temporal = false;
-        ImageRGBAF images[2];
-        int drawn[2] = {0, 0};
-        for (int culling = 0; culling < 2; ++culling) {
-            renderer->terrain().setViewCulling(culling == 1);
-            renderer->render(s.scene, s.camera, size);
-            images[culling] = readTextureRGBAF(renderer->targets().hdr(), size.x, size.y);
-            drawn[culling] = renderer->terrain().patchesDrawn();
-        }
-        std::size_t differing = 0;
-        for (std::size_t i = 0; i < images[0].pixels.size(); ++i)
-            differing += images[0].pixels[i] != images[1].pixels[i] ? 1 : 0;
-        std::printf("%-9s patches drawn %d without the culling, %d with it; %zu values differ\n", view.c_str(), drawn[0],
-                    drawn[1], differing);
-        EXPECT_EQ(differing, 0u) << view;
+        int drawn[2];
+        EXPECT_EQ(differingWithCulling(view, renderer->terrain(), drawn), 0u) << view;
         EXPECT_LE(drawn[1], drawn[0]) << view;
         if (view == "ground") {
             EXPECT_LT(drawn[1], drawn[0] / 2) << view;
         }
     }
-    renderer->terrain().setViewCulling(true);
 }
 
-// The sea's grid likewise, its blocks widened by the waves' reach (up, down and sideways): the sea
-// and the beach the same value for value.
+// The sea's grid likewise, its runs widened by the waves' reach (up, down and sideways): the sea,
+// the beach and the sunset the same value for value.
 TEST_F(ViewCullRender, TheSeasCullingChangesNoPixel) {
-    auto renderer = std::make_unique<Renderer>(test::repoPaths().shaders(), atmosphere::TableSizes::reduced());
-    const glm::ivec2 size{160, 90};
     for (const std::string view : {"sea", "beach", "sunset"}) {
-        Session s = loadSession(test::repoPaths(), "earth", view);
-        s.scene.render.temporal = false;
-        ImageRGBAF images[2];
-        int drawn[2] = {0, 0};
-        for (int culling = 0; culling < 2; ++culling) {
-            renderer->ocean().setViewCulling(culling == 1);
-            renderer->render(s.scene, s.camera, size);
-            images[culling] = readTextureRGBAF(renderer->targets().hdr(), size.x, size.y);
-            drawn[culling] = renderer->ocean().patchesDrawn();
-        }
-        std::size_t differing = 0;
-        for (std::size_t i = 0; i < images[0].pixels.size(); ++i)
-            differing += images[0].pixels[i] != images[1].pixels[i] ? 1 : 0;
-        std::printf("%-9s sea patches drawn %d without the culling, %d with it; %zu values differ\n", view.c_str(),
-                    drawn[0], drawn[1], differing);
-        EXPECT_EQ(differing, 0u) << view;
+        int drawn[2];
+        EXPECT_EQ(differingWithCulling(view, renderer->ocean(), drawn), 0u) << view;
         EXPECT_LT(drawn[1], drawn[0]) << view;
     }
-    renderer->ocean().setViewCulling(true);
 }
