@@ -235,7 +235,11 @@ TEST_F(CloudReferenceGpu, GpuMarchMatchesTheCpuReferenceOnTheBakedVolume) {
     EXPECT_LT(c.worstTransmittance, 2e-3);
     EXPECT_GE(c.cloudy, 12);   // the comparison is about clouds, not clear air
     EXPECT_GE(c.skipping, 8);  // and the large steps through empty space
-    EXPECT_EQ(c.changedByMips, 0);  // no footprint: level 0 everywhere
+    // No pixel footprint, but a sample stands for its whole step (clouds/cloud_march.glsl): the rays
+    // whose steps grow past a voxel (the large steps' budget over a long way through the layer)
+    // read the levels that span them, the rest level 0 (measured: 6 of the 36 rays move by over 0.2 %).
+    EXPECT_GE(c.changedByMips, 1);
+    EXPECT_LT(c.changedByMips, c.count / 2);
 }
 
 TEST_F(CloudReferenceGpu, WhereAPixelSpansVoxelsTheGpuReadsTheMipsAsTheReferenceDoes) {

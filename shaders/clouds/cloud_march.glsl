@@ -115,6 +115,12 @@ CloudSegmentResult MarchCloudSegment(vec3 origin, vec3 dir, Length start, Length
         Length dt = min(min(max(step, 0.5 * footprint), max(across, step)), end - t);
         if (previous > 0.0) dt = min(dt, max(0.5 / (clouds.extinction * previous), step / 8.0));
         vec3 point = origin + dir * (t + quality.jitter * dt);
+        // The sample stands for its whole step: the volume is read filtered over the step's length
+        // where that is longer than the pixel's footprint (a grazing ray whose budget stretched its
+        // steps, far cloud tops at the horizon), else the steps sample the volume's detail a few
+        // voxels apart, the same few voxels in neighbouring pixels, and their jitter showed as a
+        // regular stipple along the far tops (the `clouds` view).
+        footprint = max(footprint, dt);
         Length clear;
         Number density = CloudDensityAndClearAt(point, footprint, weatherClear, clear);
         if (clear > 0.0) {  // a clear sky around (the weather's coverage 0): on past it, at least a step

@@ -18,7 +18,8 @@
 //                               GetIrradiance, NightFade and PI, on CPU tables.
 //
 // CloudReference::march is then what probeClouds (cloud_probe.h) computes on the GPU,
-// ray for ray: MarchView with the block's slices and step budget, jitter 1/2, no footprint.
+// ray for ray: MarchView with the block's slices and step budget, jitter 1/2, no pixel footprint
+// (the steps' own lengths still pick the volume's levels where a step spans voxels).
 //
 // How close (tests/test_cloud_reference.cpp: 36 rays from below, inside and above the layer,
 // from orbit down and along the limb, sun high and low, through a baked 64^3 volume and 16^2
