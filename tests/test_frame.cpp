@@ -20,6 +20,7 @@
 #include "render/bindings.h"
 #include "render/frame_uniforms.h"
 #include "render/renderer.h"
+#include "terrain/near_height_grid.h"
 #include "terrain/terrain_block.h"
 
 using namespace planet;
@@ -331,6 +332,11 @@ TEST_F(FrameTest, BlockMirrorsMatchTheDriversLayoutAndBindings) {
     EXPECT_EQ(memberOffset(p, "GridBlock.exponent"), static_cast<GLint>(offsetof(GridBlock, exponent)));
     EXPECT_EQ(memberOffset(p, "GridBlock.pointsPerSide"), static_cast<GLint>(offsetof(GridBlock, pointsPerSide)));
     EXPECT_EQ(memberOffset(p, "GridBlock.stride"), static_cast<GLint>(offsetof(GridBlock, stride)));
+    const gl::Program nearGrid = gl::buildProgram(sources, {"near grid", {"terrain/near_height_grid.comp"}});
+    const BlockLayout nearGridBlock = blockLayout(nearGrid.id(), "NearHeightGridBlock");
+    EXPECT_EQ(nearGridBlock.binding, binding::BLOCK_TERRAIN_NEAR_GRID);
+    EXPECT_EQ(nearGridBlock.size, static_cast<GLint>(sizeof(terrain::NearHeightGridBlock)));
+    EXPECT_EQ(memberOffset(nearGrid.id(), "nearGridNorth"), static_cast<GLint>(offsetof(terrain::NearHeightGridBlock, north)));
 }
 
 TEST(FrameSources, AerialPerspectiveIsComputedInOneShaderFunctionCalledFromOnePass) {

@@ -13,6 +13,7 @@ const int BLOCK_GRID = 3;        // GridBlock: the projected grid of the pass th
 const int BLOCK_OCEAN = 4;       // OceanBlock: the sea's parameters (ocean/ocean_block.glsl)
 const int BLOCK_CLOUDS = 5;      // CloudBlock: the cloud layer (clouds/cloud_block.glsl)
 const int BLOCK_TERRAIN_NEAR = 6; // TerrainNearBlock: the height field near the camera (terrain/terrain_block.glsl)
+const int BLOCK_TERRAIN_NEAR_GRID = 7;  // NearHeightGridBlock: where the near height grid lies (terrain/near_height_grid.glsl)
 
 // Shader storage buffers (std430).
 const int BUFFER_PROBE_INPUT = 0;   // the compute probes' inputs and outputs (tests and sky-probe)
@@ -34,6 +35,7 @@ const int IMAGE_SURFACE_RADIANCE = 2;  // RGBA16F radiance leaving the surface (
 const int IMAGE_SEA_REFLECTION = 3;    // RGBA32F the sea's reflected ray and weight (ocean/terrain_reflection.comp lowers it)
 const int IMAGE_TERRAIN_SHADOW_SAMPLES = 5;  // RG32F the terrain shadow's samples (render/terrain_shadow_sample_marches.comp writes the marched ones)
 const int IMAGE_OCEAN_GRID_REFLECTION = 4;  // RGBA32F N x N: the reflection at the ocean grid's points (ocean/grid_reflection.comp)
+const int IMAGE_TERRAIN_NEAR_GRID = 6;      // RGBA32F N x N: the height field and its gradient near the camera (terrain/near_height_grid.comp)
 
 // Texture units.
 const int UNIT_GBUFFER_NORMAL = 0;          // RGBA16F world normal
@@ -69,5 +71,6 @@ const int UNIT_MESH_SURFACE_0 = 30;         // RGBA32F x 3: what a mesh's fragme
 const int UNIT_MESH_SURFACE_1 = 31;
 const int UNIT_MESH_SURFACE_2 = 32;
 const int UNIT_CONTINENT_MAX = 33;          // R32F cube map, a mip level per level (src/terrain/continent_bound.h)
+const int UNIT_TERRAIN_NEAR_GRID = 35;      // RGBA32F N x N: the height field and its gradient near the camera (terrain/near_height_grid.glsl)
 const int UNIT_CLEAR_SKY = 34;              // R32F cube map: the angle around a point where no cloud is, for sure (src/clouds/clear_sky.h)
 const int UNIT_OCEAN_GRID_REFLECTION = 29;  // RGBA32F N x N, bilinear: the reflection at the ocean grid's points (ocean/sea_light.frag)

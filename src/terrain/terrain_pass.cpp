@@ -10,6 +10,7 @@
 #include "terrain/continent_bound.h"
 #include "terrain/detail_texture.h"
 #include "terrain/height.h"
+#include "terrain/near_height_grid.h"
 #include "terrain/terrain_block.h"
 
 namespace planet {
@@ -97,8 +98,11 @@ void TerrainPass::prepare(const Scene& scene, const Camera& camera, const noise:
         detailLostVariance_ = baked.lostSlopeVariance;
     }
     if (scene.terrain.detail && !detailed_)
-        detailed_.emplace(gl::ShaderSources{sources_.root, sources_.preamble + "#define TERRAIN_DETAIL 1\n"},
-                          materialProgram("ground material (TERRAIN_DETAIL)"));
+        detailed_.emplace(gl::ShaderSources{sources_.root, sources_.preamble + "#define TERRAIN_DETAIL 1\n" +
+                                                               (nearGridOn_ ? "#define TERRAIN_NEAR_GRID 1\n" : "")},
+                          materialProgram(nearGridOn_ ? "ground material (TERRAIN_DETAIL, TERRAIN_NEAR_GRID)"
+                                                      : "ground material (TERRAIN_DETAIL)"));
+    if (scene.terrain.detail && nearGridOn_ && !nearGrid_) nearGrid_.emplace(sources_);
     // The detail fades out by TERRAIN_NEAR_RANGE_M from the camera (terrain/ground_material.frag); a
     // camera higher than that above the highest possible ground has none in view, and the
     // program without the detail's code draws the same pixels for less (llvmpipe pays for
@@ -112,6 +116,9 @@ void TerrainPass::prepare(const Scene& scene, const Camera& camera, const noise:
                                            : detailPatchCount(mesh_.rings(), mesh_.patchCount(), grid_.size, gridBlock,
                                                               terrain::terrainNearRangeM());
     if (detail_) glBindTextureUnit(binding::UNIT_TERRAIN_DETAIL, detail_->id());
+    // The near field on its grid, for the detail's program (terrain/near_height_grid.h): only where
+    // that program draws, the camera near the ground.
+    if (detailPatches_ > 0 && nearGrid_) nearGrid_->prepare(block.shape, continents, camera, radius);
 }
 
 namespace {
@@ -186,6 +193,7 @@ void TerrainPass::useMaterialProgram(bool detailed) {
         glUseProgram(plain_.id());
         return;
     }
+    if (nearGrid_) nearGrid_->form(nearBlock_);  // evaluated where it moved or the terrain changed
     glUseProgram(detailed_->id());
     // The detail filter's table (terrain/detail.glsl); absent from the program when unused.
     const GLint lostVariance = glGetUniformLocation(detailed_->id(), "uTerrainDetailLostVariance");
@@ -206,6 +214,7 @@ void TerrainPass::setDarkFloorCulling(double patchDarkContinent, double continen
 std::vector<gl::HotProgram*> TerrainPass::programs() {
     std::vector<gl::HotProgram*> built{&meshProgram_, &plain_};
     if (detailed_) built.push_back(&*detailed_);
+    if (nearGrid_) built.push_back(&nearGrid_->program());
     return built;
 }
 

@@ -31,6 +31,7 @@
 #include "noise/continents.h"
 #include "scene/camera.h"
 #include "scene/scene.h"
+#include "terrain/near_height_grid.h"
 
 namespace planet {
 
@@ -107,6 +108,13 @@ public:
     // Tests: whole blocks of patches out of the view left undrawn (grid/view_cull.h; on by default),
     // and how many patches the last prepared frame draws.
     void setViewCulling(bool on) { viewCulling_ = on; }
+    // Tests: the detail's program reads the near field from its grid (terrain/near_height_grid.h; on
+    // by default) or evaluates it at every pixel; the grid, once built.
+    void setNearHeightGrid(bool on) {
+        if (on != nearGridOn_) detailed_.reset();  // built again with the other code at the next prepare
+        nearGridOn_ = on;
+    }
+    const terrain::NearHeightGrid* nearHeightGrid() const { return nearGrid_ ? &*nearGrid_ : nullptr; }
     int patchesDrawn() const { return mesh_.patchesDrawn(0, mesh_.patchCount()); }
     const Statistics& lastStatistics() const { return lastStatistics_; }
 
@@ -130,6 +138,8 @@ private:
     GridStride stride_;
     int strideOverride_ = 0;
     bool viewCulling_ = true;
+    bool nearGridOn_ = true;
+    std::optional<terrain::NearHeightGrid> nearGrid_;  // built with the detail's program
     bool statistics_ = false;
     Statistics lastStatistics_;
     gl::Query primitives_{GL_PRIMITIVES_GENERATED};
