@@ -33,6 +33,11 @@
 #ifndef SEA_FLOOR_DARK
 #define SEA_FLOOR_DARK 0
 #endif
+// 1: the program for the pixels render/sun_clear_of_clouds.frag marked, whose way to the sun surely
+// meets no cloud: the clouds' shadow is 1 there, and its code is left out.
+#ifndef SUN_CLEAR_OF_CLOUDS
+#define SUN_CLEAR_OF_CLOUDS 0
+#endif
 
 layout(binding = UNIT_GBUFFER_NORMAL) uniform sampler2D gNormal;
 layout(binding = UNIT_GBUFFER_ALBEDO) uniform sampler2D gAlbedo;
@@ -105,7 +110,7 @@ vec3 surfaceRadiance(ivec2 pixel, SurfacePoint surface, float depthBelowSea) {
     bool facesSun = dot(shading, frame.sunDirection) > 0.0;
     bool marchLater;
     float meanVisibility;
-    float visibility = CloudSunTransmittance(point, frame.sunDirection, CLOUD_SHADOW_MAX_KM) *
+    float visibility = (SUN_CLEAR_OF_CLOUDS != 0 ? 1.0 : CloudSunTransmittance(point, frame.sunDirection, CLOUD_SHADOW_MAX_KM)) *
                        terrainVisibility(pixel, point, facesSun, marchLater, meanVisibility);
     if (facesSun) sunIrradiance *= visibility;
     // The sky's share is linear in the normal's rise, (1 + n.up) / 2 (Bruneton's

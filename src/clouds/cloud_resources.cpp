@@ -152,6 +152,7 @@ void CloudResources::upload(Baked&& b) {
     if (b.weather) {
         weather_ = makeWeatherTexture(*b.weather);
         clearSky_ = makeClearSkyTexture(b.clearSky ? *b.clearSky : ClearSkyMap{});
+        clearSkyMap_ = b.clearSky ? *b.clearSky : ClearSkyMap{};
         weatherParams_ = std::make_pair(b.weatherParams, b.weatherSize);
     }
 }
@@ -208,6 +209,13 @@ MarchStatistics CloudResources::marchStatistics() const {
     glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
     glGetNamedBufferSubData(statisticsBuffer_.id(), 0, sizeof counts, counts);
     return {counts[0], counts[1], counts[2]};
+}
+
+double CloudResources::clearAngleAt(const glm::dvec3& direction) const {
+    // CloudClearDistance's conditions (clouds/cloud_density.glsl): the map says nothing for a layer of
+    // constant density or coverage over 1/2 (CloudLocalCoverage then lifts a 0).
+    if (block_.enabled == 0 || block_.coverage > 0.5f || block_.constantDensity != 0) return 0.0;
+    return clearSkyAngleAt(clearSkyMap_, direction);
 }
 
 }  // namespace planet::clouds

@@ -62,6 +62,10 @@ public:
     // The largest step through empty space the volume's border allows for a tile width, km.
     double largeStepKm(double tileWidthKm) const;
     const CloudBlock& block() const { return block_; }
+    // The clear sky's angle at `direction` (rad; clouds/clear_sky.h), where the march's clear sky
+    // check would read it: 0 where the map says nothing (no weather yet, coverage over 1/2, a layer
+    // of constant density, the clouds off).
+    double clearAngleAt(const glm::dvec3& direction) const;
 
     // Bake on a worker thread and keep drawing meanwhile (the explorer); off: update waits.
     void setBackgroundBakes(bool on) { background_ = on; }
@@ -89,6 +93,7 @@ private:
     gl::Texture volume_{GL_TEXTURE_3D};
     gl::Texture weather_{GL_TEXTURE_CUBE_MAP};
     gl::Texture clearSky_ = makeClearSkyTexture({});
+    ClearSkyMap clearSkyMap_;  // what clearSky_ holds (empty: the placeholder's 0)
     gl::Buffer buffer_;
     gl::Buffer statisticsBuffer_;
     bool statistics_ = false;

@@ -149,7 +149,8 @@ Renderer::Renderer(const std::filesystem::path& shaderRoot, const atmosphere::Ta
       seaFloorDark_(withAtmosphere(sources_, programTables_), "sea floor dark", "render/sea_floor_dark.frag"),
       surfaceLight_(sources_, programTables_,
                     gl::ProgramDesc{"surface light", {"common/fullscreen.vert", "render/surface_light.frag"}},
-                    {"SEA_FLOOR_DARK"}),
+                    {"SEA_FLOOR_DARK", "SUN_CLEAR_OF_CLOUDS"}),
+      sunClearOfClouds_(withAtmosphere(sources_, programTables_), "sun clear of clouds", "render/sun_clear_of_clouds.frag"),
       ocean_(sources_, programTables_),
       seaReflection_(sources_, programTables_,
                      gl::ProgramDesc{"sea reflection", {"common/fullscreen.vert", "ocean/sea_reflection.frag"}},
@@ -308,11 +309,29 @@ std::vector<Renderer::Pass> Renderer::makePasses() {
                                   glUseProgram(surfaceLight_.get(variant, 1).id());
                                   drawScissored(lastPrepare_.groundBound, targets_.size());
                               }
-                              stencilTest(0);
                           }
+                          // The ground whose way to the sun surely meets no cloud marked too (render/
+                          // sun_clear_of_clouds.frag; not the dark depths, whose low bits are set): the
+                          // program without the clouds' shadow lights it, the general one the rest.
+                          const bool clearApart = sunClearStencil_ && !variant.cloudsOff && lastPrepare_.clearSkyDepth < 1.0f;
+                          if (clearApart) {
+                              glEnable(GL_STENCIL_TEST);
+                              glStencilMask(kSunClearOfClouds);
+                              glStencilFunc(GL_EQUAL, kSunClearOfClouds, 0xFF & ~kSunClearOfClouds);  // where the rest is 0
+                              glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
+                              glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+                              glUseProgram(sunClearOfClouds_.program().id());
+                              glUniform1f(0, lastPrepare_.clearSkyDepth);
+                              drawScissored(lastPrepare_.groundBound, targets_.size());
+                              glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+                              stencilTest(kSunClearOfClouds);
+                              glUseProgram(surfaceLight_.get(variant, 2).id());
+                              drawScissored(lastPrepare_.groundBound, targets_.size());
+                          }
+                          if (darkApart || clearApart) stencilTest(0);
                           glUseProgram(surfaceLight_.get(variant).id());
                           drawScissored(lastPrepare_.groundBound, targets_.size());  // it discards elsewhere
-                          if (darkApart) stencilOff();
+                          if (darkApart || clearApart) stencilOff();
                           // The terrain's shadow at the pixels the lighting listed (a shadow's edge),
                           // marched from the ground before the ocean copies what it sees through the water.
                           marchListedTerrainShadow(true);
@@ -320,6 +339,7 @@ std::vector<Renderer::Pass> Renderer::makePasses() {
                       [this] {
                           std::vector<gl::HotProgram*> p = builtVariants({&surfaceLight_, &terrainShadowListed_});
                           p.push_back(&seaFloorDark_.program());
+                          p.push_back(&sunClearOfClouds_.program());
                           return p;
                       }});
     passes.push_back({{"ocean", {R::GBuffer, R::TerrainShadow, R::SurfaceRadiance}, {R::SurfaceRadiance, R::GBuffer, R::SeaReflection}},
@@ -609,6 +629,37 @@ void Renderer::drawSkyTemporalSplit(const Scene& scene) {
     glBindFramebuffer(GL_FRAMEBUFFER, targets_.hdrFramebuffer());
 }
 
+// The reversed-Z depth nearer than which every ground point's way to the sun surely meets no cloud
+// (render/sun_clear_of_clouds.frag), or 1 (none): the clear sky around the camera's direction (the
+// clear sky map's angle, within which the weather's coverage is 0) reaches Rc from the camera's axis
+// in the layer. A ground point within D of the camera is within D of that axis; its way to the sun,
+// from an altitude of at least the lowest sea floor up to the layer's top, is at most
+// t = H / sin(e) long (the sun's elevation e there at least the camera's less the point's angle from
+// it, D / R; the sphere's curvature only shortens the climb), and leaves the axis by at most t cos(e).
+// So D + t cos(e) < Rc, solved by halving; and a view distance D is at least view depth D cos(the
+// view's half diagonal).
+float Renderer::clearSkyDepth(const Scene& scene, const Camera& camera, glm::ivec2 size) const {
+    const double radiusKm = scene.planetRadiusM() / 1000.0;
+    const glm::dvec3 up = glm::normalize(camera.position);
+    const double clearKm = clouds_.block().bottomRadius * std::sin(clouds_.clearAngleAt(up)) - 0.01;
+    const double sunElevation = std::asin(std::clamp(glm::dot(scene.sunDirection(), up), -1.0, 1.0));
+    const double climbKm = clouds_.block().topRadius - (radiusKm - scene.terrain.ocean_depth_m / 1000.0);
+    const auto fits = [&](double d) {
+        const double e = sunElevation - d / radiusKm;
+        if (e <= 0.01) return false;
+        return d + climbKm / std::sin(e) * std::cos(e) < clearKm;
+    };
+    if (clearKm <= 0.0 || !fits(0.0)) return 1.0f;
+    double lo = 0.0, hi = clearKm;
+    for (int i = 0; i < 40; ++i) (fits(0.5 * (lo + hi)) ? lo : hi) = 0.5 * (lo + hi);
+    const double aspect = double(size.x) / double(std::max(size.y, 1));
+    const double t = std::tan(0.5 * camera.fovY_rad);
+    const double cosHalfDiagonal = 1.0 / std::sqrt(1.0 + t * t * (1.0 + aspect * aspect));
+    const double viewZM = lo * 1000.0 * cosHalfDiagonal;
+    if (viewZM <= camera.near_m) return 1.0f;
+    return static_cast<float>(depthFromViewZ(-viewZM, camera.near_m));
+}
+
 void Renderer::drawSpaceAround(const ScreenRect& skyBound) const {
     if (skyBound.coversScreen(targets_.size())) return;
     glUseProgram(skySpace_.program().id());
@@ -674,7 +725,7 @@ void Renderer::prepare(const Scene& scene, const Camera& camera, glm::ivec2 size
     report.cloudsUpdated = clouds_.update(scene, camera, size.y);
     clouds_.bind();
     report.cloudsOff = cloudsOffPrograms_ && clouds_.block().enabled == 0;
-    report.cloudFarField = !report.cloudsOff && cloudFarFieldPrograms_ &&
+    report.clearSkyDepth = clearSkyDepth(scene, camera, size);    report.cloudFarField = !report.cloudsOff && cloudFarFieldPrograms_ &&
                            clouds::seenInFarFieldOnly(clouds_.block(), glm::length(camera.position) / 1000.0,
                                                       highestGroundM / 1000.0);
     terrain_.prepare(scene, camera, *continents_->map(), camera.fovY_rad / size.y, double(size.x) / size.y);
@@ -769,7 +820,9 @@ bool Renderer::matchAtmosphereTables() {
     programTables_ = sizes;
     terrainShadow_.program().setSources(withAtmosphere(sources_, sizes));
     seaFloorDark_.program().setSources(withAtmosphere(sources_, sizes));
-    std::vector<gl::HotProgram*> rebuilt{&terrainShadow_.program(), &seaFloorDark_.program()};
+    sunClearOfClouds_.program().setSources(withAtmosphere(sources_, sizes));
+    std::vector<gl::HotProgram*> rebuilt{&terrainShadow_.program(), &seaFloorDark_.program(),
+                                         &sunClearOfClouds_.program()};
     std::vector<AtmosphereProgram*> withTables = ocean_.atmospherePrograms();
     for (AtmosphereProgram* p : {&surfaceLight_, &terrainShadowMarches_, &terrainShadowListed_, &seaReflection_,
                                  &seaReflectionListed_, &terrainReflection_, &sky_, &skySparse_, &skyTemporal_, &skyRefine_})

@@ -108,6 +108,9 @@ struct PrepareReport {
     bool atmosphereProgramsRebuilt = false;  // the tables' sizes changed (refined): their readers rebuilt
     bool continentsUpdated = false;      // the continents map was loaded or baked, and uploaded
     bool cloudsUpdated = false;          // the cloud volume or weather map was made and uploaded
+    // The reversed-Z depth nearer than which the ground's way to the sun surely meets no cloud
+    // (render/sun_clear_of_clouds.frag; Renderer::clearSkyDepth); 1: no pixel.
+    float clearSkyDepth = 1.0f;
     bool historyValid = false;           // the previous frame may be reprojected
     bool reducedRate = false;            // the sky was marched at the reduced rate (sky march, temporal, refine)
     bool stillFrame = false;             // with a history, nothing moved since it (but the jitter, maybe): the reconstruction's
@@ -190,6 +193,9 @@ public:
     // Whether the surface light draws the sea floor's dark depths first and keeps its lighting off
     // them by the stencil (on by default), for the tests that compare the two.
     void setSeaFloorDarkStencil(bool on) { seaFloorDarkStencil_ = on; }
+    // Tests: the surface light's ground whose way to the sun surely meets no cloud lit by the program
+    // without the clouds' shadow (render/sun_clear_of_clouds.frag; on by default), or all by the one.
+    void setSunClearStencil(bool on) { sunClearStencil_ = on; }
     // Whether the terrain leaves out the sea floor's dark depths where the sea covers them (on by
     // default), for the tests that compare the two.
     void setDarkFloorCulling(bool on) { darkFloorCulling_ = on; }
@@ -246,6 +252,7 @@ private:
     bool historyUsable(const Scene& scene, const Camera& camera, bool resized) const;
     // Space around the air's bound where it does not fill the frame (render/sky_space.frag), in
     // up to four scissored bands: the sky passes then run scissored to the bound.
+    float clearSkyDepth(const Scene& scene, const Camera& camera, glm::ivec2 size) const;
     void drawSpaceAround(const ScreenRect& skyBound) const;
     void drawSkyTemporalSplit(const Scene& scene);
     // Rebuilds the programs that read the atmosphere tables when the tables' sizes changed
@@ -262,6 +269,9 @@ private:
     FullscreenPass terrainShadow_;
     FullscreenPass seaFloorDark_;  // the surface light's stencil of the sea floor's dark depths (render/sea_floor_dark.frag)
     AtmosphereProgram surfaceLight_;
+    FullscreenPass sunClearOfClouds_;  // the surface light's stencil of the ground clear of clouds' shadow (render/sun_clear_of_clouds.frag)
+    // Its bit in the surface light's stencil, above the dark depths' value.
+    static constexpr GLuint kSunClearOfClouds = 0x40;
     OceanPass ocean_;
     AtmosphereProgram seaReflection_;  // mode SEA_REFLECTION_COMPOSE: the samples' spread (ocean/sea_reflection.frag)
     AtmosphereProgram terrainShadowMarches_;  // the terrain shadow's listed samples (render/terrain_shadow_sample_marches.comp)
@@ -289,6 +299,7 @@ private:
     bool cloudFarFieldPrograms_ = true;
     bool cloudsOffPrograms_ = true;
     bool seaFloorDarkStencil_ = true;
+    bool sunClearStencil_ = true;
     bool darkFloorCulling_ = true;
     bool seaReflectionSamples_ = true;
     bool screenBounds_ = true;
