@@ -1,5 +1,5 @@
 // The height field near the camera on a grid (shaders/terrain/near_height_grid.glsl): the ground's
-// material read the near field (terrainHeightNearGrad, ten octaves of noise with their gradients) at
+// material read the near field (terrainHeightNearGrad, every mountain octave's noise with its gradient) at
 // every pixel within the ground detail's reach, a third of the material's time at the `ground` view
 // (38 of 112 ms on llvmpipe at 1280x720). Here it is evaluated once at N x N points on the plane
 // tangent to the planet at an origin near the camera (terrain/near_height_grid.comp) and read back
