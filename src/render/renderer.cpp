@@ -284,54 +284,7 @@ std::vector<Renderer::Pass> Renderer::makePasses() {
                           glBindTextureUnit(binding::UNIT_GBUFFER_DEPTH, g.depth.id());
                           glBindTextureUnit(binding::UNIT_TERRAIN_SHADOW, targets_.terrainShadowSamples().visibility.id());
                           glBindVertexArray(emptyVertexArray_.id());
-                          // (The 4D table's program: it reads no scattering table, only the clouds.)
-                          AtmosphereVariant variant = variantFor(s);
-                          variant.elekTable = false;
-                          // The sea floor's dark depths marked in the stencil first (render/
-                          // sea_floor_dark.frag): the lighting program runs on the rest, the dark
-                          // depths' program (SEA_FLOOR_DARK: their distance, no light) on them, each
-                          // kept off the other's pixels by the early stencil test, before it runs.
-                          const bool darkApart = seaFloorDarkStencil_ && s.terrain.ocean;
-                          if (darkApart) {
-                              stencilMark(1);
-                              glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);  // the stencil alone
-                              glUseProgram(seaFloorDark_.program().id());
-                              drawScissored(lastPrepare_.groundBound, targets_.size());
-                              glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-                              // Their own program (their distance, no light) only where the sea is not
-                              // drawn over them from above: there the ocean writes both at every such
-                              // pixel (the sea's distance, and the light over a floor that sends none
-                              // back, which the cleared target holds too). From orbit most of the marked
-                              // pixels have no ground at all (the terrain left the dark depths out),
-                              // where the program ran its whole body to discard: 9-10 ms at 1280x720.
-                              if (lastPrepare_.underWater) {
-                                  stencilTest(1);
-                                  glUseProgram(surfaceLight_.get(variant, 1).id());
-                                  drawScissored(lastPrepare_.groundBound, targets_.size());
-                              }
-                          }
-                          // The ground whose way to the sun surely meets no cloud marked too (render/
-                          // sun_clear_of_clouds.frag; not the dark depths, whose low bits are set): the
-                          // program without the clouds' shadow lights it, the general one the rest.
-                          const bool clearApart = sunClearStencil_ && !variant.cloudsOff && lastPrepare_.clearSkyDepth < 1.0f;
-                          if (clearApart) {
-                              glEnable(GL_STENCIL_TEST);
-                              glStencilMask(kSunClearOfClouds);
-                              glStencilFunc(GL_EQUAL, kSunClearOfClouds, 0xFF & ~kSunClearOfClouds);  // where the rest is 0
-                              glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
-                              glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
-                              glUseProgram(sunClearOfClouds_.program().id());
-                              glUniform1f(0, lastPrepare_.clearSkyDepth);
-                              drawScissored(lastPrepare_.groundBound, targets_.size());
-                              glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-                              stencilTest(kSunClearOfClouds);
-                              glUseProgram(surfaceLight_.get(variant, 2).id());
-                              drawScissored(lastPrepare_.groundBound, targets_.size());
-                          }
-                          if (darkApart || clearApart) stencilTest(0);
-                          glUseProgram(surfaceLight_.get(variant).id());
-                          drawScissored(lastPrepare_.groundBound, targets_.size());  // it discards elsewhere
-                          if (darkApart || clearApart) stencilOff();
+                          drawSurfaceLight(s);
                           // The terrain's shadow at the pixels the lighting listed (a shadow's edge),
                           // marched from the ground before the ocean copies what it sees through the water.
                           marchListedTerrainShadow(true);
@@ -603,6 +556,57 @@ bool Renderer::historyUsable(const Scene& scene, const Camera& camera, bool resi
 }
 
 Renderer::~Renderer() { continents_->releaseTexture(); }
+
+// The surface light's draws (render/surface_light.frag), its programs kept off each other's pixels by
+// the early stencil test: the sea floor's dark depths and the pixels with no ground marked first
+// (SEA_FLOOR_DARK), then the ground whose way to the sun surely meets no cloud (SUN_CLEAR_OF_CLOUDS),
+// then the general program on the rest.
+void Renderer::drawSurfaceLight(const Scene& scene) {
+    // (The 4D table's program: it reads no scattering table, only the clouds.)
+    AtmosphereVariant variant = variantFor(scene);
+    variant.elekTable = false;
+    // The sea floor's dark depths marked in the stencil first (render/sea_floor_dark.frag): the lighting
+    // programs run on the rest, the dark depths' program (SEA_FLOOR_DARK: their distance, no light) on them.
+    const bool darkApart = seaFloorDarkStencil_ && scene.terrain.ocean;
+    if (darkApart) {
+        stencilMark(1);
+        glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);  // the stencil alone
+        glUseProgram(seaFloorDark_.program().id());
+        drawScissored(lastPrepare_.groundBound, targets_.size());
+        glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+        // Their own program (their distance, no light) only where the sea is not drawn over them from
+        // above: there the ocean writes both at every such pixel (the sea's distance, and the light over
+        // a floor that sends none back, which the cleared target holds too). From orbit most of the marked
+        // pixels have no ground at all (the terrain left the dark depths out), where the program ran its
+        // whole body to discard: 9-10 ms at 1280x720.
+        if (lastPrepare_.underWater) {
+            stencilTest(1);
+            glUseProgram(surfaceLight_.get(variant, 1).id());
+            drawScissored(lastPrepare_.groundBound, targets_.size());
+        }
+    }
+    // The ground whose way to the sun surely meets no cloud marked too (render/sun_clear_of_clouds.frag;
+    // not the dark depths, whose low bits are set): the program without the clouds' shadow lights it.
+    const bool clearApart = sunClearStencil_ && !variant.cloudsOff && lastPrepare_.clearSkyDepth < 1.0f;
+    if (clearApart) {
+        glEnable(GL_STENCIL_TEST);
+        glStencilMask(kSunClearOfClouds);
+        glStencilFunc(GL_EQUAL, kSunClearOfClouds, 0xFF & ~kSunClearOfClouds);  // where the rest is 0
+        glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
+        glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+        glUseProgram(sunClearOfClouds_.program().id());
+        glUniform1f(0, lastPrepare_.clearSkyDepth);
+        drawScissored(lastPrepare_.groundBound, targets_.size());
+        glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+        stencilTest(kSunClearOfClouds);
+        glUseProgram(surfaceLight_.get(variant, 2).id());
+        drawScissored(lastPrepare_.groundBound, targets_.size());
+    }
+    if (darkApart || clearApart) stencilTest(0);
+    glUseProgram(surfaceLight_.get(variant).id());
+    drawScissored(lastPrepare_.groundBound, targets_.size());  // it discards elsewhere
+    if (darkApart || clearApart) stencilOff();
+}
 
 // A frame where only the clock ran, the camera under or above the cloud layer: the pixels whose ray
 // never enters the layer, marked in the stencil's top bit (render/sky_off_layer.frag), are rebuilt by the

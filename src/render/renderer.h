@@ -253,6 +253,7 @@ private:
     // Space around the air's bound where it does not fill the frame (render/sky_space.frag), in
     // up to four scissored bands: the sky passes then run scissored to the bound.
     float clearSkyDepth(const Scene& scene, const Camera& camera, glm::ivec2 size) const;
+    void drawSurfaceLight(const Scene& scene);
     void drawSpaceAround(const ScreenRect& skyBound) const;
     void drawSkyTemporalSplit(const Scene& scene);
     // Rebuilds the programs that read the atmosphere tables when the tables' sizes changed
