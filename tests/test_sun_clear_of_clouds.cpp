@@ -4,6 +4,7 @@
 // though the clear sky check took no sample. The same decision as the shadow's own
 // (CloudSunWaySurelyClear against CloudDensityPathToSun): the pictures the same value for value, under
 // a clear sky, under the deck, among the clouds and over the sea's dark depths.
+#include <cmath>
 #include <cstdio>
 #include <string>
 
@@ -37,10 +38,49 @@ TEST_F(SunClearOfClouds, TheProgramWithoutTheCloudsShadowLightsTheClearGroundThe
             differing += images[0].pixels[i] != images[1].pixels[i] ? 1 : 0;
             lit += images[0].pixels[i] > 0.0f ? 1 : 0;
         }
-        std::printf("%-8s %zu of %zu surface radiance values differ (%zu lit)\n", view.c_str(), differing,
-                    images[0].pixels.size(), lit);
+        std::printf("%-8s %zu of %zu surface radiance values differ (%zu lit); clear sky depth %g\n", view.c_str(),
+                    differing, images[0].pixels.size(), lit, double(renderer->lastPrepare().clearSkyDepth));
         EXPECT_GT(lit, 0u) << view;
         EXPECT_EQ(differing, 0u) << view;
+    }
+    renderer->setSunClearStencil(true);
+}
+
+// The meadow under a lower sun, whose ways to the sun run farther through the layer: the depth within which
+// the clear sky around the camera covers every way moves nearer as the sun sinks (26 km out along the view's
+// axis at 15 degrees, 43 at 60), and the pictures stay the same value for value. What this cannot show: the
+// meadow's clear sky reaches past all the ground in view, so a rule that marked every pixel would pass here
+// too (tried); the views with clouds near the camera (deck, clouds, cumulus) have no clear sky at it and mark
+// none. A view whose clear sky ends within sight is still to be found.
+TEST_F(SunClearOfClouds, UnderALowerSunTheMarkedDepthComesNearerAndTheLightStaysTheSame) {
+    auto renderer = std::make_unique<Renderer>(test::repoPaths().shaders(), atmosphere::TableSizes::reduced());
+    const glm::ivec2 size{160, 90};
+    Session s = loadSession(test::repoPaths(), "earth", "ground");
+    s.scene.render.temporal = false;
+    const glm::dvec3 up = glm::normalize(s.camera.position);
+    const glm::dvec3 east = glm::normalize(glm::cross(glm::dvec3(0.0, 0.0, 1.0), up));
+    float previousDepth = 0.0f;
+    for (const double elevationDeg : {60.0, 30.0, 15.0}) {
+        const double zenith = glm::radians(90.0 - elevationDeg);
+        const glm::dvec3 sun = std::cos(zenith) * up + std::sin(zenith) * east;
+        s.scene.sun.latitude_deg = glm::degrees(std::asin(sun.z));
+        s.scene.sun.longitude_deg = glm::degrees(std::atan2(sun.y, sun.x));
+        ImageRGBAF images[2];
+        float depth = 1.0f;
+        for (int split = 0; split < 2; ++split) {
+            renderer->setSunClearStencil(split == 1);
+            renderer->render(s.scene, s.camera, size);
+            images[split] = readTextureRGBAF(renderer->targets().surfaceRadiance(), size.x, size.y);
+            depth = renderer->lastPrepare().clearSkyDepth;
+        }
+        std::size_t differing = 0;
+        for (std::size_t i = 0; i < images[0].pixels.size(); ++i) differing += images[0].pixels[i] != images[1].pixels[i] ? 1 : 0;
+        std::printf("sun %4.0f deg up: clear sky depth %g (%.1f km out along the view's axis); %zu values differ\n",
+                    elevationDeg, double(depth), depth < 1.0f ? s.camera.near_m / depth / 1000.0 : 0.0, differing);
+        EXPECT_EQ(differing, 0u) << elevationDeg;
+        EXPECT_LT(depth, 1.0f) << elevationDeg << ": the clear sky around the meadow marks none of it";
+        EXPECT_GT(depth, previousDepth) << elevationDeg << ": a lower sun, a nearer depth (larger, reversed-Z)";
+        previousDepth = depth;
     }
     renderer->setSunClearStencil(true);
 }
