@@ -164,7 +164,7 @@ TEST(TerrainDetailRings, EveryPatchAfterTheDetailsRingsIsBeyondItsRange) {
     const double radius = 6.371e6, maxHeight = 8000.0, range = terrain::terrainNearRangeM();
     const GridParams params;  // 100 x 100, exponent 4, as earth.toml
     const int N = params.size;
-    const std::vector<PatchRing> rings = nearFirstRings(N);
+    const std::vector<PatchRun> rings = nearFirstRings(N);
     ASSERT_GT(rings.size(), 2u);
     for (const double altitude : {2.0, 300.0, 3000.0, 10000.0})
         for (const double roam : {0.0, 1.0}) {
@@ -180,8 +180,8 @@ TEST(TerrainDetailRings, EveryPatchAfterTheDetailsRingsIsBeyondItsRange) {
             const int count = TerrainPass::detailPatchCount(rings, (N - 1) * (N - 1), N, block, range);
             // The rings drawn with the detail: those that end at `count`.
             glm::ivec2 low(0), high(N - 1);
-            for (const PatchRing& ring : rings)
-                if (ring.firstPatch + ring.patchCount == count) low = ring.boxMin, high = ring.boxMax;
+            for (const PatchRun& ring : rings)
+                if (ring.firstPatch + ring.patchCount == count) low = ring.pointMin, high = ring.pointMax;
             double nearest = 1e30;
             for (int j = 0; j + 1 < N; ++j)
                 for (int i = 0; i + 1 < N; ++i) {

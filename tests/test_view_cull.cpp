@@ -28,7 +28,7 @@ namespace {
 
 struct CulledGrid {
     GridBlock grid;
-    std::vector<PatchBlockRun> blocks;
+    std::vector<PatchRun> blocks;
     std::vector<bool> shown;
     double low = 0.0, high = 0.0;  // m from the centre
 };
@@ -89,7 +89,7 @@ TEST(ViewCull, EveryPointInViewKeepsItsBlock) {
         ASSERT_EQ(c.shown.size(), c.blocks.size());
         int culledPatches = 0, allPatches = 0, pointsInView = 0, missed = 0;
         for (std::size_t b = 0; b < c.blocks.size(); ++b) {
-            const PatchBlockRun& block = c.blocks[b];
+            const PatchRun& block = c.blocks[b];
             allPatches += block.patchCount;
             if (!c.shown[b]) culledPatches += block.patchCount;
             const glm::dvec2 from(block.pointMin), span(block.pointMax - block.pointMin);

@@ -50,22 +50,22 @@ std::vector<std::vector<PatchBlock>> ringBlocks(int size) {
     return rings;
 }
 
-// Each ring's patches in draw order and the box of rings 0..k (PatchRing).
-std::vector<PatchRing> ringsOf(const std::vector<std::vector<PatchBlock>>& ringBlocks, int size) {
+// Each ring's patches in draw order and the box of rings 0..k (PatchRun).
+std::vector<PatchRun> ringsOf(const std::vector<std::vector<PatchBlock>>& ringBlocks, int size) {
     const int n = size - 1;
-    std::vector<PatchRing> rings;
+    std::vector<PatchRun> rings;
     int first = 0;
     glm::ivec2 low(n), high(0);
     for (const std::vector<PatchBlock>& blocks : ringBlocks) {
-        PatchRing ring;
+        PatchRun ring;
         ring.firstPatch = first;
         for (const PatchBlock& b : blocks) {
             ring.patchCount += (b.to.x - b.from.x) * (b.to.y - b.from.y);
             low = glm::min(low, b.from);
             high = glm::max(high, b.to);
         }
-        ring.boxMin = low;
-        ring.boxMax = high;
+        ring.pointMin = low;
+        ring.pointMax = high;
         first += ring.patchCount;
         rings.push_back(ring);
     }
@@ -74,10 +74,10 @@ std::vector<PatchRing> ringsOf(const std::vector<std::vector<PatchBlock>>& ringB
 
 }  // namespace
 
-std::vector<PatchRing> nearFirstRings(int size) { return ringsOf(ringBlocks(size), size); }
+std::vector<PatchRun> nearFirstRings(int size) { return ringsOf(ringBlocks(size), size); }
 
-std::vector<PatchBlockRun> nearFirstBlocks(int size) {
-    std::vector<PatchBlockRun> runs;
+std::vector<PatchRun> nearFirstBlocks(int size) {
+    std::vector<PatchRun> runs;
     int first = 0;
     for (const std::vector<PatchBlock>& ring : ringBlocks(size))
         for (const PatchBlock& b : ring)
@@ -105,9 +105,9 @@ std::vector<GLuint> stridePatches(int size, int stride) {
     return patches;
 }
 
-std::vector<PatchBlockRun> rowBlocks(int size) {
+std::vector<PatchRun> rowBlocks(int size) {
     const int n = size - 1;
-    std::vector<PatchBlockRun> runs;
+    std::vector<PatchRun> runs;
     for (int j = 0; j < n; ++j)
         for (int i = 0; i < n; i += kBlock) {
             const int to = std::min(i + kBlock, n);

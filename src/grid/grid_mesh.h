@@ -42,29 +42,21 @@ GridBlock makeGridBlock(const GridProjection& projection, int exponent, const gl
 // Opaque passes draw the same pixels in either order (the nearest fragment wins).
 enum class PatchOrder { Rows, NearFirst };
 
-// NearFirst's rings, in draw order: ring k's patches follow those of rings 0..k-1, and rings
-// 0..k together lie in a box of vertex indices (inclusive, the grid's centre inside), beyond
-// which angleOutsideVertexBox (grid/projected_grid.h) bounds how near the rest can come.
-struct PatchRing {
-    int firstPatch = 0;
-    int patchCount = 0;
-    glm::ivec2 boxMin{0};
-    glm::ivec2 boxMax{0};
-};
-std::vector<PatchRing> nearFirstRings(int size);
-
-// The patches in runs of up to 8 along a row (stride 1), in draw order: the rows of NearFirst's
-// blocks of 8 x 8, or in row order each row's runs: a run of the index buffer's patches, and the
-// box of grid points (indices, inclusive) their corners are (grid/view_cull.h culls them).
-struct PatchBlockRun {
+// A run of the index buffer's patches, in draw order, and the box of grid points (indices, inclusive)
+// their corners lie in. NearFirst's rings: ring k's patches follow those of rings 0..k-1, and rings
+// 0..k together lie in the box (the grid's centre inside), beyond which angleOutsideVertexBox
+// (grid/projected_grid.h) bounds how near the rest can come. The runs grid/view_cull.h culls: up to
+// 8 patches along a row (stride 1), the rows of NearFirst's 8 x 8 blocks or, in row order, each row's.
+struct PatchRun {
     int firstPatch = 0;
     int patchCount = 0;
     glm::ivec2 pointMin{0};
     glm::ivec2 pointMax{0};
 };
+std::vector<PatchRun> nearFirstRings(int size);
 
-std::vector<PatchBlockRun> nearFirstBlocks(int size);
-std::vector<PatchBlockRun> rowBlocks(int size);
+std::vector<PatchRun> nearFirstBlocks(int size);
+std::vector<PatchRun> rowBlocks(int size);
 
 // The patches of stride x stride cells (GridMesh::setStride) of a size x size grid, in row
 // order: four point indices (j * size + i) each, corners (i0, j0), (i1, j0), (i1, j1), (i0, j1).
@@ -99,11 +91,11 @@ public:
     const gl::Buffer& points() const { return vertices_; }
     void bindBlock() const;
     // NearFirst's rings (empty in row order).
-    const std::vector<PatchRing>& rings() const { return stride_ == 1 ? rings_ : noRings_; }
+    const std::vector<PatchRun>& rings() const { return stride_ == 1 ? rings_ : noRings_; }
     // The patches' blocks (empty with a stride), and which of them the draws draw:
     // `shown` one flag per block (grid/view_cull.h), or empty for all; until the next call, or until
     // the size, the order or the stride changes.
-    const std::vector<PatchBlockRun>& blocks() const { return stride_ == 1 ? blocks_ : noBlocks_; }
+    const std::vector<PatchRun>& blocks() const { return stride_ == 1 ? blocks_ : noBlocks_; }
     void showBlocks(std::vector<bool> shown);
     // The patches the draws draw of `count` from `first` (all, or those of the shown blocks).
     int patchesDrawn(int first, int count) const;
@@ -130,10 +122,10 @@ private:
     gl::Buffer coarseIndices_[3];            // strides 2, 4, 8, built on first use
     int coarsePatchCount_[3] = {0, 0, 0};
     bool splitDraws_;  // a software renderer: draw in runs (above)
-    std::vector<PatchRing> rings_;
-    std::vector<PatchRing> noRings_;
-    std::vector<PatchBlockRun> blocks_;
-    std::vector<PatchBlockRun> noBlocks_;
+    std::vector<PatchRun> rings_;
+    std::vector<PatchRun> noRings_;
+    std::vector<PatchRun> blocks_;
+    std::vector<PatchRun> noBlocks_;
     std::vector<bool> shown_;  // per block; empty: all
     // The runs of patches (first, count) the draws draw of `count` from `first`, in draw order.
     std::vector<glm::ivec2> runs(int first, int count) const;

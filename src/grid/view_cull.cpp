@@ -18,14 +18,14 @@ struct Cap {
     double angle = 0.0;
 };
 
-Cap blockCap(const PatchBlockRun& block, const GridBlock& grid) {
+Cap blockCap(const PatchRun& block, const GridBlock& grid, std::vector<glm::dvec3>& points) {
     const glm::dmat3 worldFromGrid(glm::dvec3(grid.worldFromGridColumns[0]), glm::dvec3(grid.worldFromGridColumns[1]),
                                    glm::dvec3(grid.worldFromGridColumns[2]));
     const auto direction = [&](int i, int j) {
         const glm::dvec2 g = gridVertexCoordinate(i, j, grid.pointsPerSide);
         return glm::normalize(worldFromGrid * predisplaced(g, grid.exponent, grid.zShift));  // Eq. 2-4, 1
     };
-    std::vector<glm::dvec3> points;
+    points.clear();  // the caller's, kept between runs: no allocation per run and frame
     glm::dvec3 sum(0.0);
     for (int j = block.pointMin.y; j <= block.pointMax.y; ++j)
         for (int i = block.pointMin.x; i <= block.pointMax.x; ++i) {
@@ -44,7 +44,7 @@ Cap blockCap(const PatchBlockRun& block, const GridBlock& grid) {
 
 }  // namespace
 
-std::vector<bool> gridBlocksInView(const std::vector<PatchBlockRun>& blocks, const GridBlock& grid,
+std::vector<bool> gridBlocksInView(const std::vector<PatchRun>& blocks, const GridBlock& grid,
                                    const Camera& camera, double aspect, double lowRadiusM, double highRadiusM,
                                    double sidewaysM) {
     // The widened side planes through the camera, in view space (x right, y up, -z forward): a point
@@ -59,8 +59,9 @@ std::vector<bool> gridBlocksInView(const std::vector<PatchBlockRun>& blocks, con
     const glm::dmat3 viewFromWorld = glm::transpose(camera.worldFromView());
     std::vector<bool> shown;
     shown.reserve(blocks.size());
-    for (const PatchBlockRun& block : blocks) {
-        const Cap cap = blockCap(block, grid);
+    std::vector<glm::dvec3> points;
+    for (const PatchRun& block : blocks) {
+        const Cap cap = blockCap(block, grid, points);
         if (cap.angle >= 0.5 * 3.14159265358979) {  // a cap that large: no sphere bounds it tightly
             shown.push_back(true);
             continue;

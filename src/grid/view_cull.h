@@ -24,7 +24,7 @@ namespace planet {
 // camera; `sidewaysM`: how far the surface may move along the sphere from its grid point (the
 // waves' horizontal displacement). Conservative: a block kept may still be culled patch by patch on
 // the GPU.
-std::vector<bool> gridBlocksInView(const std::vector<PatchBlockRun>& blocks, const GridBlock& grid,
+std::vector<bool> gridBlocksInView(const std::vector<PatchRun>& blocks, const GridBlock& grid,
                                    const Camera& camera, double aspect, double lowRadiusM, double highRadiusM,
                                    double sidewaysM = 0.0);
 

@@ -27,7 +27,7 @@ bool TerrainPass::detailInReach(double cameraAltitudeM, double maxHeightM) {
     return cameraAltitudeM - maxHeightM < terrain::terrainNearRangeM();
 }
 
-int TerrainPass::detailPatchCount(const std::vector<PatchRing>& rings, int patchCount, int gridSize,
+int TerrainPass::detailPatchCount(const std::vector<PatchRun>& rings, int patchCount, int gridSize,
                                   const GridBlock& grid, double rangeM) {
     // A fragment lies on a triangle whose corners are tessellated points of its patch; the
     // triangle's chord can come nearer than its corners by (edge^2 / 8 range): metres for
@@ -37,8 +37,8 @@ int TerrainPass::detailPatchCount(const std::vector<PatchRing>& rings, int patch
     const glm::dvec3 camera(grid.cameraPositionAndRadius);
     const glm::dvec3 axis(grid.worldFromGridColumns[2]);  // grid z, towards the projection camera
     const double cameraAngle = std::atan2(glm::length(glm::cross(camera, axis)), glm::dot(camera, axis));
-    for (const PatchRing& ring : rings) {
-        const double beyond = angleOutsideVertexBox(ring.boxMin, ring.boxMax, gridSize, grid.exponent, grid.zShift);
+    for (const PatchRun& ring : rings) {
+        const double beyond = angleOutsideVertexBox(ring.pointMin, ring.pointMax, gridSize, grid.exponent, grid.zShift);
         // Every point beyond the ring's box is at least `beyond - cameraAngle` from the
         // camera's direction (seen from the centre), so at least |camera| sin of that away.
         const double apart = beyond - cameraAngle;

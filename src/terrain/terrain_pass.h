@@ -90,7 +90,7 @@ public:
     // How many patches, from the first in the NearFirst draw order, take the detail's program:
     // the rings up to the first beyond which no ground (at any height) comes within
     // `rangeM` of the camera; all of them in row order (no rings) or when none is that far.
-    static int detailPatchCount(const std::vector<PatchRing>& rings, int patchCount, int gridSize,
+    static int detailPatchCount(const std::vector<PatchRun>& rings, int patchCount, int gridSize,
                                 const GridBlock& grid, double rangeM);
     // The last prepared frame's count (0 when the detail is not drawn).
     int detailPatches() const { return detailPatches_; }
