@@ -1,13 +1,18 @@
 // Marks in the stencil (the top bit, src/render/renderer.cpp's drawSkyTemporalSplit) the pixels
-// whose ray never enters the cloud layer, in a frame where only the clock ran (the camera and the
-// sun stood): from under the layer, a ray whose surface point is under its bottom too (the chord
-// between two points inside the bottom sphere stays inside it); from above it, a ray whose closest
-// approach to the planet's centre, up to its surface point or into space, stays above its top. The
-// clock moved nothing such a ray sees (the wind moves only the clouds; the surface's own radiance is
-// this frame's, the sea's waves too), so render/sky_temporal.frag's still program rebuilds those
-// pixels, the general one the rest (the `ground` view with the explorer's clock on: the general
-// reconstruction over every pixel cost 124 ms, 81-90 with the meadow split off; docs/PERFORMANCE.md,
-// twenty-third). Discards the others; writes no colour.
+// whose ray meets no cloud, in a frame where only the clock ran (the camera and the sun stood): a ray
+// that never enters the cloud layer (from under it, one whose surface point is under its bottom too:
+// the chord between two points inside the bottom sphere stays inside it; from above it, one whose
+// closest approach to the planet's centre, up to its surface point or into space, stays above its
+// top), or one that crosses it only within the clear sky around the camera (the CPU's uClearAxisKm,
+// Renderer::clearAxisKm: within that distance of the vertical through the camera the weather's
+// coverage is 0, so no cloud lies there in any frame: the weather map stands, only the volume moves
+// with the wind, and coverage 0 leaves it no density). The clock moved nothing such a ray sees (the
+// wind moves only the clouds; the air in the layer is the atmosphere's lookups, which no cloud
+// shades; the surface's own radiance is this frame's, the sea's waves too), so
+// render/sky_temporal.frag's still program rebuilds those pixels, the general one the rest (the
+// `ground` view with the explorer's clock on: the general reconstruction over every pixel cost
+// 124 ms, 81-90 with the meadow split off; docs/PERFORMANCE.md, twenty-third; the clear sky over it
+// split off too: twenty-fifth). Discards the others; writes no colour.
 #include "common/frame_uniforms.glsl"
 #include "atmosphere/definitions.glsl"  // Length, Number: cloud_model.glsl's types
 #include "clouds/cloud_model.glsl"
@@ -18,22 +23,29 @@ layout(binding = UNIT_SURFACE_DISTANCE) uniform sampler2D surfaceDistance;
 
 // km: room for the float the points are formed in (the shell is widened by it).
 const float OFF_LAYER_MARGIN_KM = 0.01;
+// km from the vertical through the camera within which the layer holds no cloud (0: none).
+layout(location = 0) uniform float uClearAxisKm;
 
 // Whether the ray from `camera` (km from the planet centre) along `dir` to its surface point
-// (`distanceM` m away; 0: none, into space) has no part inside the cloud layer: the march's own
-// intervals (clouds/cloud_model.glsl's CloudLayerIntervals) on the shell widened by the margin, so
-// a pixel marked here is one the march would have found no layer for. From inside the layer every
-// ray has a part there.
-bool rayMissesTheLayer(vec3 camera, vec3 dir, float distanceM) {
+// (`distanceM` m away; 0: none, into space) meets no cloud: it has no part inside the cloud layer
+// (the march's own intervals, clouds/cloud_model.glsl's CloudLayerIntervals, on the shell widened by
+// the margin, so a pixel marked here is one the march would have found no layer for), or its parts
+// there end within uClearAxisKm of the camera's vertical (a ray leaves that axis as it goes, by
+// sin(its angle from the vertical) a km: its farthest point in the layer is its last). From inside the
+// layer every ray has a part there, and the renderer never splits the pixels.
+bool rayMeetsNoCloud(vec3 camera, vec3 dir, float distanceM) {
     float r = length(camera);
+    float mu = dot(camera, dir) / r;
     float toEnd = distanceM > 0.0 ? distanceM / M_PER_KM : 1.0e30;  // km
     vec2 first;
     vec2 second;
-    return CloudLayerIntervals(r, dot(camera, dir) / r, toEnd, clouds.bottomRadius - OFF_LAYER_MARGIN_KM,
-                               clouds.topRadius + OFF_LAYER_MARGIN_KM, first, second) == 0;
+    int crossings = CloudLayerIntervals(r, mu, toEnd, clouds.bottomRadius - OFF_LAYER_MARGIN_KM,
+                                        clouds.topRadius + OFF_LAYER_MARGIN_KM, first, second);
+    float last = crossings == 2 ? second.y : first.y;  // km along the ray
+    return crossings == 0 || last * length(cross(camera, dir)) / r < uClearAxisKm;  // (|cross| / r: the sine)
 }
 
 void main() {
     float distance = texelFetch(surfaceDistance, ivec2(gl_FragCoord.xy), 0).r;  // m, 0: none
-    if (!rayMissesTheLayer(cameraFromPlanetCentreKm(), worldRayFromNdc(vNdc), distance)) discard;
+    if (!rayMeetsNoCloud(cameraFromPlanetCentreKm(), worldRayFromNdc(vNdc), distance)) discard;
 }

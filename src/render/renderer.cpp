@@ -620,6 +620,7 @@ void Renderer::drawSkyTemporalSplit(const Scene& scene) {
     stencilMark(kOffLayer, kOffLayer);
     glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
     glUseProgram(skyOffLayer_.program().id());
+    glUniform1f(0, lastPrepare_.clearAxisKm);
     drawScissored(lastPrepare_.skyBound, targets_.size());
     glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
     // Modes: 1 STILL_FRAME, 2 STILL_FRAME_UNJITTERED (the jitter stood too); 0 the general program.
@@ -631,6 +632,16 @@ void Renderer::drawSkyTemporalSplit(const Scene& scene) {
     drawScissored(lastPrepare_.skyBound, targets_.size());
     stencilOff();
     glBindFramebuffer(GL_FRAMEBUFFER, targets_.hdrFramebuffer());
+}
+
+// How far from the vertical through the camera (its axis) the cloud layer surely holds no cloud, km
+// (0: nowhere): the clear sky map's angle a at the camera's direction (the weather's coverage is 0
+// within it, CloudResources::clearAngleAt), as the distance Rc = bottomRadius sin(a) from the axis
+// within which a point of the layer (at least bottomRadius from the centre) is less than a from it;
+// 10 m less, for the float the passes form their points in.
+double Renderer::clearAxisKm(const Camera& camera) const {
+    const double angle = clouds_.clearAngleAt(glm::normalize(camera.position));
+    return angle > 0.0 ? clouds_.block().bottomRadius * std::sin(angle) - 0.01 : 0.0;
 }
 
 // The reversed-Z depth nearer than which every ground point's way to the sun surely meets no cloud
@@ -645,7 +656,7 @@ void Renderer::drawSkyTemporalSplit(const Scene& scene) {
 float Renderer::clearSkyDepth(const Scene& scene, const Camera& camera, glm::ivec2 size) const {
     const double radiusKm = scene.planetRadiusM() / 1000.0;
     const glm::dvec3 up = glm::normalize(camera.position);
-    const double clearKm = clouds_.block().bottomRadius * std::sin(clouds_.clearAngleAt(up)) - 0.01;
+    const double clearKm = clearAxisKm(camera);
     const double sunElevation = std::asin(std::clamp(glm::dot(scene.sunDirection(), up), -1.0, 1.0));
     const double climbKm = clouds_.block().topRadius - (radiusKm - scene.terrain.ocean_depth_m / 1000.0);
     const auto fits = [&](double d) {
@@ -729,7 +740,9 @@ void Renderer::prepare(const Scene& scene, const Camera& camera, glm::ivec2 size
     report.cloudsUpdated = clouds_.update(scene, camera, size.y);
     clouds_.bind();
     report.cloudsOff = cloudsOffPrograms_ && clouds_.block().enabled == 0;
-    report.clearSkyDepth = clearSkyDepth(scene, camera, size);    report.cloudFarField = !report.cloudsOff && cloudFarFieldPrograms_ &&
+    report.clearSkyDepth = clearSkyDepth(scene, camera, size);
+    report.clearAxisKm = static_cast<float>(std::max(clearAxisKm(camera), 0.0));
+    report.cloudFarField = !report.cloudsOff && cloudFarFieldPrograms_ &&
                            clouds::seenInFarFieldOnly(clouds_.block(), glm::length(camera.position) / 1000.0,
                                                       highestGroundM / 1000.0);
     terrain_.prepare(scene, camera, *continents_->map(), camera.fovY_rad / size.y, double(size.x) / size.y);

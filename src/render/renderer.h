@@ -111,6 +111,9 @@ struct PrepareReport {
     // The reversed-Z depth nearer than which the ground's way to the sun surely meets no cloud
     // (render/sun_clear_of_clouds.frag; Renderer::clearSkyDepth); 1: no pixel.
     float clearSkyDepth = 1.0f;
+    // km from the vertical through the camera within which the cloud layer surely holds no cloud (the clear
+    // sky map's angle at the camera's direction, Renderer::clearAxisKm; 0: none): render/sky_off_layer.frag.
+    float clearAxisKm = 0.0f;
     bool historyValid = false;           // the previous frame may be reprojected
     bool reducedRate = false;            // the sky was marched at the reduced rate (sky march, temporal, refine)
     bool stillFrame = false;             // with a history, nothing moved since it (but the jitter, maybe): the reconstruction's
@@ -253,6 +256,7 @@ private:
     // Space around the air's bound where it does not fill the frame (render/sky_space.frag), in
     // up to four scissored bands: the sky passes then run scissored to the bound.
     float clearSkyDepth(const Scene& scene, const Camera& camera, glm::ivec2 size) const;
+    double clearAxisKm(const Camera& camera) const;
     void drawSurfaceLight(const Scene& scene);
     void drawSpaceAround(const ScreenRect& skyBound) const;
     void drawSkyTemporalSplit(const Scene& scene);
