@@ -332,7 +332,7 @@ TEST_F(Temporal, WithOnlyTheClockRunningTheRaysThatMeetNoCloudAreRebuiltAsInASti
     // the meadow of the `ground` view is the same, value for value, as with the clock stopped, and
     // so is the sky above the deck of the `deck` view (6 km up, the layer's top at 4 km; the general
     // program gave each traced pixel its newest sample alone: fewer of them are the same). So is a ray
-    // that crosses the layer only within the clear sky around the camera (render/sky_off_layer.frag:
+    // that crosses the layer only within the clear sky around the camera (render/sky_no_cloud.frag:
     // the `ground` view's sky but for a band at the horizon, whose rays reach past it; llvmpipe, 64x36:
     // 1044 of 1044 pixels within it, 54 of 98 past it, where the general program leaves many the same
     // by chance; a rule that marked them all would leave all 98). From within the layer (`clouds`,

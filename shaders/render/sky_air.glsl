@@ -11,12 +11,7 @@ layout(std430, binding = BUFFER_CLOUD_STATISTICS) buffer CloudStatistics {
     uint pixels;        // pixels marched through air
 } statistics;
 
-// Interleaved gradient noise (Jimenez 2014): a march start that differs in every pixel of a
-// 3x3 block, so the steps' banding turns into fine, evenly spread noise.
-float interleavedGradientNoise(ivec2 pixel) {
-    vec2 p = vec2(pixel) + 0.5;
-    return fract(52.9829189 * fract(dot(p, vec2(0.06711056, 0.00583715))));
-}
+#include "render/gradient_noise.glsl"
 
 // Where the clouds' opacity along a ray passes this, they are what the pixel shows: it is
 // reprojected from their distance and moves with the wind.

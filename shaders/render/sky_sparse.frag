@@ -14,6 +14,10 @@
 #include "render/sparse_pattern.glsl"
 #include "render/sky_history.glsl"
 
+// The stencil's test before the shader, where the pass splits its blocks by it
+// (src/render/renderer.cpp, drawSkyMarch): the march's statistics writes would otherwise hold it
+// back. (No depth is written, and nothing is discarded.)
+layout(early_fragment_tests) in;
 layout(binding = UNIT_SURFACE_RADIANCE) uniform sampler2D surfaceRadiance;
 layout(binding = UNIT_SURFACE_DISTANCE) uniform sampler2D surfaceDistance;
 

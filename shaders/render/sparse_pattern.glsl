@@ -3,6 +3,7 @@
 // every block, stepping through the block in a fixed permutation (Bayer's ordered-dither
 // order, so that any run of frames spreads its pixels over the block) and covering it in 16
 // frames. Include after common/frame_uniforms.glsl.
+#include "render/gradient_noise.glsl"
 const int SPARSE_BLOCK = 4;   // pixels per side of a block
 const int SPARSE_CYCLE = 16;  // frames until every pixel of a block has been traced
 

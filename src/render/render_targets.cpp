@@ -122,8 +122,10 @@ bool RenderTargets::resize(glm::ivec2 size) {
     sparseSky_.inscatter = makeTexture(GL_RGBA16F, sparseSky_.size, "sparse sky inscatter");
     sparseSky_.transmittance = makeTexture(GL_RGBA16F, sparseSky_.size, "sparse sky transmittance");
     sparseSky_.distanceError = makeTexture(GL_RG32F, sparseSky_.size, "sparse sky distance, history error");
+    sparseSky_.stencil = makeTexture(GL_STENCIL_INDEX8, sparseSky_.size, "sparse sky stencil");
     sparseSky_.framebuffer = makeFramebuffer({&sparseSky_.inscatter, &sparseSky_.transmittance, &sparseSky_.distanceError},
-                                             nullptr, "sparse sky T, S, distance, history error");
+                                             nullptr, "sparse sky T, S, distance, history error, stencil",
+                                             &sparseSky_.stencil);
     skyRefineList_ = makePixelList("sky refine list");
     seaReflectionList_ = makePixelList("sea reflection list");
     terrainShadowList_ = gl::Buffer();

@@ -98,6 +98,7 @@ struct SparseSky {
     gl::Texture inscatter{GL_TEXTURE_2D};      // RGBA16F: S, reprojection distance km
     gl::Texture transmittance{GL_TEXTURE_2D};  // RGBA16F: T, the clouds' opacity
     gl::Texture distanceError{GL_TEXTURE_2D};  // RG32F: its surface distance, m; the history's relative error there
+    gl::Texture stencil{GL_TEXTURE_2D};        // STENCIL_INDEX8: the blocks whose ray meets no cloud (Renderer::drawSkyMarch)
     gl::Framebuffer framebuffer;
 };
 

@@ -112,7 +112,7 @@ struct PrepareReport {
     // (render/sun_clear_of_clouds.frag; Renderer::clearSkyDepth); 1: no pixel.
     float clearSkyDepth = 1.0f;
     // km from the vertical through the camera within which the cloud layer surely holds no cloud (the clear
-    // sky map's angle at the camera's direction, Renderer::clearAxisKm; 0: none): render/sky_off_layer.frag.
+    // sky map's angle at the camera's direction, Renderer::clearAxisKm; 0: none): render/sky_no_cloud.frag.
     float clearAxisKm = 0.0f;
     bool historyValid = false;           // the previous frame may be reprojected
     bool reducedRate = false;            // the sky was marched at the reduced rate (sky march, temporal, refine)
@@ -126,7 +126,7 @@ struct PrepareReport {
                                          // built with CLOUD_FAR_FIELD_ONLY (clouds/cloud_block.h, seenInFarFieldOnly)
     bool clockOnlyOffLayer = false;      // only the clock ran (the camera and the sun stood, with a history), the
                                          // camera under or above the cloud layer: the sky's reconstruction takes the
-                                         // still program where a pixel's ray never enters it (render/sky_off_layer.frag)
+                                         // still program where a pixel's ray never enters it (render/sky_no_cloud.frag)
     bool cloudsOff = false;              // no cloud layer this frame (the cloud block's enabled 0): the programs built
                                          // with CLOUDS_OFF (clouds/cloud_density.glsl), and never the far field's
     ScreenRect skyBound;                 // the pixels the sky passes ran their programs on: those that can see the air
@@ -199,6 +199,9 @@ public:
     // Tests: the surface light's ground whose way to the sun surely meets no cloud lit by the program
     // without the clouds' shadow (render/sun_clear_of_clouds.frag; on by default), or all by the one.
     void setSunClearStencil(bool on) { sunClearStencil_ = on; }
+    // Whether the sky march splits off the blocks whose ray meets no cloud (Renderer::drawSkyMarch;
+    // tests: the same frame either way).
+    void setSkyMarchSplit(bool on) { skyMarchSplit_ = on; }
     // Whether the terrain leaves out the sea floor's dark depths where the sea covers them (on by
     // default), for the tests that compare the two.
     void setDarkFloorCulling(bool on) { darkFloorCulling_ = on; }
@@ -259,6 +262,7 @@ private:
     double clearAxisKm(const Camera& camera) const;
     void drawSurfaceLight(const Scene& scene);
     void drawSpaceAround(const ScreenRect& skyBound) const;
+    void drawSkyMarch(const Scene& scene);
     void drawSkyTemporalSplit(const Scene& scene);
     // Rebuilds the programs that read the atmosphere tables when the tables' sizes changed
     // (a starter refined to its target). Returns whether it did.
@@ -288,7 +292,10 @@ private:
     AtmosphereProgram skyTemporal_;  // mode STILL_FRAME: frames where nothing moved (but the jitter, maybe)
     AtmosphereProgram skyRefine_;    // mode STILL_FRAME: a still frame's pixels whose surface changed
     FullscreenPass skySpace_;  // space around the air's bound (render/sky_space.frag)
-    FullscreenPass skyOffLayer_;  // the rays that miss the cloud layer, into the stencil (render/sky_off_layer.frag)
+    // The rays that meet no cloud, into the stencil (render/sky_no_cloud.frag): the full frame's pixels, and the
+    // reduced-rate lattice's (SPARSE_LATTICE).
+    FullscreenPass skyNoCloud_;
+    FullscreenPass skySparseNoCloud_;
     FullscreenPass antialias_;
     FullscreenPass tonemap_;
     gl::Buffer frameUniforms_;
@@ -305,6 +312,7 @@ private:
     bool cloudsOffPrograms_ = true;
     bool seaFloorDarkStencil_ = true;
     bool sunClearStencil_ = true;
+    bool skyMarchSplit_ = true;
     bool darkFloorCulling_ = true;
     bool seaReflectionSamples_ = true;
     bool screenBounds_ = true;
