@@ -5,7 +5,8 @@
 // it only within the clear sky around the camera (the CPU's uClearAxisKm, Renderer::clearAxisKm:
 // within that distance of the vertical through the camera the weather's coverage is 0, so no cloud
 // lies there in any frame: the weather map stands, only the volume moves with the wind, and coverage
-// 0 leaves it no density). Discards the others; writes no colour. Two uses
+// 0 leaves it no density) or only within the clear sky around where it enters the layer (the clear
+// sky map there). Discards the others; writes no colour. Two uses
 // (src/render/renderer.cpp):
 //  - the sky march (SPARSE_LATTICE: a pixel of the reduced-rate lattice, the ray of its block's traced
 //    pixel, as render/sky_sparse.frag forms it): such a ray's march is one lookup of the air, exactly
@@ -24,6 +25,7 @@
 #include "atmosphere/definitions.glsl"  // Length, Number: cloud_model.glsl's types
 #include "clouds/cloud_model.glsl"
 #include "clouds/cloud_block.glsl"
+#include "clouds/cloud_density.glsl"  // CloudClearDistance
 #ifdef SPARSE_LATTICE
 #include "render/sparse_pattern.glsl"
 #endif
@@ -38,12 +40,22 @@ const float NO_CLOUD_MARGIN_KM = 0.01;
 // km from the vertical through the camera within which the layer holds no cloud (0: none).
 layout(location = 0) uniform float uClearAxisKm;
 
+// Whether the part [from, to] (km) of the ray from `camera` along `dir` lies in the clear sky around
+// where it enters the layer: the clear sky map's chord there (clouds/cloud_density.glsl's
+// CloudClearDistance: no cloud within it, along any straight way through the layer) is longer than the
+// part. (Its directions run along one great circle away from the entry's, so none is farther from it
+// than the part's end.)
+bool partInClearSky(vec3 camera, vec3 dir, vec2 part) {
+    return part.y - part.x < CloudClearDistance(normalize(camera + dir * part.x), 0.0) - NO_CLOUD_MARGIN_KM;
+}
+
 // Whether the ray from `camera` (km from the planet centre) along `dir` to its surface point
 // (`distanceM` m away; 0: none, into space) meets no cloud: it has no part inside the cloud layer
 // (the march's own intervals, clouds/cloud_model.glsl's CloudLayerIntervals, on the shell widened by
-// the margin, so a pixel marked here is one the march would have found no layer for), or its parts
+// the margin, so a pixel marked here is one the march would have found no layer for); or its parts
 // there end within uClearAxisKm of the camera's vertical (a ray leaves that axis as it goes, by
-// sin(its angle from the vertical) a km: its farthest point in the layer is its last).
+// sin(its angle from the vertical) a km: its farthest point in the layer is its last); or each part
+// lies in the clear sky around where it enters (from orbit, the clear sea between the clouds).
 bool rayMeetsNoCloud(vec3 camera, vec3 dir, float distanceM) {
     float r = length(camera);
     float toEnd = distanceM > 0.0 ? distanceM / M_PER_KM : 1.0e30;  // km
@@ -52,7 +64,8 @@ bool rayMeetsNoCloud(vec3 camera, vec3 dir, float distanceM) {
     int crossings = CloudLayerIntervals(r, dot(camera, dir) / r, toEnd, clouds.bottomRadius - NO_CLOUD_MARGIN_KM,
                                         clouds.topRadius + NO_CLOUD_MARGIN_KM, first, second);
     float last = crossings == 2 ? second.y : first.y;  // km along the ray
-    return crossings == 0 || last * length(cross(camera, dir)) / r < uClearAxisKm;  // (|cross| / r: the sine)
+    return crossings == 0 || last * length(cross(camera, dir)) / r < uClearAxisKm ||  // (|cross| / r: the sine)
+           (partInClearSky(camera, dir, first) && (crossings < 2 || partInClearSky(camera, dir, second)));
 }
 
 void main() {
