@@ -11,14 +11,14 @@
 //  - the sky march (SPARSE_LATTICE: a pixel of the reduced-rate lattice, the ray of its block's traced
 //    pixel, as render/sky_sparse.frag forms it): such a ray's march is one lookup of the air, exactly
 //    what the program without the clouds' code (CLOUDS_OFF) computes, which marches those pixels
-//    (drawSkyMarchSplit; a software renderer runs the clouds' code for every pixel, masked: the
+//    (Renderer::drawSkyMarch; a software renderer runs the clouds' code for every pixel, masked: the
 //    `ground` view's march, no cloud in sight, 36 -> 5 ms with none of it; docs/PERFORMANCE.md,
 //    twenty-fifth);
 //  - the reconstruction in a frame where only the clock ran (the camera and the sun stood): the clock
 //    moved nothing such a ray sees (the wind moves only the clouds; the air in the layer is the
 //    atmosphere's lookups, which no cloud shades; the surface's own radiance is this frame's, the sea's
 //    waves too), so render/sky_temporal.frag's still program rebuilds those pixels, the general one the
-//    rest (drawSkyTemporalSplit; the `ground` view with the explorer's clock on: the general
+//    rest (Renderer::drawSkyTemporalSplit; the `ground` view with the explorer's clock on: the general
 //    reconstruction over every pixel cost 124 ms, 81-90 with the meadow split off, twenty-third; its
 //    clear sky split off too, 95 -> 47 ms, twenty-fifth).
 #include "common/frame_uniforms.glsl"

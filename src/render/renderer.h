@@ -126,7 +126,7 @@ struct PrepareReport {
                                          // built with CLOUD_FAR_FIELD_ONLY (clouds/cloud_block.h, seenInFarFieldOnly)
     bool clockOnlyOffLayer = false;      // only the clock ran (the camera and the sun stood, with a history), the
                                          // camera under or above the cloud layer: the sky's reconstruction takes the
-                                         // still program where a pixel's ray never enters it (render/sky_no_cloud.frag)
+                                         // still program where a pixel's ray meets no cloud (render/sky_no_cloud.frag)
     bool cloudsOff = false;              // no cloud layer this frame (the cloud block's enabled 0): the programs built
                                          // with CLOUDS_OFF (clouds/cloud_density.glsl), and never the far field's
     ScreenRect skyBound;                 // the pixels the sky passes ran their programs on: those that can see the air
