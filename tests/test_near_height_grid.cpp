@@ -118,3 +118,55 @@ TEST_F(NearHeightGridTest, EvaluatedOnlyWhenTheGridMovesOrTheTerrainChanges) {
     renderer->render(s.scene, s.camera, size);
     EXPECT_EQ(grid->evaluations(), first + 2) << "the terrain changed";
 }
+
+// A camera flying low evaluates the next grid a slice of rows a frame once it is kStartM from the origin
+// (the whole grid at once cost a 55 ms frame on llvmpipe at 1280x720, every 500 m), and the grid it completes
+// is the one evaluated at once at its origin, value for value.
+TEST_F(NearHeightGridTest, AMovingCameraEvaluatesTheNextGridInSlices) {
+    using terrain::NearHeightGrid;
+    const glm::ivec2 size{96, 54};
+    Session s = still("ground");
+    renderer->terrain().setNearHeightGrid(true);
+    for (int i = 0; i < 2; ++i) renderer->render(s.scene, s.camera, size);
+    const NearHeightGrid* grid = renderer->terrain().nearHeightGrid();
+    ASSERT_NE(grid, nullptr);
+    const int first = grid->evaluations();
+    const glm::dvec3 up = glm::normalize(s.camera.position);
+    const glm::dvec3 east = glm::normalize(glm::cross(glm::dvec3(0.0, 0.0, 1.0), up));
+    // 25 m a frame (750 m/s at 30 frames a second): a grid in kSlices frames, before the camera leaves the roam.
+    int most = 0, framesWithRows = 0;
+    glm::dvec3 origin = grid->origin();
+    for (int frame = 0; frame < 48; ++frame) {
+        s.camera.position += 25.0 * east;
+        renderer->render(s.scene, s.camera, size);
+        most = std::max(most, grid->lastRowsFormed());
+        framesWithRows += grid->lastRowsFormed() > 0 ? 1 : 0;
+        const double fromOrigin = glm::length(glm::normalize(s.camera.position) * glm::length(origin) - origin);
+        EXPECT_LE(fromOrigin, NearHeightGrid::kRoamM + 1.0) << "frame " << frame << ": the grid read is too far";
+        origin = grid->origin();
+    }
+    std::printf("1200 m at 25 m a frame: %d grids evaluated, rows in %d of 48 frames, at most %d a frame\n",
+                grid->evaluations() - first, framesWithRows, most);
+    EXPECT_GE(grid->evaluations() - first, 2);
+    EXPECT_LE(most, NearHeightGrid::kPoints / NearHeightGrid::kSlices);
+
+    // The grid read now, against one evaluated at once at its origin (a camera standing over it).
+    std::vector<float> sliced(static_cast<std::size_t>(NearHeightGrid::kPoints) * NearHeightGrid::kPoints * 4);
+    glGetTextureImage(grid->texture().id(), 0, GL_RGBA, GL_FLOAT, static_cast<GLsizei>(sliced.size() * sizeof(float)),
+                      sliced.data());
+    Renderer whole(test::repoPaths().shaders(), atmosphere::TableSizes::reduced());
+    whole.terrain().setNearHeightGrid(true);
+    Session over = s;
+    over.camera.position = glm::normalize(grid->origin()) * glm::length(s.camera.position);
+    whole.render(over.scene, over.camera, size);
+    const NearHeightGrid* once = whole.terrain().nearHeightGrid();
+    ASSERT_NE(once, nullptr);
+    EXPECT_LT(glm::length(once->origin() - grid->origin()), 1.0e-3);
+    std::vector<float> atOnce(sliced.size());
+    glGetTextureImage(once->texture().id(), 0, GL_RGBA, GL_FLOAT, static_cast<GLsizei>(atOnce.size() * sizeof(float)),
+                      atOnce.data());
+    double worstHeight = 0.0;
+    for (std::size_t i = 0; i < sliced.size(); i += 4) worstHeight = std::max(worstHeight, double(std::abs(sliced[i] - atOnce[i])));
+    std::printf("the sliced grid against the grid at once: heights %.2g m apart at most\n", worstHeight);
+    EXPECT_LT(worstHeight, 1.0e-3);
+}
