@@ -223,7 +223,7 @@ TEST_F(SeaAndLand, TheDarkDepthsOfTheSeaFloorAreNotLitAndThatChangesNoPixel) {
 }
 
 // Issue 15: the surface light marks the sea floor's dark depths in a stencil first (render/
-// sea_floor_dark.frag) and runs its lighting program only on the rest, its dark depths' program
+// surface_marks.frag) and runs its lighting program only on the rest, its dark depths' program
 // (SEA_FLOOR_DARK: their distance, no light) only on them, so that a software renderer no longer
 // shades the whole sea floor masked (`orbit` 1280x720: 30 -> 13 ms, `sea` 71 -> 32;
 // docs/PERFORMANCE.md, sixteenth). Where the sea is drawn over them from above (the camera above it)

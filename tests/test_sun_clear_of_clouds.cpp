@@ -1,5 +1,5 @@
 // Issue 15: the surface light's ground whose way to the sun surely meets no cloud is lit by the
-// program without the clouds' shadow (render/sun_clear_of_clouds.frag marks it in the stencil;
+// program without the clouds' shadow (render/surface_marks.frag marks it in the stencil;
 // src/render/renderer.cpp), since a software renderer ran the shadow's code for every pixel, masked,
 // though the clear sky check took no sample. The same decision as the shadow's own
 // (CloudSunWaySurelyClear against CloudDensityPathToSun): the pictures the same value for value, under
@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstdio>
 #include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -44,6 +45,47 @@ TEST_F(SunClearOfClouds, TheProgramWithoutTheCloudsShadowLightsTheClearGroundThe
         EXPECT_EQ(differing, 0u) << view;
     }
     renderer->setSunClearStencil(true);
+}
+
+// The marks themselves, each fragment's own stencil value from one pass (render/surface_marks.frag): at
+// `ground` the meadow is the clear sun's (0x40) and the sky above it, with no ground, the dark depths' (1); at
+// `sea` (no clear sky at the camera) the dark depths' (the whole floor in view lies deep) and nothing of the
+// clear sun's.
+TEST_F(SunClearOfClouds, OnePassMarksTheDarkDepthsAndTheClearSunWithTheirOwnValues) {
+    auto renderer = std::make_unique<Renderer>(test::repoPaths().shaders(), atmosphere::TableSizes::reduced());
+    const glm::ivec2 size{160, 90};
+    for (const std::string view : {"ground", "sea"}) {
+        Session s = loadSession(test::repoPaths(), "earth", view);
+        s.scene.render.temporal = false;
+        renderer->render(s.scene, s.camera, size);
+        std::vector<std::uint8_t> marks(static_cast<std::size_t>(size.x) * size.y);
+        glPixelStorei(GL_PACK_ALIGNMENT, 1);
+        glGetTextureImage(renderer->targets().surfaceStencil().id(), 0, GL_STENCIL_INDEX, GL_UNSIGNED_BYTE,
+                          static_cast<GLsizei>(marks.size()), marks.data());
+        const ImageRGBAF distance = readTextureRGBAF(renderer->targets().surfaceDistance(), size.x, size.y);
+        std::size_t ground = 0, clear = 0, dark = 0, other = 0, darkOnGround = 0;
+        for (std::size_t i = 0; i < marks.size(); ++i) {
+            const int y = static_cast<int>(i) / size.x, x = static_cast<int>(i) % size.x;
+            const bool hasGround = test::pixelAt(distance, x, size.y - 1 - y)[0] > 0.0f;  // (the stencil's rows from the bottom)
+            ground += hasGround;
+            clear += marks[i] == 0x40;
+            dark += marks[i] == 1;
+            darkOnGround += marks[i] == 1 && hasGround;
+            other += marks[i] != 0 && marks[i] != 1 && marks[i] != 0x40;
+        }
+        std::printf("%-6s %zu ground pixels: %zu marked clear of the clouds' shadow, %zu dark (%zu with ground), %zu "
+                    "other\n", view.c_str(), ground, clear, dark, darkOnGround, other);
+        EXPECT_EQ(other, 0u) << view;
+        if (view == "ground") {
+            // (all but the farthest hills at the horizon, past the clear sky's reach: 7183 of 7184 at 160x90)
+            EXPECT_GE(clear, ground * 99 / 100) << "the meadow, nearer than the clear sky's reach";
+            EXPECT_GT(dark, marks.size() / 4) << "the sky over the meadow: no ground";
+            EXPECT_EQ(darkOnGround, 0u);
+        } else {
+            EXPECT_EQ(clear, 0u);
+            EXPECT_GT(dark, 0u);
+        }
+    }
 }
 
 // The meadow under a lower sun, whose ways to the sun run farther through the layer: the depth within which

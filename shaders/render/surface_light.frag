@@ -25,7 +25,7 @@
 // 1: the terrain's shadow from the sparse samples where they agree (render/terrain_shadow.frag);
 // 0: marched at every pixel (tests compare the two).
 #define TERRAIN_SHADOW_FROM_SAMPLES 1
-// 1: the program for the sea floor's dark depths alone (the pixels render/sea_floor_dark.frag
+// 1: the program for the sea floor's dark depths alone (the pixels render/surface_marks.frag
 // marked in the stencil, src/render/renderer.cpp): their distance and no light, what this
 // program's test gives them below, while the lighting program runs only on the rest, kept off
 // them by the stencil before it runs, where its `if` would not (a software renderer runs the body
@@ -33,7 +33,7 @@
 #ifndef SEA_FLOOR_DARK
 #define SEA_FLOOR_DARK 0
 #endif
-// 1: the program for the pixels render/sun_clear_of_clouds.frag marked, whose way to the sun surely
+// 1: the program for the pixels render/surface_marks.frag marked, whose way to the sun surely
 // meets no cloud: the clouds' shadow is 1 there, and its code is left out.
 #ifndef SUN_CLEAR_OF_CLOUDS
 #define SUN_CLEAR_OF_CLOUDS 0
@@ -136,7 +136,7 @@ void main() {
     ivec2 pixel = ivec2(gl_FragCoord.xy);
     SurfacePoint surface;
     // Nothing drawn: the sky pass shows the sky here (in the SEA_FLOOR_DARK program too: the pixels
-    // with no ground are marked with the dark depths, render/sea_floor_dark.frag).
+    // with no ground are marked with the dark depths, render/surface_marks.frag).
     if (!surfacePointAt(pixel, surface)) discard;
     outSurfaceDistance = surface.rayDistance;
     outSurfaceRadiance = vec4(0.0, 0.0, 0.0, 1.0);

@@ -46,6 +46,6 @@ bool surfacePointAt(ivec2 pixel, out SurfacePoint s) {
 // How far below the sea surface the point lies, m (< 0: above it): the camera's depth below the
 // sea plus its altitude is the sea level (both formed in double; a dry world's depth is -1e30),
 // less the ground's height.
-// Of a ground height (the G-buffer normal's w), m: render/sea_floor_dark.frag's test, the same expression.
+// Of a ground height (the G-buffer normal's w), m: render/surface_marks.frag's test, the same expression.
 float depthBelowSeaAt(float groundHeightM) { return frame.cameraDepthBelowSea + frame.cameraAltitude - groundHeightM; }
 float depthBelowSea(SurfacePoint s) { return depthBelowSeaAt(s.normalAndHeight.w); }

@@ -112,6 +112,8 @@ public:
     const GBuffer& gbuffer() const { return gbuffer_; }
     const gl::Texture& surfaceRadiance() const { return surfaceRadiance_; }
     const gl::Texture& surfaceDistance() const { return surfaceDistance_; }
+    // The surface light's stencil (render/surface_marks.frag's marks; tests read it).
+    const gl::Texture& surfaceStencil() const { return surfaceStencil_; }
     const gl::Texture& hdr() const { return hdr_; }
     const gl::Texture& ldr() const { return ldr_; }
     const gl::Texture& skyMedium() const { return skyMedium_; }

@@ -146,11 +146,10 @@ Renderer::Renderer(const std::filesystem::path& shaderRoot, const atmosphere::Ta
       continents_(continents ? std::move(continents) : std::make_shared<terrain::Continents>()),
       terrain_(sources_),
       terrainShadow_(withAtmosphere(sources_, programTables_), "terrain shadow", "render/terrain_shadow.frag"),
-      seaFloorDark_(withAtmosphere(sources_, programTables_), "sea floor dark", "render/sea_floor_dark.frag"),
+      surfaceMarks_(withAtmosphere(sources_, programTables_), "surface light marks", "render/surface_marks.frag"),
       surfaceLight_(sources_, programTables_,
                     gl::ProgramDesc{"surface light", {"common/fullscreen.vert", "render/surface_light.frag"}},
                     {"SEA_FLOOR_DARK", "SUN_CLEAR_OF_CLOUDS"}),
-      sunClearOfClouds_(withAtmosphere(sources_, programTables_), "sun clear of clouds", "render/sun_clear_of_clouds.frag"),
       ocean_(sources_, programTables_),
       seaReflection_(sources_, programTables_,
                      gl::ProgramDesc{"sea reflection", {"common/fullscreen.vert", "ocean/sea_reflection.frag"}},
@@ -293,8 +292,7 @@ std::vector<Renderer::Pass> Renderer::makePasses() {
                       },
                       [this] {
                           std::vector<gl::HotProgram*> p = builtVariants({&surfaceLight_, &terrainShadowListed_});
-                          p.push_back(&seaFloorDark_.program());
-                          p.push_back(&sunClearOfClouds_.program());
+                          p.push_back(&surfaceMarks_.program());
                           return p;
                       }});
     passes.push_back({{"ocean", {R::GBuffer, R::TerrainShadow, R::SurfaceRadiance}, {R::SurfaceRadiance, R::GBuffer, R::SeaReflection}},
@@ -563,39 +561,33 @@ void Renderer::drawSurfaceLight(const Scene& scene) {
     // (The 4D table's program: it reads no scattering table, only the clouds.)
     AtmosphereVariant variant = variantFor(scene);
     variant.elekTable = false;
-    // The sea floor's dark depths marked in the stencil first (render/sea_floor_dark.frag): the lighting
-    // programs run on the rest, the dark depths' program (SEA_FLOOR_DARK: their distance, no light) on them.
+    // The sea floor's dark depths and the pixels with no ground (1), and the ground whose way to the sun
+    // surely meets no cloud (kSunClearOfClouds), marked in the stencil first, each fragment with its own
+    // value (render/surface_marks.frag): the lighting programs run on the rest, the dark depths' program
+    // (SEA_FLOOR_DARK: their distance, no light) on the first, the program without the clouds' shadow
+    // (SUN_CLEAR_OF_CLOUDS) on the second.
     const bool darkApart = seaFloorDarkStencil_ && scene.terrain.ocean;
-    if (darkApart) {
-        stencilMark(1);
-        glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);  // the stencil alone
-        glUseProgram(seaFloorDark_.program().id());
-        drawScissored(lastPrepare_.groundBound, targets_.size());
-        glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-        // Their own program (their distance, no light) only where the sea is not drawn over them from
-        // above: there the ocean writes both at every such pixel (the sea's distance, and the light over
-        // a floor that sends none back, which the cleared target holds too). From orbit most of the marked
-        // pixels have no ground at all (the terrain left the dark depths out), where the program ran its
-        // whole body to discard: 9-10 ms at 1280x720.
-        if (lastPrepare_.underWater) {
-            stencilTest(1);
-            glUseProgram(surfaceLight_.get(variant, 1).id());
-            drawScissored(lastPrepare_.groundBound, targets_.size());
-        }
-    }
-    // The ground whose way to the sun surely meets no cloud marked too (render/sun_clear_of_clouds.frag;
-    // not the dark depths, whose low bits are set): the program without the clouds' shadow lights it.
     const bool clearApart = sunClearStencil_ && !variant.cloudsOff && lastPrepare_.clearSkyDepth < 1.0f;
-    if (clearApart) {
-        glEnable(GL_STENCIL_TEST);
-        glStencilMask(kSunClearOfClouds);
-        glStencilFunc(GL_EQUAL, kSunClearOfClouds, 0xFF & ~kSunClearOfClouds);  // where the rest is 0
-        glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
-        glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
-        glUseProgram(sunClearOfClouds_.program().id());
-        glUniform1f(0, lastPrepare_.clearSkyDepth);
+    if (darkApart || clearApart) {
+        stencilMark(0);  // (the value is the fragment's)
+        glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);  // the stencil alone
+        glUseProgram(surfaceMarks_.program().id());
+        glUniform1f(0, clearApart ? lastPrepare_.clearSkyDepth : 1.0f);  // (1: no pixel)
+        glUniform1i(1, darkApart ? 1 : 0);
         drawScissored(lastPrepare_.groundBound, targets_.size());
         glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    }
+    // The dark depths' own program (their distance, no light) only where the sea is not drawn over them
+    // from above: there the ocean writes both at every such pixel (the sea's distance, and the light over
+    // a floor that sends none back, which the cleared target holds too). From orbit most of the marked
+    // pixels have no ground at all (the terrain left the dark depths out), where the program ran its
+    // whole body to discard: 9-10 ms at 1280x720.
+    if (darkApart && lastPrepare_.underWater) {
+        stencilTest(1);
+        glUseProgram(surfaceLight_.get(variant, 1).id());
+        drawScissored(lastPrepare_.groundBound, targets_.size());
+    }
+    if (clearApart) {
         stencilTest(kSunClearOfClouds);
         glUseProgram(surfaceLight_.get(variant, 2).id());
         drawScissored(lastPrepare_.groundBound, targets_.size());
@@ -682,7 +674,7 @@ double Renderer::clearAxisKm(const Camera& camera) const {
 }
 
 // The reversed-Z depth nearer than which every ground point's way to the sun surely meets no cloud
-// (render/sun_clear_of_clouds.frag), or 1 (none): the clear sky around the camera's direction (the
+// (render/surface_marks.frag), or 1 (none): the clear sky around the camera's direction (the
 // clear sky map's angle, within which the weather's coverage is 0) reaches Rc from the camera's axis
 // in the layer. A ground point within D of the camera is within D of that axis; its way to the sun,
 // from an altitude of at least the lowest sea floor up to the layer's top, is at most
@@ -873,10 +865,8 @@ bool Renderer::matchAtmosphereTables() {
     const auto started = std::chrono::steady_clock::now();
     programTables_ = sizes;
     terrainShadow_.program().setSources(withAtmosphere(sources_, sizes));
-    seaFloorDark_.program().setSources(withAtmosphere(sources_, sizes));
-    sunClearOfClouds_.program().setSources(withAtmosphere(sources_, sizes));
-    std::vector<gl::HotProgram*> rebuilt{&terrainShadow_.program(), &seaFloorDark_.program(),
-                                         &sunClearOfClouds_.program()};
+    surfaceMarks_.program().setSources(withAtmosphere(sources_, sizes));
+    std::vector<gl::HotProgram*> rebuilt{&terrainShadow_.program(), &surfaceMarks_.program()};
     std::vector<AtmosphereProgram*> withTables = ocean_.atmospherePrograms();
     for (AtmosphereProgram* p : {&surfaceLight_, &terrainShadowMarches_, &terrainShadowListed_, &seaReflection_,
                                  &seaReflectionListed_, &terrainReflection_, &sky_, &skySparse_, &skyTemporal_, &skyRefine_})

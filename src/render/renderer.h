@@ -109,7 +109,7 @@ struct PrepareReport {
     bool continentsUpdated = false;      // the continents map was loaded or baked, and uploaded
     bool cloudsUpdated = false;          // the cloud volume or weather map was made and uploaded
     // The reversed-Z depth nearer than which the ground's way to the sun surely meets no cloud
-    // (render/sun_clear_of_clouds.frag; Renderer::clearSkyDepth); 1: no pixel.
+    // (render/surface_marks.frag; Renderer::clearSkyDepth); 1: no pixel.
     float clearSkyDepth = 1.0f;
     // km from the vertical through the camera within which the cloud layer surely holds no cloud (the clear
     // sky map's angle at the camera's direction, Renderer::clearAxisKm; 0: none): render/sky_no_cloud.frag.
@@ -197,7 +197,7 @@ public:
     // them by the stencil (on by default), for the tests that compare the two.
     void setSeaFloorDarkStencil(bool on) { seaFloorDarkStencil_ = on; }
     // Tests: the surface light's ground whose way to the sun surely meets no cloud lit by the program
-    // without the clouds' shadow (render/sun_clear_of_clouds.frag; on by default), or all by the one.
+    // without the clouds' shadow (render/surface_marks.frag; on by default), or all by the one.
     void setSunClearStencil(bool on) { sunClearStencil_ = on; }
     // Whether the sky march splits off the blocks whose ray meets no cloud (Renderer::drawSkyMarch;
     // tests: the same frame either way).
@@ -276,9 +276,10 @@ private:
     clouds::CloudResources clouds_;
     TerrainPass terrain_;
     FullscreenPass terrainShadow_;
-    FullscreenPass seaFloorDark_;  // the surface light's stencil of the sea floor's dark depths (render/sea_floor_dark.frag)
+    // The surface light's stencil: the sea floor's dark depths and the ground clear of the clouds' shadow
+    // (render/surface_marks.frag).
+    FullscreenPass surfaceMarks_;
     AtmosphereProgram surfaceLight_;
-    FullscreenPass sunClearOfClouds_;  // the surface light's stencil of the ground clear of clouds' shadow (render/sun_clear_of_clouds.frag)
     // Its bit in the surface light's stencil, above the dark depths' value.
     static constexpr GLuint kSunClearOfClouds = 0x40;
     OceanPass ocean_;
