@@ -91,6 +91,11 @@ TEST(ShadersOffline, EveryStageValidatesWithGlslang) {
             for (std::size_t i = 0; i < n; ++i) variants.push_back(variants[i] + "#define CLOUD_FAR_FIELD_ONLY 1\n");
             for (std::size_t i = 0; i < n; ++i) variants.push_back(variants[i] + "#define CLOUDS_OFF 1\n");
         }
+        // The surface light's marks in one pass, where the GL has ARB_shader_stencil_export (STENCIL_EXPORT 1).
+        if (expanded.text.find("#if STENCIL_EXPORT") != std::string::npos) {
+            const std::size_t n = variants.size();
+            for (std::size_t i = 0; i < n; ++i) variants.push_back(variants[i] + "#define STENCIL_EXPORT 1\n");
+        }
         // The reduced-rate lattice's marks of the rays that meet no cloud (src/render/renderer.cpp: SPARSE_LATTICE).
         if (expanded.text.find("#ifdef SPARSE_LATTICE") != std::string::npos) {
             const std::size_t n = variants.size();

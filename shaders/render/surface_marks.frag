@@ -20,10 +20,16 @@
 //    transmittance is then exactly 1). Here that is one depth compare, since a per-pixel test of the
 //    point's own way cost more than the shadow's code it spared (surface point, the layer's intervals:
 //    11 ms at `ground`, 1280x720 on llvmpipe).
-// The value is the fragment's own (ARB_shader_stencil_export, which Mesa's llvmpipe has): the two marks were
-// two full-screen passes, 7.5 and 5 ms at `ground` (the cost is the pass, not its two texel reads). Discards
-// the pixels it leaves unmarked; writes no colour.
+// Built with STENCIL_EXPORT 1 where the GL has ARB_shader_stencil_export (Mesa's llvmpipe does): one pass, the
+// value the fragment's own (as two full-screen passes the marks cost 7.5 and 5 ms at `ground`: the cost is the
+// pass, not its two texel reads). Without it, a pass per mark: uOnlyMark names the one this pass keeps, and the
+// renderer's stencil reference is its value. Discards the pixels it leaves unmarked; writes no colour.
+#ifndef STENCIL_EXPORT
+#define STENCIL_EXPORT 0
+#endif
+#if STENCIL_EXPORT
 #extension GL_ARB_shader_stencil_export : require
+#endif
 #include "common/frame_uniforms.glsl"
 #include "common/gbuffer.glsl"
 #include "atmosphere/interface.glsl"
@@ -37,6 +43,7 @@ layout(binding = UNIT_GBUFFER_DEPTH) uniform sampler2D gDepth;
 // no depth is above it), and whether the dark depths and the pixels with no ground are marked (1) or not.
 layout(location = 0) uniform float uClearDepth;
 layout(location = 1) uniform int uMarkDark;
+layout(location = 2) uniform int uOnlyMark;  // without STENCIL_EXPORT: the mark this pass keeps
 const int DARK_MARK = 1;
 const int SUN_CLEAR_MARK = 0x40;
 
@@ -44,11 +51,11 @@ void main() {
     ivec2 pixel = ivec2(gl_FragCoord.xy);
     float depth = texelFetch(gDepth, pixel, 0).r;
     bool dark = depth <= 0.0 || depthBelowSeaAt(texelFetch(gNormal, pixel, 0).w) >= SEA_FLOOR_DARK_DEPTH_M;
-    if (uMarkDark != 0 && dark) {
-        gl_FragStencilRefARB = DARK_MARK;
-    } else if (depth > uClearDepth) {
-        gl_FragStencilRefARB = SUN_CLEAR_MARK;
-    } else {
-        discard;
-    }
+    int mark = uMarkDark != 0 && dark ? DARK_MARK : depth > uClearDepth ? SUN_CLEAR_MARK : 0;
+#if STENCIL_EXPORT
+    if (mark == 0) discard;
+    gl_FragStencilRefARB = mark;
+#else
+    if (mark != uOnlyMark) discard;
+#endif
 }

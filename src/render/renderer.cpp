@@ -45,6 +45,12 @@ std::string historyKey(const Scene& scene) {
 // The sky passes' program variant with the terrain's shadows in the air (atmosphere_program.h).
 bool lightShafts(const Scene& s) { return s.terrain.light_shafts && s.terrain.shadows; }
 
+// The surface light's marks (render/surface_marks.frag) in one pass where the GL lets a fragment give its own
+// stencil value (STENCIL_EXPORT), else a pass per mark.
+gl::ShaderSources surfaceMarksSources(const gl::ShaderSources& sources, bool stencilExport) {
+    return {sources.root, sources.preamble + (stencilExport ? "#define STENCIL_EXPORT 1\n" : "")};
+}
+
 // One invocation of the bound compute program per pixel of `list` (render/pixel_list.glsl),
 // dispatched indirectly with the group count its listing left (none when it listed none); what
 // the invocations stored is then visible to texture reads, draws and image loads.
@@ -146,7 +152,9 @@ Renderer::Renderer(const std::filesystem::path& shaderRoot, const atmosphere::Ta
       continents_(continents ? std::move(continents) : std::make_shared<terrain::Continents>()),
       terrain_(sources_),
       terrainShadow_(withAtmosphere(sources_, programTables_), "terrain shadow", "render/terrain_shadow.frag"),
-      surfaceMarks_(withAtmosphere(sources_, programTables_), "surface light marks", "render/surface_marks.frag"),
+      stencilExport_(epoxy_has_gl_extension("GL_ARB_shader_stencil_export")),
+      surfaceMarks_(withAtmosphere(surfaceMarksSources(sources_, stencilExport_), programTables_), "surface light marks",
+                    "render/surface_marks.frag"),
       surfaceLight_(sources_, programTables_,
                     gl::ProgramDesc{"surface light", {"common/fullscreen.vert", "render/surface_light.frag"}},
                     {"SEA_FLOOR_DARK", "SUN_CLEAR_OF_CLOUDS"}),
@@ -569,12 +577,21 @@ void Renderer::drawSurfaceLight(const Scene& scene) {
     const bool darkApart = seaFloorDarkStencil_ && scene.terrain.ocean;
     const bool clearApart = sunClearStencil_ && !variant.cloudsOff && lastPrepare_.clearSkyDepth < 1.0f;
     if (darkApart || clearApart) {
-        stencilMark(0);  // (the value is the fragment's)
         glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);  // the stencil alone
         glUseProgram(surfaceMarks_.program().id());
         glUniform1f(0, clearApart ? lastPrepare_.clearSkyDepth : 1.0f);  // (1: no pixel)
         glUniform1i(1, darkApart ? 1 : 0);
-        drawScissored(lastPrepare_.groundBound, targets_.size());
+        if (stencilExport_) {
+            stencilMark(0);  // (the value is the fragment's)
+            drawScissored(lastPrepare_.groundBound, targets_.size());
+        } else {  // a pass per mark, its value the reference
+            for (const GLint mark : {GLint{1}, GLint{kSunClearOfClouds}}) {
+                if (mark == 1 ? !darkApart : !clearApart) continue;
+                stencilMark(mark);
+                glUniform1i(2, mark);
+                drawScissored(lastPrepare_.groundBound, targets_.size());
+            }
+        }
         glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
     }
     // The dark depths' own program (their distance, no light) only where the sea is not drawn over them
@@ -841,6 +858,13 @@ void Renderer::tonemapRadiance(const ImageRGBAF& radiance) {
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
 }
 
+void Renderer::setStencilExport(bool on) {
+    stencilExport_ = on && epoxy_has_gl_extension("GL_ARB_shader_stencil_export");
+    surfaceMarks_.program().setSources(withAtmosphere(surfaceMarksSources(sources_, stencilExport_), programTables_));
+    surfaceMarks_.program().reloadIfChanged(true);
+    if (!surfaceMarks_.program().error().empty()) throw std::runtime_error(surfaceMarks_.program().error());
+}
+
 bool Renderer::stillProgram() const { return lastPrepare_.stillFrame && stillFrameProgram_; }
 
 bool Renderer::seaReflectionRuns(const Scene& s) const {
@@ -865,7 +889,7 @@ bool Renderer::matchAtmosphereTables() {
     const auto started = std::chrono::steady_clock::now();
     programTables_ = sizes;
     terrainShadow_.program().setSources(withAtmosphere(sources_, sizes));
-    surfaceMarks_.program().setSources(withAtmosphere(sources_, sizes));
+    surfaceMarks_.program().setSources(withAtmosphere(surfaceMarksSources(sources_, stencilExport_), sizes));
     std::vector<gl::HotProgram*> rebuilt{&terrainShadow_.program(), &surfaceMarks_.program()};
     std::vector<AtmosphereProgram*> withTables = ocean_.atmospherePrograms();
     for (AtmosphereProgram* p : {&surfaceLight_, &terrainShadowMarches_, &terrainShadowListed_, &seaReflection_,

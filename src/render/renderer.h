@@ -199,6 +199,9 @@ public:
     // Tests: the surface light's ground whose way to the sun surely meets no cloud lit by the program
     // without the clouds' shadow (render/surface_marks.frag; on by default), or all by the one.
     void setSunClearStencil(bool on) { sunClearStencil_ = on; }
+    // Tests: the surface light's marks in a pass per mark even where the GL lets one pass give each
+    // fragment its own stencil value (render/surface_marks.frag); true: one pass where the GL can.
+    void setStencilExport(bool on);
     // Whether the sky march splits off the blocks whose ray meets no cloud (Renderer::drawSkyMarch;
     // tests: the same frame either way).
     void setSkyMarchSplit(bool on) { skyMarchSplit_ = on; }
@@ -277,7 +280,8 @@ private:
     TerrainPass terrain_;
     FullscreenPass terrainShadow_;
     // The surface light's stencil: the sea floor's dark depths and the ground clear of the clouds' shadow
-    // (render/surface_marks.frag).
+    // (render/surface_marks.frag), in one pass where the GL has ARB_shader_stencil_export.
+    bool stencilExport_;
     FullscreenPass surfaceMarks_;
     AtmosphereProgram surfaceLight_;
     // Its bit in the surface light's stencil, above the dark depths' value.
