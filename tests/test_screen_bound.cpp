@@ -131,6 +131,74 @@ TEST(ScreenBound, InsideItIsTheWholeScreenAndBehindTheCameraNothing) {
     EXPECT_EQ(hitPixels(away, size, glm::dvec2(0.0), 1.0).count, 0);
 }
 
+TEST(ScreenBound, TheSunsDiscBoundHoldsEveryPixelWithinItsAngularRadius) {
+    // The sky passes leave the disc's code out off this rectangle (render/sky_air.glsl, NO_SUN_DISC):
+    // every pixel whose centre's ray lies within the disc's angular radius of the sun (where
+    // SunDiscRadiance is not 0) must be in it. Suns near and across the screen's edges and corners,
+    // narrow and wide views, jitter; the bound is a few pixels around the disc, and empty where the
+    // disc lies off the view.
+    std::mt19937 random(11);
+    std::uniform_real_distribution<double> unit(-1.0, 1.0);
+    const double angularRadius = 0.004675;  // the sun's, rad
+    int seen = 0, offView = 0, withPixels = 0;
+    for (int i = 0; i < 400; ++i) {
+        const double fovDeg = i % 2 ? 4.0 + 4.0 * (0.5 + 0.5 * unit(random)) : 30.0 + 50.0 * (0.5 + 0.5 * unit(random));
+        const Camera camera = lookingAt({0.0, 0.0, 0.0}, {unit(random), unit(random), unit(random)}, fovDeg);
+        const glm::ivec2 size(61 + i % 40, 37 + (i * 7) % 30);
+        const glm::dvec2 jitter(0.5 * unit(random), 0.5 * unit(random));
+        // A sun about the view's corner: in, out and across the edges.
+        const glm::dmat3 worldFromView = camera.worldFromView();
+        const double halfY = glm::radians(fovDeg) / 2.0, halfX = std::atan(std::tan(halfY) * size.x / size.y);
+        const glm::dvec3 sunView = glm::normalize(glm::dvec3(std::tan(halfX * 1.1 * unit(random)),
+                                                             std::tan(halfY * 1.1 * unit(random)), -1.0));
+        const glm::dvec3 sun = worldFromView * sunView;
+        const glm::dmat4 viewFromClip = glm::inverse(jitteredClipFromView(camera, size, jitter));
+        const ScreenRect bound = sunDiscScreenBound(jitteredClipFromView(camera, size, jitter),
+                                                    glm::transpose(worldFromView), sun, angularRadius, size);
+        int inDisc = 0;
+        for (int y = 0; y < size.y; ++y) {
+            for (int x = 0; x < size.x; ++x) {
+                const glm::dvec2 ndc = (glm::dvec2(x, y) + 0.5) / glm::dvec2(size) * 2.0 - 1.0;
+                const glm::dvec4 v = viewFromClip * glm::dvec4(ndc, 0.5, 1.0);
+                const glm::dvec3 d = glm::normalize(worldFromView * (glm::dvec3(v) / v.w));
+                if (std::acos(std::min(glm::dot(d, sun), 1.0)) >= angularRadius) continue;
+                ++inDisc;
+                ASSERT_TRUE(x >= bound.min.x && x < bound.max.x && y >= bound.min.y && y < bound.max.y)
+                    << i << ": pixel " << x << "," << y << " sees the disc outside the bound";
+            }
+        }
+        if (bound.empty()) {
+            ++offView;
+            continue;
+        }
+        ++seen;
+        // The disc's diameter in pixels (magnified off the axis by up to 1 + tan^2 of the corner's
+        // angle), the pixel added each way and the rounding to centres.
+        const double stretch = 1.0 + 1.21 * (std::pow(std::tan(halfX), 2) + std::pow(std::tan(halfY), 2));
+        const double discPx = angularRadius / std::tan(halfY) * size.y * stretch;
+        EXPECT_LE(bound.max.x - bound.min.x, discPx + 6.0) << i;
+        EXPECT_LE(bound.max.y - bound.min.y, discPx + 6.0) << i;
+        if (inDisc > 0) ++withPixels;
+    }
+    EXPECT_GT(withPixels, 50);
+    EXPECT_GT(seen, 150);  // the cases exercise both sides
+    EXPECT_GT(offView, 20);
+    // Behind the camera: nothing.
+    const Camera camera = lookingAt({0.0, 0.0, 0.0}, {0.0, 0.0, 1.0}, 60.0);
+    EXPECT_TRUE(sunDiscScreenBound(jitteredClipFromView(camera, {64, 36}, glm::dvec2(0.0)),
+                                   glm::transpose(camera.worldFromView()), {0.0, 0.0, -1.0}, angularRadius, {64, 36})
+                    .empty());
+}
+
+TEST(ScreenBound, IntersectionIsThePixelsInBoth) {
+    const ScreenRect a{{2, 3}, {10, 8}}, b{{5, 0}, {20, 6}};
+    const ScreenRect both = intersection(a, b);
+    EXPECT_EQ(both.min, glm::ivec2(5, 3));
+    EXPECT_EQ(both.max, glm::ivec2(10, 6));
+    EXPECT_TRUE(intersection(a, ScreenRect{{10, 0}, {12, 9}}).empty());  // side by side
+    EXPECT_TRUE(intersection(a, ScreenRect{}).empty());
+}
+
 TEST(ScreenBound, BlocksAroundHoldTheBlocksNextToTheRect) {
     const ScreenRect rect{{9, 4}, {23, 13}};  // pixels 9..22, 4..12
     const ScreenRect b = blocksAround(rect, 4, {10, 10});

@@ -44,62 +44,47 @@ TEST(ShadersOffline, EveryStageValidatesWithGlslang) {
                     withShafts.push_back(v + shafts);
             variants = withShafts;
         }
-        // The reconstruction's still-frame program (src/render/renderer.cpp: STILL_FRAME).
-        if (expanded.text.find("#ifdef STILL_FRAME") != std::string::npos) {
-            const std::size_t n = variants.size();
-            for (std::size_t i = 0; i < n; ++i) variants.push_back(variants[i] + "#define STILL_FRAME\n");
-            if (expanded.text.find("#ifdef STILL_FRAME_UNJITTERED") != std::string::npos)
-                for (std::size_t i = 0; i < n; ++i) variants.push_back(variants[i] + "#define STILL_FRAME_UNJITTERED 1\n");
-        }
-        // The programs for a camera under the sea (sky and ocean: UNDER_WATER 1).
-        if (expanded.text.find("#ifndef UNDER_WATER") != std::string::npos) {
-            const std::size_t n = variants.size();
-            for (std::size_t i = 0; i < n; ++i) variants.push_back(variants[i] + "#define UNDER_WATER 1\n");
-        }
-        // The ocean's flat-mirror program (src/ocean/ocean_pass.cpp: OCEAN_FLAT_MIRROR 1).
-        if (expanded.text.find("#if OCEAN_FLAT_MIRROR") != std::string::npos) {
-            const std::size_t n = variants.size();
-            for (std::size_t i = 0; i < n; ++i) variants.push_back(variants[i] + "#define OCEAN_FLAT_MIRROR 1\n");
-        }
-        // And its smooth-mirror program (OCEAN_SMOOTH_MIRROR 1: the whole reflected sky from the grid).
-        if (expanded.text.find("#if OCEAN_SMOOTH_MIRROR") != std::string::npos) {
-            const std::size_t n = variants.size();
-            for (std::size_t i = 0; i < n; ++i) variants.push_back(variants[i] + "#define OCEAN_SMOOTH_MIRROR 1\n");
-        }
-        // The ocean mesh's fragments in their far-field build (src/ocean/ocean_pass.cpp: OCEAN_FAR_FIELD 1).
-        if (expanded.text.find("#if !OCEAN_FAR_FIELD") != std::string::npos) {
-            const std::size_t n = variants.size();
-            for (std::size_t i = 0; i < n; ++i) variants.push_back(variants[i] + "#define OCEAN_FAR_FIELD 1\n");
-        }
-        // The surface light's program for the sea floor's dark depths (src/render/renderer.cpp: SEA_FLOOR_DARK 1).
-        if (expanded.text.find("#if SEA_FLOOR_DARK") != std::string::npos ||
-            expanded.text.find("#if !SEA_FLOOR_DARK") != std::string::npos) {
-            const std::size_t n = variants.size();
-            for (std::size_t i = 0; i < n; ++i) variants.push_back(variants[i] + "#define SEA_FLOOR_DARK 1\n");
-        }
-        // The sea reflection's spread and its every-pixel list (src/render/renderer.cpp: the modes of seaReflection_).
-        if (expanded.text.find("#if SEA_REFLECTION_COMPOSE") != std::string::npos) {
-            const std::size_t n = variants.size();
-            for (const char* mode : {"#define SEA_REFLECTION_COMPOSE 1\n", "#define SEA_REFLECTION_LIST_ALL 1\n"})
-                for (std::size_t i = 0; i < n; ++i) variants.push_back(variants[i] + mode);
-        }
-        // Every program that reads the clouds, in its far-field build (src/render/atmosphere_program.h:
-        // CLOUD_FAR_FIELD_ONLY 1, from high up) and in its build for a frame without clouds (CLOUDS_OFF 1,
-        // never with the far field's).
-        if (expanded.text.find("#if CLOUD_FAR_FIELD_ONLY") != std::string::npos) {
-            const std::size_t n = variants.size();
-            for (std::size_t i = 0; i < n; ++i) variants.push_back(variants[i] + "#define CLOUD_FAR_FIELD_ONLY 1\n");
-            for (std::size_t i = 0; i < n; ++i) variants.push_back(variants[i] + "#define CLOUDS_OFF 1\n");
-        }
-        // The surface light's marks in one pass, where the GL has ARB_shader_stencil_export (STENCIL_EXPORT 1).
-        if (expanded.text.find("#if STENCIL_EXPORT") != std::string::npos) {
-            const std::size_t n = variants.size();
-            for (std::size_t i = 0; i < n; ++i) variants.push_back(variants[i] + "#define STENCIL_EXPORT 1\n");
-        }
-        // The reduced-rate lattice's marks of the rays that meet no cloud (src/render/renderer.cpp: SPARSE_LATTICE).
-        if (expanded.text.find("#ifdef SPARSE_LATTICE") != std::string::npos) {
-            const std::size_t n = variants.size();
-            for (std::size_t i = 0; i < n; ++i) variants.push_back(variants[i] + "#define SPARSE_LATTICE 1\n");
+        // The programs' other builds, each where its source tests its define (the marker): every
+        // variant so far once more with each build's defines.
+        struct Build {
+            const char* marker;
+            std::vector<const char*> builds;  // each a build of its own: its defines added to every variant so far
+        };
+        const Build builds[] = {
+            // The reconstruction's still-frame programs (src/render/renderer.cpp: STILL_FRAME, STILL_FRAME_UNJITTERED).
+            {"#ifdef STILL_FRAME", {"#define STILL_FRAME\n"}},
+            {"#ifdef STILL_FRAME_UNJITTERED", {"#define STILL_FRAME_UNJITTERED 1\n"}},
+            // The programs for a camera under the sea (sky and ocean: UNDER_WATER 1).
+            {"#ifndef UNDER_WATER", {"#define UNDER_WATER 1\n"}},
+            // The ocean's flat-mirror and smooth-mirror programs (src/ocean/ocean_pass.cpp).
+            {"#if OCEAN_FLAT_MIRROR", {"#define OCEAN_FLAT_MIRROR 1\n"}},
+            {"#if OCEAN_SMOOTH_MIRROR", {"#define OCEAN_SMOOTH_MIRROR 1\n"}},
+            // The ocean mesh's fragments in their far-field build (OCEAN_FAR_FIELD 1).
+            {"#if !OCEAN_FAR_FIELD", {"#define OCEAN_FAR_FIELD 1\n"}},
+            // The surface light's program for the sea floor's dark depths (SEA_FLOOR_DARK 1).
+            {"#if !SEA_FLOOR_DARK", {"#define SEA_FLOOR_DARK 1\n"}},
+            // The sea reflection's spread and its every-pixel list (the modes of Renderer::seaReflection_).
+            {"#if SEA_REFLECTION_COMPOSE", {"#define SEA_REFLECTION_COMPOSE 1\n", "#define SEA_REFLECTION_LIST_ALL 1\n"}},
+            // Every program that reads the clouds, in its far-field build (src/render/atmosphere_program.h:
+            // CLOUD_FAR_FIELD_ONLY 1, from high up) and in its build for a frame without clouds (CLOUDS_OFF 1,
+            // never with the far field's).
+            {"#if CLOUD_FAR_FIELD_ONLY", {"#define CLOUD_FAR_FIELD_ONLY 1\n", "#define CLOUDS_OFF 1\n"}},
+            // The sky passes' builds for what their pixels see (src/render/atmosphere_program.h), together.
+            {"#if NO_SUN_DISC", {"#define NO_SUN_DISC 1\n#define CAMERA_IN_AIR 1\n"}},
+            // The surface light's marks in one pass, where the GL has ARB_shader_stencil_export.
+            {"#if STENCIL_EXPORT", {"#define STENCIL_EXPORT 1\n"}},
+            // The reduced-rate lattice's marks of the rays that meet no cloud (src/render/renderer.cpp).
+            {"#ifdef SPARSE_LATTICE", {"#define SPARSE_LATTICE 1\n"}},
+        };
+        const std::vector<std::string> beforeStill = variants;  // STILL_FRAME_UNJITTERED: one of the still builds
+        for (const Build& b : builds) {
+            if (expanded.text.find(b.marker) == std::string::npos) continue;
+            const std::vector<std::string>& base = std::string(b.marker) == "#ifdef STILL_FRAME_UNJITTERED" ? beforeStill
+                                                                                                          : variants;
+            std::vector<std::string> more;
+            for (const char* defines : b.builds)
+                for (const std::string& v : base) more.push_back(v + defines);
+            variants.insert(variants.end(), more.begin(), more.end());
         }
         for (const std::string& variant : variants) {
             std::string text = expanded.text;

@@ -292,6 +292,58 @@ TEST_F(Temporal, PassesScissoredToTheAirAndTheGroundGiveTheWholeFramesImage) {
     }
 }
 
+TEST_F(Temporal, SkyProgramsBuiltForWhatTheirPixelsSeeGiveTheWholeProgramsImage) {
+    // The sky passes run, off the sun's disc's rectangle on screen, a build without the disc
+    // (NO_SUN_DISC), and where the camera is in the air, one without space's code (CAMERA_IN_AIR):
+    // render/sky_air.glsl. The frames are the whole programs' (setScreenBounds(false)), value for
+    // value, at full rate and at the reduced rate still, with the clock running and after a move and
+    // a turn: at `ground` (the sun off the view: no disc anywhere), at `ground` turned to the sun
+    // (its rectangle a few pixels, the programs with and without the disc side by side) and from
+    // orbit (the camera above the air).
+    const glm::ivec2 size{96, 54};
+    for (const char* view : {"ground", "sun", "orbit"}) {
+        const bool sun = view == std::string("sun");
+        Session s = session(sun ? "ground" : view);
+        if (sun) {  // turned to the sun, 3 degrees across: the disc (0.54 degrees) over ten pixels
+            const glm::dvec3 forward = s.scene.sunDirection();
+            const glm::dvec3 right = glm::normalize(glm::cross(forward, s.camera.up()));
+            s.camera.orientation = orientationFromAxes(right, glm::cross(right, forward), forward);
+            s.camera.fovY_rad = glm::radians(3.0);
+        }
+        Renderer bounded(test::repoPaths().shaders(), atmosphere::TableSizes::reduced());
+        Renderer whole(test::repoPaths().shaders(), atmosphere::TableSizes::reduced());
+        whole.setScreenBounds(false);
+        std::size_t differing = 0;
+        for (int frame = 0; frame < 13; ++frame) {
+            if (frame >= 5) s.scene.time_s += 1.0 / 30.0;
+            if (frame >= 9) {
+                s.camera.position *= 1.0 + 1.0e-7;
+                s.camera.orientation = glm::angleAxis(glm::radians(0.05), s.camera.up()) * s.camera.orientation;
+            }
+            bounded.render(s.scene, s.camera, size);
+            whole.render(s.scene, s.camera, size);
+            const PrepareReport& p = bounded.lastPrepare();
+            ASSERT_EQ(p.reducedRate, frame > 0) << view;  // the first without a history: at full rate (render/sky.frag)
+            ASSERT_EQ(p.cameraInAir, view != std::string("orbit")) << view;
+            ASSERT_FALSE(whole.lastPrepare().cameraInAir);
+            ASSERT_TRUE(whole.lastPrepare().sunDiscBound.coversScreen(size));
+            if (sun) {
+                ASSERT_FALSE(p.sunDiscBound.empty());
+                ASSERT_LT(p.sunDiscBound.area(), size.x * size.y / 20) << "a few pixels around the disc";
+            } else if (view == std::string("ground")) {
+                ASSERT_TRUE(p.sunDiscBound.empty()) << "the sun is off the view";
+            }
+            const ImageRGBAF a = hdrOf(bounded, size), b = hdrOf(whole, size);
+            for (std::size_t i = 0; i < a.pixels.size(); ++i) differing += a.pixels[i] != b.pixels[i];
+            if (sun && frame == 12) {
+                EXPECT_GT(*std::max_element(a.pixels.begin(), a.pixels.end()), 1000.0f) << "the sun's disc is in view";
+            }
+        }
+        std::printf("%-6s values that differ from the whole programs' over 13 frames: %zu\n", view, differing);
+        EXPECT_EQ(differing, 0u) << view;
+    }
+}
+
 TEST_F(Temporal, WithOnlyTheClockRunningOnlyTheSamplesErrorsMarkPixels) {
     // The explorer's clock runs while the camera stands: only the clouds move, with the wind, a
     // small fraction of a pixel a frame. The reconstruction marks for a full-rate march only the

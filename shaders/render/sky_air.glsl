@@ -67,18 +67,29 @@ vec3 throughWater(vec3 surface, float distance) {
 
 // Whether the ray `dir` from the camera never enters the air: the camera above the atmosphere's
 // top and the ray leaving it or passing it by. Then T = 1 and S = 0 exactly, as the march gives.
+// CAMERA_IN_AIR (src/render/atmosphere_program.h): the camera a kilometre or more under the top, where
+// no ray misses it; a program, not a branch: a software renderer runs the space's side too.
 bool rayMissesTheAir(vec3 dir) {
+#if CAMERA_IN_AIR
+    return false;
+#else
     AtmosphereParameters atmosphere = atmosphereParameters();
     float r = atmosphere.bottom_radius + frame.cameraAltitude / M_PER_KM;
     if (r < atmosphere.top_radius) return false;
     float mu = dot(frame.cameraUp, dir);
     return mu >= 0.0 || r * r * (mu * mu - 1.0) + atmosphere.top_radius * atmosphere.top_radius < 0.0;
+#endif
 }
 
 // What the air's T dims along `dir`: the surface's radiance R_G where there is a surface
-// (`distance` > 0), else the sun's disc.
+// (`distance` > 0), else the sun's disc. NO_SUN_DISC (src/render/atmosphere_program.h): the
+// program's pixels lie off the disc's rectangle on screen (Renderer::drawSkyPasses), where it is 0.
 vec3 behindTheAir(vec3 dir, vec3 surface, float distance) {
+#if NO_SUN_DISC
+    return distance > 0.0 ? surface : vec3(0.0);
+#else
     return distance > 0.0 ? surface : SunDiscRadiance(dir, frame.sunDirection);
+#endif
 }
 
 // In air: L = T R_G + S at a surface point, S + T x the sun's disc where the ray goes to

@@ -31,6 +31,10 @@ const float MAX_HISTORY_SAMPLES = 15.0;
 // sun's disc (Elek §4.2.2) along the pixel centre's ray, as render/sky.frag forms it (an
 // interpolated NDC differs in the last bit, and so may a pixel at the disc's edge).
 vec3 spaceRadiance(vec2 fragCoord) {
+#if NO_SUN_DISC
+    return vec3(0.0);  // off the disc's rectangle (render/sky_air.glsl, behindTheAir)
+#else
     return SunDiscRadiance(worldRayFromNdc(pixelCentreNdc(fragCoord)), frame.sunDirection);
+#endif
 }
 uvec4 spaceSkyMedium() { return packSkyMedium(SkySample(vec3(0.0), vec3(1.0)), MAX_HISTORY_SAMPLES); }

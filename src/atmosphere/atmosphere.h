@@ -97,6 +97,8 @@ public:
     const TableSizes& sizes() const { return tables_ ? tables_->sizes : plan_.firstSizes(); }
     const TableSizes& targetSizes() const { return plan_.target; }
     const GpuTables& tables() const { return *tables_; }
+    // The parameter block bound with the tables in use (the model's radii and sun, as the programs read them).
+    const AtmosphereUniforms& uniforms() const { return current_.uniforms; }
     // Whether the uniform block asks for Elek's 3D table (the scene's atmosphere.elek_3d_table).
     bool usesElekTable() const { return flags_.elek3dTable; }
 

@@ -3,8 +3,11 @@
 // atmosphere.elek_3d_table), for the sky passes LIGHT_SHAFTS_TERRAIN 0 or 1 (preset
 // terrain.light_shafts with terrain.shadows), CLOUD_FAR_FIELD_ONLY 0 or 1 (every footprint
 // the frame sees the clouds with is the far field's: src/clouds/cloud_block.h,
-// seenInFarFieldOnly) and CLOUDS_OFF 0 or 1 (no cloud layer this frame: the cloud block's
-// `enabled` 0, shaders/clouds/cloud_density.glsl). Programs rather than run-time branches: software renderers execute both
+// seenInFarFieldOnly), CLOUDS_OFF 0 or 1 (no cloud layer this frame: the cloud block's
+// `enabled` 0, shaders/clouds/cloud_density.glsl), and for the sky passes' pixels CAMERA_IN_AIR and
+// NO_SUN_DISC 0 or 1 (render/sky_air.glsl: the space's and the disc's code left out where the CPU
+// knows they give nothing; at `ground` the reconstruction's still program went from 24 to 12 ms
+// on llvmpipe, docs/PERFORMANCE.md, twenty-sixth). Programs rather than run-time branches: software renderers execute both
 // sides of even a uniform branch, and a GPU is spared the registers of the unused one (the
 // light shafts' code, its loops at no turns, doubled the sky pass on llvmpipe:
 // docs/PERFORMANCE.md, 2026-12-03). The default variant (4D table, no shafts, the clouds' volume
@@ -31,6 +34,11 @@ struct AtmosphereVariant {
     bool lightShafts = false;    // LIGHT_SHAFTS_TERRAIN (the sky passes)
     bool cloudFarField = false;  // CLOUD_FAR_FIELD_ONLY (shaders/clouds/cloud_density.glsl)
     bool cloudsOff = false;      // CLOUDS_OFF (shaders/clouds/cloud_density.glsl)
+    // What a sky pass's pixels see (render/sky_air.glsl; Renderer::drawSkyPasses): the camera a
+    // kilometre or more under the air's top, so that no ray misses the air (CAMERA_IN_AIR), and
+    // pixels off the sun's disc's rectangle on screen (NO_SUN_DISC).
+    bool cameraInAir = false;
+    bool noSunDisc = false;
 };
 
 class AtmosphereProgram {
@@ -48,7 +56,7 @@ public:
 
     gl::HotProgram& get(const AtmosphereVariant& v, int mode = 0) {
         const int index = (v.elekTable ? 1 : 0) + (v.lightShafts ? 2 : 0) + (v.cloudFarField ? 4 : 0) + (v.cloudsOff ? 8 : 0) +
-                          kVariants * mode;
+                          (v.cameraInAir ? 16 : 0) + (v.noSunDisc ? 32 : 0) + kVariants * mode;
         if (!variants_.at(static_cast<std::size_t>(index))) {
             gl::ProgramDesc d = desc_;
             if (mode > 0) d.name += " (" + modes_[static_cast<std::size_t>(mode - 1)] + ")";
@@ -56,6 +64,8 @@ public:
             if (v.lightShafts) d.name += " (light shafts)";
             if (v.cloudFarField) d.name += " (clouds' far field)";
             if (v.cloudsOff) d.name += " (no clouds)";
+            if (v.cameraInAir) d.name += " (camera in the air)";
+            if (v.noSunDisc) d.name += " (no sun disc)";
             variants_[static_cast<std::size_t>(index)].emplace(sourcesOf(index), d);
         }
         return *variants_[static_cast<std::size_t>(index)];
@@ -77,15 +87,17 @@ public:
     }
 
 private:
-    // bit 0: ELEK_TABLE, bit 1: LIGHT_SHAFTS_TERRAIN, bit 2: CLOUD_FAR_FIELD_ONLY, bit 3: CLOUDS_OFF; then the mode
-    static constexpr int kVariants = 16;
+    // bit 0: ELEK_TABLE, bit 1: LIGHT_SHAFTS_TERRAIN, bit 2: CLOUD_FAR_FIELD_ONLY, bit 3: CLOUDS_OFF,
+    // bit 4: CAMERA_IN_AIR, bit 5: NO_SUN_DISC; then the mode
+    static constexpr int kVariants = 64;
 
     gl::ShaderSources sourcesOf(int index) const {
         const int mode = index / kVariants;
         const auto flag = [index](int bit) { return (index & bit) ? "1\n" : "0\n"; };
         return {sources_.root, sources_.preamble + atmosphere::atmosphereShaderDefines(sizes_) + "#define ELEK_TABLE " +
                                    flag(1) + "#define LIGHT_SHAFTS_TERRAIN " + flag(2) + "#define CLOUD_FAR_FIELD_ONLY " +
-                                   flag(4) + "#define CLOUDS_OFF " + flag(8) +
+                                   flag(4) + "#define CLOUDS_OFF " + flag(8) + "#define CAMERA_IN_AIR " + flag(16) +
+                                   "#define NO_SUN_DISC " + flag(32) +
                                    (mode > 0 ? "#define " + modes_[static_cast<std::size_t>(mode - 1)] + " 1\n" : "")};
     }
 

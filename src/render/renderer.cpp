@@ -1,6 +1,7 @@
 #include "render/renderer.h"
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cstdio>
 #include <cmath>
@@ -430,8 +431,7 @@ std::vector<Renderer::Pass> Renderer::makePasses() {
                           glBindVertexArray(emptyVertexArray_.id());
                           const int underWater = lastPrepare_.underWater ? 1 : 0;  // sky_'s mode UNDER_WATER
                           drawSpaceAround(lastPrepare_.skyBound);
-                          glUseProgram(sky_.get(skyVariantFor(s), underWater).id());
-                          drawScissored(lastPrepare_.skyBound, targets_.size());
+                          drawSkyBound(sky_, s, underWater);
                       },
                       [this] { return withPrograms(sky_.built(), {&skySpace_.program()}); }});
     passes.push_back({{"sky march", {R::SurfaceRadiance}, {R::SparseSky}}, reducedRate,
@@ -472,8 +472,7 @@ std::vector<Renderer::Pass> Renderer::makePasses() {
                           }
                           // Modes: 1 STILL_FRAME, 2 STILL_FRAME_UNJITTERED (the jitter stood too).
                           const int still = !stillProgram() ? 0 : lastPrepare_.jitterStood ? 2 : 1;
-                          glUseProgram(skyTemporal_.get(skyVariantFor(s), still).id());
-                          drawScissored(lastPrepare_.skyBound, targets_.size());
+                          drawSkyBound(skyTemporal_, s, still);
                       },
                       [this] {
                           return withPrograms(skyTemporal_.built(), {&skySpace_.program(), &skyNoCloud_.program()});
@@ -671,11 +670,9 @@ void Renderer::drawSkyTemporalSplit(const Scene& scene) {
     glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
     // Modes: 1 STILL_FRAME, 2 STILL_FRAME_UNJITTERED (the jitter stood too); 0 the general program.
     stencilTest(kOffLayer, kOffLayer);
-    glUseProgram(skyTemporal_.get(skyVariantFor(scene), lastPrepare_.jitterStood ? 2 : 1).id());
-    drawScissored(lastPrepare_.skyBound, targets_.size());
+    drawSkyBound(skyTemporal_, scene, lastPrepare_.jitterStood ? 2 : 1);
     stencilTest(kOffLayer, kOffLayer, false);
-    glUseProgram(skyTemporal_.get(skyVariantFor(scene), 0).id());
-    drawScissored(lastPrepare_.skyBound, targets_.size());
+    drawSkyBound(skyTemporal_, scene, 0);
     stencilOff();
     glBindFramebuffer(GL_FRAMEBUFFER, targets_.hdrFramebuffer());
 }
@@ -719,6 +716,28 @@ float Renderer::clearSkyDepth(const Scene& scene, const Camera& camera, glm::ive
     const double viewZM = lo * 1000.0 * cosHalfDiagonal;
     if (viewZM <= camera.near_m) return 1.0f;
     return static_cast<float>(depthFromViewZ(-viewZM, camera.near_m));
+}
+
+// A sky pass's program over the sky's bound, in the builds for what its pixels see (render/sky_air.glsl):
+// with the sun's disc on the disc's rectangle, without it on the bands around, and without space's
+// code where the camera is in the air; each build gives what the whole program gives at its pixels
+// (a software renderer runs a branch's both sides: the disc and the space's side were half of the
+// reconstruction's still program at `ground`).
+void Renderer::drawSkyBound(AtmosphereProgram& program, const Scene& scene, int mode) {
+    AtmosphereVariant variant = skyVariantFor(scene);
+    variant.cameraInAir = lastPrepare_.cameraInAir;
+    const glm::ivec2 size = targets_.size();
+    const ScreenRect disc = intersection(lastPrepare_.sunDiscBound, lastPrepare_.skyBound);
+    if (!disc.empty()) {
+        glUseProgram(program.get(variant, mode).id());
+        drawScissored(disc, size);
+    }
+    std::array<ScreenRect, 4> offDisc = bandsAround(disc, size);
+    for (ScreenRect& band : offDisc) band = intersection(band, lastPrepare_.skyBound);
+    if (std::all_of(offDisc.begin(), offDisc.end(), [](const ScreenRect& r) { return r.empty(); })) return;
+    variant.noSunDisc = true;
+    glUseProgram(program.get(variant, mode).id());
+    for (const ScreenRect& band : offDisc) drawScissored(band, size);
 }
 
 void Renderer::drawSpaceAround(const ScreenRect& skyBound) const {
@@ -779,6 +798,12 @@ void Renderer::prepare(const Scene& scene, const Camera& camera, glm::ivec2 size
     const double highestGroundM = scene.planetRadiusM() + scene.ocean.sea_level_m + std::max(scene.terrain.max_height_m, 0.0) +
                                   1000.0;
     report.skyBound = bound(scene.atmosphere.top_radius_km * 1000.0);
+    // What the sky passes' pixels see, by the parameters the programs read (those of the tables in use).
+    const atmosphere::AtmosphereUniforms& air = atmosphere_.uniforms();
+    report.sunDiscBound = screenBounds_ ? sunDiscScreenBound(clipFromView, viewFromWorld, scene.sunDirection(),
+                                                             air.sunAngularRadius, size)
+                                        : ScreenRect{{0, 0}, size};
+    report.cameraInAir = screenBounds_ && glm::length(camera.position) / 1000.0 < double(air.topRadius) - 1.0;
     report.groundBound = bound(highestGroundM);
     glNamedBufferSubData(frameUniforms_.id(), 0, sizeof uniforms, &uniforms);
     glBindBufferBase(GL_UNIFORM_BUFFER, binding::BLOCK_FRAME, frameUniforms_.id());

@@ -131,6 +131,10 @@ struct PrepareReport {
                                          // with CLOUDS_OFF (clouds/cloud_density.glsl), and never the far field's
     ScreenRect skyBound;                 // the pixels the sky passes ran their programs on: those that can see the air
                                          // (render/screen_bound.h; the whole frame where it fills it), space elsewhere
+    ScreenRect sunDiscBound;             // the pixels whose ray can see the sun's disc: the sky passes' programs
+                                         // without it elsewhere (NO_SUN_DISC; Renderer::drawSkyBound)
+    bool cameraInAir = false;            // the camera a kilometre or more under the air's top: no ray misses the air,
+                                         // the sky passes' programs without space's code (CAMERA_IN_AIR)
     ScreenRect groundBound;              // the pixels the terrain shadow and the surface light ran on: those that can
                                          // see the ground's highest sphere (terrain.max_height_m above the sea)
 };
@@ -210,8 +214,9 @@ public:
     void setDarkFloorCulling(bool on) { darkFloorCulling_ = on; }
     // The sky passes scissored to the rectangle that holds the air's sphere, space drawn around
     // it by render/sky_space.frag, and the terrain shadow and the surface light to the one that
-    // holds the ground's highest sphere (on, the default), or run over the whole frame (tests
-    // compare the two: the same image).
+    // holds the ground's highest sphere; the sky passes' programs built without the sun's disc off
+    // its rectangle, and without space's code where the camera is in the air (on, the default), or
+    // the whole programs run over the whole frame (tests compare the two: the same image).
     void setScreenBounds(bool on) { screenBounds_ = on; }
     // The sub-pixel offset (pixels, about [-0.5, 0.5]) of the projection of the frames
     // rendered from now on; (0, 0), the default, renders unjittered.
@@ -253,6 +258,7 @@ private:
     // and the sky passes' (with the terrain's shadows in the air where the preset asks for them).
     AtmosphereVariant variantFor(const Scene& scene) const;
     AtmosphereVariant skyVariantFor(const Scene& scene) const;
+    void drawSkyBound(AtmosphereProgram& program, const Scene& scene, int mode);
     // Whether the sky's reconstruction and refine run their still-frame programs (STILL_FRAME) this frame.
     bool stillProgram() const;
     // Whether the sea reflection pass runs this frame (the clouds in the sea's reflection, marched

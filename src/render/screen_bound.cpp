@@ -80,6 +80,16 @@ ScreenRect sphereScreenBound(const glm::dmat4& clipFromView, const glm::dmat3& v
     return rect;
 }
 
+ScreenRect sunDiscScreenBound(const glm::dmat4& clipFromView, const glm::dmat3& viewFromWorld,
+                              const glm::dvec3& sunDirection, double angularRadius, glm::ivec2 size) {
+    return sphereScreenBound(clipFromView, viewFromWorld, glm::normalize(sunDirection), std::sin(angularRadius), size);
+}
+
+ScreenRect intersection(const ScreenRect& a, const ScreenRect& b) {
+    const ScreenRect r{glm::max(a.min, b.min), glm::min(a.max, b.max)};
+    return r.empty() ? ScreenRect{} : r;
+}
+
 ScreenRect blocksAround(const ScreenRect& rect, int block, glm::ivec2 blocks) {
     if (rect.empty()) return {};
     ScreenRect b{rect.min / block - 1, (rect.max - 1) / block + 2};

@@ -42,6 +42,15 @@ inline constexpr int kConeSides = 128;
 ScreenRect sphereScreenBound(const glm::dmat4& clipFromView, const glm::dmat3& viewFromWorld, const glm::dvec3& centre,
                             double radius, glm::ivec2 size);
 
+// The pixels whose centre's ray can see the sun's disc (the cone of `angularRadius` around the unit
+// `sunDirection`, world axes): the bound of a sphere of radius sin(angularRadius) one unit away; empty
+// where the disc lies off the view. The sky passes run their programs without the disc off it.
+ScreenRect sunDiscScreenBound(const glm::dmat4& clipFromView, const glm::dmat3& viewFromWorld,
+                              const glm::dvec3& sunDirection, double angularRadius, glm::ivec2 size);
+
+// The pixels in both (empty where they do not meet).
+ScreenRect intersection(const ScreenRect& a, const ScreenRect& b);
+
 // The blocks of `block` x `block` pixels (a reduced-rate target's texels) that hold a pixel of
 // `rect` or of the blocks next to those (the reconstruction reads the 3x3 blocks around a pixel's).
 ScreenRect blocksAround(const ScreenRect& rect, int block, glm::ivec2 blocks);
