@@ -311,3 +311,57 @@ TEST(TerrainNear, ARayThatMissesGivesThePointBelowItsStart) {
         EXPECT_LT(glm::length(glm::dvec3(hit) - ray * s), 1.01 * startAbove) << riseDeg;  // straight down
     }
 }
+
+TEST(TerrainNear, TheGroundsPatchesAreFixedToTheWorldWithUnitSpreadAndNoPeriod) {
+    // The ground detail's coarse scale (terrain/height.glsl, terrainPatchesNear): a field of the
+    // world position, the same seen from two cameras (formed from each one's noise point, in double);
+    // of mean 0 and RMS 1 (as the detail texture's patch channel it replaced), its gradient the
+    // field's (central differences) and its slope along the ground of the RMS the detail divides by;
+    // and not periodic at the texture's 32 m (a lattice of blotches seen from 20 m up).
+    const NearTerrain& t = nearTerrain();
+    std::mt19937 rng(5);
+    std::uniform_real_distribution<double> unit(-1.0, 1.0);
+    double sum = 0.0, squares = 0.0, lagProducts = 0.0, worstMismatch = 0.0, slopeSquares = 0.0, worstSlopeError = 0.0;
+    int n = 0;
+    for (unsigned site = 0; site < 6; ++site) {
+        const glm::dvec3 up = t.inland(200 + site);
+        const glm::dvec3 camera = cameraAbove(t, up, 20.0);
+        glm::dvec3 east, north;
+        tangents(up, east, north);
+        const terrain::TerrainNear near = terrain::makeTerrainNear(t.shape, t.continents, camera, kRadiusM);
+        const glm::dvec3 other = camera + 700.0 * east - 300.0 * north;  // a second camera nearby
+        const terrain::TerrainNear nearOther = terrain::makeTerrainNear(t.shape, t.continents, other, kRadiusM);
+        for (int i = 0; i < 4000; ++i) {
+            const glm::dvec3 point = camera + 1500.0 * (unit(rng) * east + unit(rng) * north) - 20.0 * up;
+            glm::vec3 gradient, unused;
+            const float p = terrain::terrainPatchesNear(glm::vec3(point - camera), near, gradient);
+            worstMismatch = std::max(worstMismatch, double(std::abs(
+                                                        p - terrain::terrainPatchesNear(glm::vec3(point - other),
+                                                                                        nearOther, unused))));
+            const float q = terrain::terrainPatchesNear(glm::vec3(point + 32.0 * east - camera), near, unused);
+            // The slope along the ground against central differences 2 cm apart.
+            const glm::dvec3 along = glm::dvec3(gradient) - glm::dot(glm::dvec3(gradient), up) * up;
+            slopeSquares += glm::dot(along, along);
+            const auto at = [&](glm::dvec3 d) {
+                return double(terrain::terrainPatchesNear(glm::vec3(point + d - camera), near, unused));
+            };
+            const double dEast = (at(0.02 * east) - at(-0.02 * east)) / 0.04;
+            worstSlopeError = std::max(worstSlopeError, std::abs(dEast - glm::dot(along, east)));
+            sum += p;
+            squares += double(p) * p;
+            lagProducts += double(p) * q;
+            ++n;
+        }
+    }
+    const double mean = sum / n, rms = std::sqrt(squares / n), lagCorrelation = lagProducts / squares;
+    const double slopeRms = std::sqrt(slopeSquares / n);
+    std::printf("ground patches: mean %.4f, RMS %.4f, slope RMS %.4f per m (largest error against differences %.2g), "
+                "correlation 32 m apart %.3f, two cameras differ by %.2g\n",
+                mean, rms, slopeRms, worstSlopeError, lagCorrelation, worstMismatch);
+    EXPECT_LT(std::abs(mean), 0.05);
+    EXPECT_NEAR(rms, 1.0, 0.05);
+    EXPECT_NEAR(slopeRms, terrain::terrainPatchSlopeRms(), 0.05 * slopeRms);  // the detail normalises by it
+    EXPECT_LT(worstSlopeError, 0.02 * slopeRms);
+    EXPECT_LT(lagCorrelation, 0.5);  // a 32 m period would give 1
+    EXPECT_LT(worstMismatch, 2.0e-3);
+}

@@ -1,8 +1,9 @@
 // Ground detail: the baked detail texture (terrain/detail_texture.h: slopes in xy, a fine
 // height field in z, patches in w) projected along the three world axes (tri-planar, Michelic
-// §6: "a three-planar projected normal map to get detail normals"), at three scales, into
-// per-material detail normals and colour variation (Sperlhofer 4.4: normal mapping and
-// multi-texturing, blended per material).
+// §6: "a three-planar projected normal map to get detail normals"), at two scales (0.5 and 4 m),
+// and a world-fixed noise field at the coarse scale (terrain/height.glsl, terrainPatchesNear: no
+// period to tile), into per-material detail normals and colour variation (Sperlhofer 4.4: normal
+// mapping and multi-texturing, blended per material).
 //
 // Filtering: every fetch is textureGrad with the derivatives of the detail position, so the
 // mip level follows the pixel's footprint: the texture's slopes and heights average to zero
@@ -153,7 +154,7 @@ DetailSample detailAtScale(vec3 p, vec3 dpdx, vec3 dpdy, DetailPlanes planes, fl
 // detail's slopes about the returned normal under the footprint, per component (rise over
 // run), what the filter removed (see the top).
 void applyTerrainDetail(vec3 p, vec3 dpdx, vec3 dpdy, vec3 up, float weights[5], float strength, bool vegetated,
-                        inout vec3 normal, inout vec3 albedo, out float slopeSpread) {
+                        float field, vec3 fieldGradient, inout vec3 normal, inout vec3 albedo, out float slopeSpread) {
     vec3 slopes = vec3(0.0);
     vec3 tint = vec3(0.0);
     for (int m = 0; m < 5; ++m) {
@@ -164,18 +165,25 @@ void applyTerrainDetail(vec3 p, vec3 dpdx, vec3 dpdy, vec3 up, float weights[5],
     // slopes (per unit of texture coordinate) have the spread of its whole variance, which
     // the 1 x 1 level has removed.
     float textureSlopeRms = sqrt(uTerrainDetailLostVariance[TERRAIN_DETAIL_LEVELS - 1]);
-    vec3 relief = slopes * vec3(TERRAIN_DETAIL_PERIOD_M[0], TERRAIN_DETAIL_PERIOD_M[1], TERRAIN_DETAIL_PERIOD_M[2]) /
-                  textureSlopeRms;
+    vec2 relief = slopes.xy * vec2(TERRAIN_DETAIL_PERIOD_M[0], TERRAIN_DETAIL_PERIOD_M[1]) / textureSlopeRms;
     DetailPlanes planes = detailPlanes(up);
     DetailSample fine = detailAtScale(p, dpdx, dpdy, planes, TERRAIN_DETAIL_PERIOD_M[0]);
     DetailSample middle = detailAtScale(p, dpdx, dpdy, planes, TERRAIN_DETAIL_PERIOD_M[1]);
-    DetailSample coarse = detailAtScale(p, dpdx, dpdy, planes, TERRAIN_DETAIL_PERIOD_M[2]);
-    vec3 slope = relief.x * fine.slope + relief.y * middle.slope + relief.z * coarse.slope;
+    // The coarse scale is not the texture's: the world-fixed field (terrain/height.glsl,
+    // terrainPatchesNear, `field` and its gradient at the pixel), whose value makes the patches and
+    // whose slope along the ground the relief, with no period (the texture's 32 m showed as a lattice
+    // of blotches from 20 m up). Filtered by fading both as the footprint (the longer side's share per
+    // tap, as detailAtScale's, or the narrow side) covers its cells; the slopes' variance the fade
+    // removes goes to the lighting, as the texture's levels' does.
+    float coarseFootprint = max(0.5 * max(length(dpdx), length(dpdy)), min(length(dpdx), length(dpdy)));
+    float kept = 1.0 - smoothstep(0.15, 0.75, coarseFootprint / TERRAIN_PATCH_CELL_M);
+    vec3 along = fieldGradient - dot(fieldGradient, up) * up;
+    vec3 slope = relief.x * fine.slope + relief.y * middle.slope + (slopes.z * kept / TERRAIN_PATCH_SLOPE_RMS) * along;
     normal = normalize(normal - (slope - dot(slope, normal) * normal));
     float slopeVariance = relief.x * relief.x * fine.slopeVariance + relief.y * relief.y * middle.slopeVariance +
-                          relief.z * relief.z * coarse.slopeVariance;
+                          slopes.z * slopes.z * (1.0 - kept * kept);
     slopeSpread = sqrt(0.5 * slopeVariance);  // isotropic: half the variance in each component
-    float patches = coarse.patches + 0.5 * middle.patches;
+    float patches = kept * field + 0.5 * middle.patches;
     float variation = tint.x * fine.height + tint.y * middle.height + tint.z * patches;
     albedo *= clamp(1.0 + variation, 0.3, 2.0);
     // Grass: dry, yellower patches among lush ones.

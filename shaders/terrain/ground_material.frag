@@ -137,9 +137,12 @@ void main() {
     for (int m = 0; m < TERRAIN_MATERIAL_COUNT; ++m) albedo += weights[m] * materialAlbedo(m);
     albedo *= mix(1.0, TERRAIN_WET_DARKENING, wetness(height, heightSpread));
     float detailSlopeSpread = 0.0;  // what the detail's filter removed, for the surface light
-    if (detailShown)
+    if (detailShown) {
+        vec3 fieldGradient;
+        float field = terrainPatchesNear(hit, terrainNear, fieldGradient);
         applyTerrainDetail(hit + terrainXyz(terrainNear.cameraPlace), dpdx, dpdy, up, weights, strength,
-                           terrainHasOcean != 0, normal, albedo, detailSlopeSpread);
+                           terrainHasOcean != 0, field, fieldGradient, normal, albedo, detailSlopeSpread);
+    }
     outNormal = vec4(normal, height);
     outAlbedo = vec4(albedo, 1.0);
     outMaterial = vec4(float(MATERIAL_GROUND) / 255.0, 1.0, min(detailSlopeSpread, 1.0), 0.0);

@@ -382,6 +382,8 @@ struct TerrainNear {
     vec4 continent;         // x: the continent value at the camera's direction; yzw: its gradient (per radian)
     vec4 octaveLattice[10]; // mountain octave k's noise point at the camera: a lattice point (skewed
     vec4 octaveOffset[10];  // coordinates modulo 289) and the offset from it (unskewed), xyz
+    vec4 patchLattice;      // the ground's patches' noise point at the camera (terrainPatchesNear): a lattice
+    vec4 patchOffset;       // point (skewed, modulo 289) and the offset from it (unskewed), xyz
 };
 
 // The change of direction from the camera's to the point at `pointFromCamera` (m, world
@@ -394,6 +396,26 @@ vec3 terrainNearDirectionChange(vec3 pointFromCamera, TerrainNear near, OUT(floa
     radius = sqrt(c * c + twiceAlong);
     rise = twiceAlong / (radius + c);
     return (pointFromCamera - up * rise) / radius;
+}
+
+// The ground detail's coarse scale (terrain/detail.glsl): the meadow's dry and lush patches and the
+// ground's gentle relief at the point at `pointFromCamera` (m, world axes), a field fixed to the world,
+// of mean 0 and unit RMS, and its gradient (per m, world axes): one octave of simplex noise over the
+// world position in cells TERRAIN_PATCH_CELL_M across, its noise point the camera's (formed in
+// double: TerrainNear) plus the camera-relative point, exact near the camera and with no period.
+// The detail texture's coarse scale, which this replaced, repeats every 32 m along its projection's
+// axes: a lattice of blotches seen from 20 m up.
+const float TERRAIN_PATCH_CELL_M = 16.0f;
+// 1 / the noise's RMS over the world, and the RMS of the field's slope along the ground (per m, both
+// components) then (tests/test_terrain_near.cpp measures both).
+const float TERRAIN_PATCH_RMS_SCALE = 2.66f;
+const float TERRAIN_PATCH_SLOPE_RMS = 0.399f;
+float terrainPatchesNear(vec3 pointFromCamera, TerrainNear near, OUT(vec3) gradient) {
+    vec3 q = terrainXyz(near.patchOffset) + pointFromCamera * (1.0f / TERRAIN_PATCH_CELL_M);
+    vec3 g;
+    float n = simplexNoiseGradFrom(terrainXyz(near.patchLattice), q, g);
+    gradient = g * (TERRAIN_PATCH_RMS_SCALE / TERRAIN_PATCH_CELL_M);
+    return TERRAIN_PATCH_RMS_SCALE * n;
 }
 
 // Height (m above sea level) at the point at `pointFromCamera` (m, world axes) and its

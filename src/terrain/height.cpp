@@ -50,7 +50,7 @@ glsl::TerrainShape toGlsl(const TerrainShape& s) {
 
 }  // namespace
 
-static_assert(sizeof(glsl::TerrainNear) == sizeof(TerrainNear) && sizeof(TerrainNear) == 23 * 16 &&
+static_assert(sizeof(glsl::TerrainNear) == sizeof(TerrainNear) && sizeof(TerrainNear) == 25 * 16 &&
                   offsetof(TerrainNear, octaveLattice) == 48 && offsetof(TerrainNear, octaveOffset) == 208,
               "std140 layout of TerrainNear");
 
@@ -77,16 +77,16 @@ TerrainNear makeTerrainNear(const TerrainShape& shape, const noise::CubeMap& con
     near.continent = glm::vec4(static_cast<float>(value(up)), glm::vec3(gradient));
     // Octave k's noise point 2^k (frequency * up + offset), split as simplexNoiseGrad splits
     // it (skew, floor, unskew), in double; the lattice point reduced modulo 289, where the
-    // noise repeats.
+    // noise repeats. The same for the ground's patches, at the camera's position in their cells.
+    const auto split = [](const glm::dvec3& p, glm::vec4& lattice, glm::vec4& offset) {
+        const glm::dvec3 cell = glm::floor(p + (p.x + p.y + p.z) / 3.0);
+        lattice = glm::vec4(glm::vec3(cell - 289.0 * glm::floor(cell / 289.0)), 0.0f);
+        offset = glm::vec4(glm::vec3(p - cell + (cell.x + cell.y + cell.z) / 6.0), 0.0f);
+    };
     const glm::dvec3 base = up * double(shape.mountainFrequency) + glm::dvec3(glm::vec3(shape.mountainOffset));
     double frequency = 1.0;
-    for (int k = 0; k < 10; ++k, frequency *= 2.0) {
-        const glm::dvec3 p = base * frequency;
-        const glm::dvec3 cell = glm::floor(p + (p.x + p.y + p.z) / 3.0);
-        const glm::dvec3 offset = p - cell + (cell.x + cell.y + cell.z) / 6.0;
-        near.octaveLattice[k] = glm::vec4(glm::vec3(cell - 289.0 * glm::floor(cell / 289.0)), 0.0f);
-        near.octaveOffset[k] = glm::vec4(glm::vec3(offset), 0.0f);
-    }
+    for (int k = 0; k < 10; ++k, frequency *= 2.0) split(base * frequency, near.octaveLattice[k], near.octaveOffset[k]);
+    split(cameraPosition / double(glsl::TERRAIN_PATCH_CELL_M), near.patchLattice, near.patchOffset);
     return near;
 }
 
@@ -100,6 +100,8 @@ glsl::TerrainNear toGlsl(const TerrainNear& n) {
         g.octaveLattice[k] = n.octaveLattice[k];
         g.octaveOffset[k] = n.octaveOffset[k];
     }
+    g.patchLattice = n.patchLattice;
+    g.patchOffset = n.patchOffset;
     return g;
 }
 }  // namespace
@@ -108,6 +110,12 @@ float terrainHeightNearGrad(glm::vec3 pointFromCamera, const TerrainNear& near, 
                             glm::vec3& gradient) {
     return glsl::terrainHeightNearGrad(pointFromCamera, toGlsl(near), toGlsl(shape), gradient);
 }
+
+float terrainPatchesNear(glm::vec3 pointFromCamera, const TerrainNear& near, glm::vec3& gradient) {
+    return glsl::terrainPatchesNear(pointFromCamera, toGlsl(near), gradient);
+}
+
+float terrainPatchSlopeRms() { return glsl::TERRAIN_PATCH_SLOPE_RMS; }
 
 bool terrainRayHitNear(glm::vec3 start, const TerrainNear& near, const TerrainShape& shape, glm::vec3& hit) {
     return glsl::terrainRayHitNear(start, toGlsl(near), toGlsl(shape), hit);

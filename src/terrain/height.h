@@ -95,6 +95,8 @@ struct TerrainNear {
     glm::vec4 continent;            // x: continent value at the camera; yzw: its gradient per radian
     glm::vec4 octaveLattice[10];    // per mountain octave: lattice point (skewed, modulo 289)
     glm::vec4 octaveOffset[10];     // ... and the offset from it (unskewed)
+    glm::vec4 patchLattice;         // the ground's patches' noise point at the camera: lattice point (skewed, modulo 289)
+    glm::vec4 patchOffset;          // ... and the offset from it (unskewed)
 };
 
 // The near field for a camera at `cameraPosition` (m, world, from the planet centre) over a
@@ -109,6 +111,10 @@ float terrainHeightNearGrad(glm::vec3 pointFromCamera, const TerrainNear& near, 
 // Where the ray from the camera through `start` (camera-relative, near the surface) meets the
 // height field; false where it does not converge there, and `hit` is then `start` moved along
 // the vertical onto the height field. GLSL: terrainRayHitNear.
+// The ground's dry and lush patches at the camera-relative point (GLSL terrainPatchesNear).
+float terrainPatchesNear(glm::vec3 pointFromCamera, const TerrainNear& near, glm::vec3& gradient);
+// The RMS of that field's slope along the ground, per m, which the detail divides by (GLSL TERRAIN_PATCH_SLOPE_RMS).
+float terrainPatchSlopeRms();
 bool terrainRayHitNear(glm::vec3 start, const TerrainNear& near, const TerrainShape& shape, glm::vec3& hit);
 
 // The same search with at most `steps` Newton steps; with one, the step taken is trusted where the
