@@ -141,6 +141,7 @@ inline std::vector<float> readDepth(const gl::Texture& texture, glm::ivec2 size)
 }
 inline std::vector<GLubyte> readStencil(const gl::Texture& texture, glm::ivec2 size) {
     std::vector<GLubyte> stencil(static_cast<std::size_t>(size.x) * size.y);
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);  // rows of any width, a byte a pixel
     glGetTextureImage(texture.id(), 0, GL_STENCIL_INDEX, GL_UNSIGNED_BYTE, static_cast<GLsizei>(stencil.size()),
                       stencil.data());
     return stencil;

@@ -23,14 +23,6 @@ using namespace planet;
 namespace {
 class SkyMarchSplit : public test::GLTest {};
 
-std::vector<std::uint8_t> readStencil(const gl::Texture& texture, glm::ivec2 size) {
-    std::vector<std::uint8_t> values(static_cast<std::size_t>(size.x) * size.y);
-    glPixelStorei(GL_PACK_ALIGNMENT, 1);
-    glGetTextureImage(texture.id(), 0, GL_STENCIL_INDEX, GL_UNSIGNED_BYTE, static_cast<GLsizei>(values.size()),
-                      values.data());
-    return values;  // rows from the bottom, as GL keeps them
-}
-
 std::size_t differingValues(const ImageRGBAF& a, const ImageRGBAF& b) {
     std::size_t n = 0;
     for (std::size_t i = 0; i < a.pixels.size(); ++i) n += a.pixels[i] != b.pixels[i] ? 1 : 0;
@@ -63,7 +55,7 @@ TEST_F(SkyMarchSplit, TheBlocksThatMeetNoCloudAreMarchedWithoutTheCloudsCodeToTh
 
         // The marks against the CPU's: a block whose 16 pixels all meet no cloud is marked (its traced
         // pixel is one of them), one whose 16 all reach past the clear sky is not.
-        const std::vector<std::uint8_t> marks = readStencil(a.stencil, lattice);
+        const std::vector<std::uint8_t> marks = test::readStencil(a.stencil, lattice);
         const ImageRGBAF distance = readTextureRGBAF(split.targets().surfaceDistance(), size.x, size.y);
         const double clearKm = split.lastPrepare().clearAxisKm;
         // (The march runs on the blocks around the pixels that can see the air: from orbit, not on space.)

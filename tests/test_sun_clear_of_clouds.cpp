@@ -57,13 +57,7 @@ TEST_F(SunClearOfClouds, OnePassMarksTheDarkDepthsAndTheClearSunWithTheirOwnValu
     auto perMark = std::make_unique<Renderer>(test::repoPaths().shaders(), atmosphere::TableSizes::reduced());
     perMark->setStencilExport(false);
     const glm::ivec2 size{160, 90};
-    const auto readMarks = [&](const Renderer& r) {
-        std::vector<std::uint8_t> values(static_cast<std::size_t>(size.x) * size.y);
-        glPixelStorei(GL_PACK_ALIGNMENT, 1);
-        glGetTextureImage(r.targets().surfaceStencil().id(), 0, GL_STENCIL_INDEX, GL_UNSIGNED_BYTE,
-                          static_cast<GLsizei>(values.size()), values.data());
-        return values;
-    };
+    const auto readMarks = [&](const Renderer& r) { return test::readStencil(r.targets().surfaceStencil(), size); };
     std::printf("ARB_shader_stencil_export: %s\n",
                 epoxy_has_gl_extension("GL_ARB_shader_stencil_export") ? "yes (one pass)" : "no (a pass per mark)");
     for (const std::string view : {"ground", "sea"}) {

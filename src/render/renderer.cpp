@@ -660,18 +660,18 @@ void Renderer::drawSkyMarch(const Scene& scene) {
 // clock on: the general program over every pixel cost 126 ms, docs/PERFORMANCE.md, twenty-third).
 // The terrain's and the sea's stencil values stay in the lower bits.
 void Renderer::drawSkyTemporalSplit(const Scene& scene) {
-    constexpr GLuint kOffLayer = 0x80;
+    constexpr GLuint kNoCloud = 0x80;
     glBindFramebuffer(GL_FRAMEBUFFER, targets_.hdrStencilFramebuffer());
-    stencilMark(kOffLayer, kOffLayer);
+    stencilMark(kNoCloud, kNoCloud);
     glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
     glUseProgram(skyNoCloud_.program().id());
     glUniform1f(0, lastPrepare_.clearAxisKm);
     drawScissored(lastPrepare_.skyBound, targets_.size());
     glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
     // Modes: 1 STILL_FRAME, 2 STILL_FRAME_UNJITTERED (the jitter stood too); 0 the general program.
-    stencilTest(kOffLayer, kOffLayer);
+    stencilTest(kNoCloud, kNoCloud);
     drawSkyBound(skyTemporal_, scene, lastPrepare_.jitterStood ? 2 : 1);
-    stencilTest(kOffLayer, kOffLayer, false);
+    stencilTest(kNoCloud, kNoCloud, false);
     drawSkyBound(skyTemporal_, scene, 0);
     stencilOff();
     glBindFramebuffer(GL_FRAMEBUFFER, targets_.hdrFramebuffer());
@@ -696,10 +696,9 @@ double Renderer::clearAxisKm(const Camera& camera) const {
 // it, D / R; the sphere's curvature only shortens the climb), and leaves the axis by at most t cos(e).
 // So D + t cos(e) < Rc, solved by halving; and a view distance D is at least view depth D cos(the
 // view's half diagonal).
-float Renderer::clearSkyDepth(const Scene& scene, const Camera& camera, glm::ivec2 size) const {
+float Renderer::clearSkyDepth(const Scene& scene, const Camera& camera, glm::ivec2 size, double clearKm) const {
     const double radiusKm = scene.planetRadiusM() / 1000.0;
     const glm::dvec3 up = glm::normalize(camera.position);
-    const double clearKm = clearAxisKm(camera);
     const double sunElevation = std::asin(std::clamp(glm::dot(scene.sunDirection(), up), -1.0, 1.0));
     const double climbKm = clouds_.block().topRadius - (radiusKm - scene.terrain.ocean_depth_m / 1000.0);
     const auto fits = [&](double d) {
@@ -811,8 +810,9 @@ void Renderer::prepare(const Scene& scene, const Camera& camera, glm::ivec2 size
     report.cloudsUpdated = clouds_.update(scene, camera, size.y);
     clouds_.bind();
     report.cloudsOff = cloudsOffPrograms_ && clouds_.block().enabled == 0;
-    report.clearSkyDepth = clearSkyDepth(scene, camera, size);
-    report.clearAxisKm = static_cast<float>(std::max(clearAxisKm(camera), 0.0));
+    const double clearKm = clearAxisKm(camera);  // (one clear sky map lookup)
+    report.clearSkyDepth = clearSkyDepth(scene, camera, size, clearKm);
+    report.clearAxisKm = static_cast<float>(std::max(clearKm, 0.0));
     report.cloudFarField = !report.cloudsOff && cloudFarFieldPrograms_ &&
                            clouds::seenInFarFieldOnly(clouds_.block(), glm::length(camera.position) / 1000.0,
                                                       highestGroundM / 1000.0);

@@ -267,7 +267,7 @@ private:
     bool historyUsable(const Scene& scene, const Camera& camera, bool resized) const;
     // Space around the air's bound where it does not fill the frame (render/sky_space.frag), in
     // up to four scissored bands: the sky passes then run scissored to the bound.
-    float clearSkyDepth(const Scene& scene, const Camera& camera, glm::ivec2 size) const;
+    float clearSkyDepth(const Scene& scene, const Camera& camera, glm::ivec2 size, double clearKm) const;
     double clearAxisKm(const Camera& camera) const;
     void drawSurfaceLight(const Scene& scene);
     void drawSpaceAround(const ScreenRect& skyBound) const;
