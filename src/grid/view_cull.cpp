@@ -81,4 +81,29 @@ std::vector<bool> gridBlocksInView(const std::vector<PatchRun>& blocks, const Gr
     return shown;
 }
 
+std::vector<bool> gridBlocksWhere(const std::vector<PatchRun>& blocks, const GridBlock& grid,
+                                  const std::vector<bool>& among,
+                                  const std::function<bool(const glm::dvec3& centre, double angle)>& covered) {
+    std::vector<bool> result(blocks.size(), false);
+    std::vector<glm::dvec3> points;
+    for (std::size_t i = 0; i < blocks.size(); ++i) {
+        if (!among.empty() && !among[i]) continue;
+        const auto holds = [&](const PatchRun& run) {
+            const Cap cap = blockCap(run, grid, points);
+            return cap.angle < 0.5 * 3.14159265358979 && covered(cap.centre, cap.angle);
+        };
+        if (holds(blocks[i])) {
+            result[i] = true;
+            continue;
+        }
+        // Else patch by patch (a run's cap is the wider; the control stage tests each patch).
+        bool all = true;
+        for (int y = blocks[i].pointMin.y; all && y < blocks[i].pointMax.y; ++y)
+            for (int x = blocks[i].pointMin.x; all && x < blocks[i].pointMax.x; ++x)
+                all = holds(PatchRun{0, 1, {x, y}, {x + 1, y + 1}});
+        result[i] = all;
+    }
+    return result;
+}
+
 }  // namespace planet

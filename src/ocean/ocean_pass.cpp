@@ -79,15 +79,6 @@ void OceanPass::prepare(const Scene& scene, const Camera& camera, double radians
     const GridProjection projection = gridProjection(anchor_, radius, maxHeight);
     const GridBlock gridBlock = makeGridBlock(projection, grid.exponent, camera.position, radius, grid.size, mesh_.stride());
     mesh_.setProjection(gridBlock);
-    // The runs of patches that cannot reach the view not drawn (grid/view_cull.h): the control
-    // stage formed four directions in double and read the continents for every patch of the grid.
-    // The waves move the surface up, down and sideways by at most the sum of their amplitudes.
-    mesh_.showBlocks(viewCulling_ && !mesh_.blocks().empty()
-                         ? gridBlocksInView(mesh_.blocks(), gridBlock, camera, aspect, radius - maxHeight,
-                                            radius + maxHeight, maxHeight)
-                         : std::vector<bool>{});
-    uploadWaves(scene, camera);
-    ocean::OceanBlock block = ocean::makeOceanBlock(scene);
     if (continents != continents_) {  // a new map: measure its slope once
         continents_ = continents;
         lipschitz_ = continents ? ocean::continentLipschitz(*continents) : 0.0;
@@ -95,6 +86,30 @@ void OceanPass::prepare(const Scene& scene, const Camera& camera, double radians
         sampleSlack_ = continents ? ocean::continentSampleSlack(*continents, lipschitz_) : 0.0;
     }
     landContinent_ = continents ? ocean::landContinentThreshold(scene.terrain, scene.ocean.sea_level_m, maxHeight) : 2.0;
+    // The runs of patches that cannot reach the view not drawn (grid/view_cull.h): the control
+    // stage formed four directions in double and read the continents for every patch of the grid.
+    // The waves move the surface up, down and sideways by at most the sum of their amplitudes.
+    std::vector<bool> shown = viewCulling_ && !mesh_.blocks().empty()
+                                  ? gridBlocksInView(mesh_.blocks(), gridBlock, camera, aspect, radius - maxHeight,
+                                                     radius + maxHeight, maxHeight)
+                                  : std::vector<bool>{};
+    // Nor those over land throughout, where the ground stands above the highest crest (the control
+    // stage's overLand for the whole run, with the map as the CPU filters it: the GPU's filter differs
+    // by at most the slack in patchLandContinent; the cap widened by the waves' sideways reach). At
+    // the inland `ground` view the control stage ran for every run in view to cull all of them.
+    if (landCulling_ && continents && landContinent_ <= 1.0 && !mesh_.blocks().empty()) {
+        const double threshold = landContinent_ + sampleSlack_, sidewaysRad = maxHeight / radius;
+        const std::vector<bool> overLand = gridBlocksWhere(
+            mesh_.blocks(), gridBlock, shown, [&](const glm::dvec3& centre, double angle) {
+                return terrain::continentValue(glm::vec3(centre), *continents) - lipschitz_ * (angle + sidewaysRad + 1.0e-6) >
+                       threshold;
+            });
+        if (shown.empty()) shown.assign(overLand.size(), true);
+        for (std::size_t i = 0; i < shown.size(); ++i) shown[i] = shown[i] && !overLand[i];
+    }
+    mesh_.showBlocks(std::move(shown));
+    uploadWaves(scene, camera);
+    ocean::OceanBlock block = ocean::makeOceanBlock(scene);
     darkContinent_ = continents ? ocean::darkFloorContinentThreshold(scene.terrain, scene.ocean.sea_level_m) : -2.0;
     block.landContinent = static_cast<float>(landContinent_);
     block.patchLandContinent = static_cast<float>(landContinent_ + sampleSlack_);
