@@ -82,8 +82,7 @@ std::vector<bool> gridBlocksInView(const std::vector<PatchRun>& blocks, const Gr
 }
 
 std::vector<bool> gridBlocksWhere(const std::vector<PatchRun>& blocks, const GridBlock& grid,
-                                  const std::vector<bool>& among,
-                                  const std::function<bool(const glm::dvec3& centre, double angle)>& covered) {
+                                  const std::vector<bool>& among, const CapTest& covered, const CapTest& partly) {
     std::vector<bool> result(blocks.size(), false);
     std::vector<glm::dvec3> points;
     for (std::size_t i = 0; i < blocks.size(); ++i) {
@@ -92,10 +91,12 @@ std::vector<bool> gridBlocksWhere(const std::vector<PatchRun>& blocks, const Gri
             const Cap cap = blockCap(run, grid, points);
             return cap.angle < 0.5 * 3.14159265358979 && covered(cap.centre, cap.angle);
         };
-        if (holds(blocks[i])) {
+        const Cap cap = blockCap(blocks[i], grid, points);
+        if (cap.angle < 0.5 * 3.14159265358979 && covered(cap.centre, cap.angle)) {
             result[i] = true;
             continue;
         }
+        if (!partly(cap.centre, cap.angle)) continue;
         // Else patch by patch (a run's cap is the wider; the control stage tests each patch).
         bool all = true;
         for (int y = blocks[i].pointMin.y; all && y < blocks[i].pointMax.y; ++y)

@@ -30,13 +30,13 @@ std::vector<bool> gridBlocksInView(const std::vector<PatchRun>& blocks, const Gr
                                    double sidewaysM = 0.0);
 
 // For each of `blocks`, whether `covered(centre, angle)` holds for the cap of the directions its
-// patches span (its unit centre and angular radius, rad, as gridBlocksInView bounds them), or else
-// for each of its patches' caps; false
-// without asking where `among` (one flag per block, or empty for all) is false. The sea asks whether
-// the land stands above its highest crest over the whole cap (src/ocean/ocean_pass.cpp): its control
-// stage would cull each of those patches (ocean/ocean.tesc, overLand) after running for it.
+// patches span (its unit centre and angular radius, rad, as gridBlocksInView bounds them), or else,
+// where `partly(centre, angle)` says some of that cap may be covered, for each of its patches' caps;
+// false without asking where `among` (one flag per block, or empty for all) is false. The sea asks
+// whether the land stands above its highest crest over the whole cap (src/ocean/ocean_pass.cpp): its
+// control stage would cull each of those patches (ocean/ocean.tesc, overLand) after running for it.
+using CapTest = std::function<bool(const glm::dvec3& centre, double angle)>;
 std::vector<bool> gridBlocksWhere(const std::vector<PatchRun>& blocks, const GridBlock& grid,
-                                  const std::vector<bool>& among,
-                                  const std::function<bool(const glm::dvec3& centre, double angle)>& covered);
+                                  const std::vector<bool>& among, const CapTest& covered, const CapTest& partly);
 
 }  // namespace planet

@@ -99,11 +99,15 @@ void OceanPass::prepare(const Scene& scene, const Camera& camera, double radians
     // the inland `ground` view the control stage ran for every run in view to cull all of them.
     if (landCulling_ && continents && landContinent_ <= 1.0 && !mesh_.blocks().empty()) {
         const double threshold = landContinent_ + sampleSlack_, sidewaysRad = maxHeight / radius;
+        // Over land throughout where the value less the slope bound over the cap passes the threshold;
+        // some of it may be where the value plus that does (at sea no patch is tested one by one).
+        const auto bound = [&](const glm::dvec3& centre, double angle, double sign) {
+            return terrain::continentValue(glm::vec3(centre), *continents) +
+                       sign * lipschitz_ * (angle + sidewaysRad + 1.0e-6) > threshold;
+        };
         const std::vector<bool> overLand = gridBlocksWhere(
-            mesh_.blocks(), gridBlock, shown, [&](const glm::dvec3& centre, double angle) {
-                return terrain::continentValue(glm::vec3(centre), *continents) - lipschitz_ * (angle + sidewaysRad + 1.0e-6) >
-                       threshold;
-            });
+            mesh_.blocks(), gridBlock, shown, [&](const glm::dvec3& c, double a) { return bound(c, a, -1.0); },
+            [&](const glm::dvec3& c, double a) { return bound(c, a, 1.0); });
         if (shown.empty()) shown.assign(overLand.size(), true);
         for (std::size_t i = 0; i < shown.size(); ++i) shown[i] = shown[i] && !overLand[i];
     }
