@@ -86,9 +86,11 @@ TEST_F(NearHeightGridTest, TheGridGivesTheFieldsHeightsNormalsAndPicture) {
         // farthest pixels that take the Newton step, where the ray runs at a fortieth of the ground's
         // slope and the detail's 0.5 m normals follow its hit), picture 0.028 % on average; beach 0.044
         // degrees. With the grid's points 19.8 m apart instead of 9.9: 345 pixels, 0.083 %; bilinear
-        // heights instead of the cubic: every pixel, 6.8 % (1280x720).
+        // heights instead of the cubic: every pixel, 6.8 % (1280x720). Since the detail's coarse scale is the
+        // world-fixed field in 16 m cells (terrain/height.glsl, terrainPatchesNear), whose slope those far
+        // hits also follow: ground 59 pixels over 0.2 degrees, 2.67 at most, the picture the same 0.028 %.
         EXPECT_LT(worstHeight, 0.5) << view;  // the G-buffer's half floats: 0.25 m apart at 400 m
-        EXPECT_LT(worstAngle, 2.0) << view;
+        EXPECT_LT(worstAngle, 3.5) << view;
         EXPECT_LT(turned, ground / 100) << view;
         EXPECT_LT(sumRelative / ground, 0.001) << view;
     }
