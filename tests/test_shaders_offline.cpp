@@ -49,11 +49,12 @@ TEST(ShadersOffline, EveryStageValidatesWithGlslang) {
         struct Build {
             const char* marker;
             std::vector<const char*> builds;  // each a build of its own: its defines added to every variant so far
+            bool beforeStill = false;         // added to the variants before the still builds instead (it defines STILL_FRAME)
         };
         const Build builds[] = {
             // The reconstruction's still-frame programs (src/render/renderer.cpp: STILL_FRAME, STILL_FRAME_UNJITTERED).
             {"#ifdef STILL_FRAME", {"#define STILL_FRAME\n"}},
-            {"#ifdef STILL_FRAME_UNJITTERED", {"#define STILL_FRAME_UNJITTERED 1\n"}},
+            {"#ifdef STILL_FRAME_UNJITTERED", {"#define STILL_FRAME_UNJITTERED 1\n"}, true},
             // The programs for a camera under the sea (sky and ocean: UNDER_WATER 1).
             {"#ifndef UNDER_WATER", {"#define UNDER_WATER 1\n"}},
             // The ocean's flat-mirror and smooth-mirror programs (src/ocean/ocean_pass.cpp).
@@ -79,8 +80,7 @@ TEST(ShadersOffline, EveryStageValidatesWithGlslang) {
         const std::vector<std::string> beforeStill = variants;  // STILL_FRAME_UNJITTERED: one of the still builds
         for (const Build& b : builds) {
             if (expanded.text.find(b.marker) == std::string::npos) continue;
-            const std::vector<std::string>& base = std::string(b.marker) == "#ifdef STILL_FRAME_UNJITTERED" ? beforeStill
-                                                                                                          : variants;
+            const std::vector<std::string>& base = b.beforeStill ? beforeStill : variants;
             std::vector<std::string> more;
             for (const char* defines : b.builds)
                 for (const std::string& v : base) more.push_back(v + defines);
