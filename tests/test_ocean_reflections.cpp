@@ -74,7 +74,7 @@ Session mountainLake() {
 
 // The shader tree with the screen-space reflections compiled out, in a temporary folder.
 fs::path shadersWithoutReflections() {
-    return test::shadersWith("planet_test_ssr_off", "ocean/screen_space_reflections.glsl",
+    return test::shadersWith("planet_test_ssr_off", "ocean/terrain_reflection_reach.glsl",
                              "#define OCEAN_SCREEN_SPACE_REFLECTIONS 1", "#define OCEAN_SCREEN_SPACE_REFLECTIONS 0");
 }
 
@@ -279,7 +279,7 @@ ListedFrame renderListed(const fs::path& shaders, const Session& s) {
 
 // The shader tree where rays whose reach spans under a pixel are searched too.
 fs::path shadersWithoutPixelReach() {
-    return test::shadersWith("planet_test_ssr_pixel_reach_off", "ocean/screen_space_reflections.glsl",
+    return test::shadersWith("planet_test_ssr_pixel_reach_off", "ocean/terrain_reflection_reach.glsl",
                              "#define TERRAIN_REFLECTION_PIXEL_REACH 1", "#define TERRAIN_REFLECTION_PIXEL_REACH 0");
 }
 
@@ -297,7 +297,7 @@ fs::path shadersWithoutPixelReach() {
 // (the `sea` view) none at all (the every-pixel search lists 11680 there). The beach, where the land is reflected, is what fails
 // (7.5 %) when the bound lists too few; orbit and space, when it lists too many.
 TEST_F(OceanReflections, OnlyPixelsWithLandWithinReachAreSearchedAndThatChangesNoPixel) {
-    const fs::path searchAll = test::shadersWith("planet_test_ssr_all", "ocean/screen_space_reflections.glsl",
+    const fs::path searchAll = test::shadersWith("planet_test_ssr_all", "ocean/terrain_reflection_reach.glsl",
                                                  "#define TERRAIN_REFLECTION_SEARCH_ALL 0",
                                                  "#define TERRAIN_REFLECTION_SEARCH_ALL 1");
     const fs::path withoutPixelReach = shadersWithoutPixelReach();

@@ -60,6 +60,8 @@ TEST(ShadersOffline, EveryStageValidatesWithGlslang) {
             // The ocean's flat-mirror and smooth-mirror programs (src/ocean/ocean_pass.cpp).
             {"#if OCEAN_FLAT_MIRROR", {"#define OCEAN_FLAT_MIRROR 1\n"}},
             {"#if OCEAN_SMOOTH_MIRROR", {"#define OCEAN_SMOOTH_MIRROR 1\n"}},
+            // The sea's light on the open sea (src/ocean/ocean_pass.cpp: OPEN_SEA 1).
+            {"#ifndef OPEN_SEA", {"#define OPEN_SEA 1\n"}},
             // The ocean mesh's fragments in their far-field build (OCEAN_FAR_FIELD 1).
             {"#if !OCEAN_FAR_FIELD", {"#define OCEAN_FAR_FIELD 1\n"}},
             // The surface light's program for the sea floor's dark depths (SEA_FLOOR_DARK 1).

@@ -13,6 +13,20 @@
 // below the surface. Near the camera the sag is far below a millimetre and nothing changes.
 // Where the water is thinner than SHORE_FADE_M the sea fades into the floor (its coverage), so
 // the shoreline is soft and the two surfaces never fight for depth.
+//
+// The far field's build (OCEAN_FAR_FIELD) built with STENCIL_EXPORT 1, where the GL has
+// ARB_shader_stencil_export: each sea pixel gives its own stencil value, OceanPass::kOpenSeaStencil
+// where no land lies within reach of the water's reflected ray or its sun ray (openSea, below),
+// OceanPass::kSeaStencil elsewhere. The water's light then runs its OPEN_SEA build on the first
+// (ocean/sea_light.frag), without the terrain reflection's and shadow's code, which a software
+// renderer ran in every pixel, masked. (Not the mesh's build: near the sea its fragments are two to
+// three per pixel, and the reflected rays' rise is bounded by every wave the pixel resolves.)
+#ifndef STENCIL_EXPORT
+#define STENCIL_EXPORT 0
+#endif
+#if STENCIL_EXPORT
+#extension GL_ARB_shader_stencil_export : require
+#endif
 #include "common/frame_uniforms.glsl"
 #include "terrain/grid.glsl"
 #include "ocean/ocean_block.glsl"
@@ -22,6 +36,12 @@
 #include "terrain/height.glsl"
 #include "terrain/terrain_block.glsl"
 #include "ocean/sea_surface.glsl"
+#if STENCIL_EXPORT
+#include "ocean/gerstner.glsl"
+#include "ocean/ocean_waves.glsl"
+#include "terrain/terrain_shadow.glsl"
+#include "ocean/terrain_reflection_reach.glsl"
+#endif
 
 // OCEAN_FAR_FIELD 1: the build for a camera so high that every sea pixel is in the far field
 // (src/ocean/far_field.h), drawn over the ground sphere's rectangle instead of the mesh: each
@@ -53,6 +73,48 @@ layout(location = 3) out vec4 outSeaSurface2;
 layout(depth_greater) out float gl_FragDepth;  // reversed-Z: only ever moved towards the camera
 
 const float SHORE_FADE_M = 0.5;  // water path over which the sea fades in at the shore
+
+#if STENCIL_EXPORT
+// The stencil values (src/ocean/ocean_pass.h): both hold kSeaStencil's bits, so a test of those
+// bits alone finds every sea pixel.
+const int SEA_STENCIL = 3;
+const int OPEN_SEA_STENCIL = 7;
+// How much lower than the sea the reaches below the land are taken from, m: the light forms its
+// own from the same values in another program, whose sums may round otherwise (a few ulp of heights
+// of kilometres, a millimetre); this keeps every pixel marked open one that the light finds open.
+const float OPEN_SEA_MARGIN_M = 0.05;
+
+// The least sine of elevation that the light's reflected ray (ocean/sea_light.frag) may have at the
+// sea pixel along `view` with footprint `footprint`: the view's reflection in a normal that leans
+// at most `tilt` (oceanNormalTiltBound, at a footprint a little smaller, which resolves no fewer
+// waves) rises at least (view's elevation - 2 tilt). Below 0.02 the light may turn a normal facing
+// away from the camera towards it (cosView < 0.01), and only ocean/cloud_reflection.glsl's
+// SeaReflectedRay's clamp holds: a level ray.
+float reflectedRiseBound(vec3 view, vec3 up, float footprint) {
+    // sin(elevation - 2 tilt) from tan(tilt) = t: cos 2 tilt = (1 - t^2) / (1 + t^2), sin 2 tilt = 2t / (1 + t^2)
+    // (no wave resolved, t = 0: the view's own elevation, exactly).
+    float t = min(oceanNormalTiltBound(0.99 * footprint), 1.0e3);
+    float sinElevation = clamp(-dot(view, up), 0.0, 1.0);
+    float cosElevation = sqrt(1.0 - sinElevation * sinElevation);
+    float rise = (sinElevation * (1.0 - t * t) - cosElevation * 2.0 * t) / (1.0 + t * t);
+    return rise >= 0.02 ? rise : 0.0;
+}
+
+// Whether the water's light at the sea pixel along `view`, `seaDistance` away, at `up` (continent
+// value `e`) surely finds no land within reach of its reflected ray (terrainMayBeReflected false)
+// nor of its sun ray (no terrain shadow can fall here): the light's own tests, with reaches no
+// shorter than its own (for a reflected ray rising no more than reflectedRiseBound, from a little
+// below the sea; terrainReachBelowHeightKm falls as a ray rises) and the pixel's share of the reach
+// rounded up.
+bool openSea(vec3 view, vec3 up, float e, float seaDistance, float footprint, float pixelAngle) {
+    vec2 reachKm = terrainReachesBelowLandKmAt(e, ocean.seaLevel - OPEN_SEA_MARGIN_M,
+                                               vec2(reflectedRiseBound(view, up, footprint), dot(up, frame.sunDirection)),
+                                               vec2(1.0e30, TERRAIN_SHADOW_MAX_KM), frame.planetRadius / M_PER_KM,
+                                               ocean.continentLipschitz, ocean.continentSampleSlackRad, terrainShape);
+    return !terrainShadowMayReachSeaWithin(reachKm.y, ocean.seaLevel, ocean.continentLipschitz) &&
+           !terrainMayBeReflected(reachKm.x * M_PER_KM * 1.001, seaDistance * 0.999, pixelAngle);
+}
+#endif
 
 void main() {
     ivec2 pixel = ivec2(gl_FragCoord.xy);
@@ -103,7 +165,8 @@ void main() {
     // shading it would: ground surely above the highest crest (the continent value alone,
     // src/ocean/land_cull.h) is land, and a fragment no nearer than the terrain behind it
     // fails the depth test (the depth only grows from the seabed copy's).
-    if (ocean.landCulling != 0 && continentValue(up, uContinents) >= ocean.landContinent) discard;
+    float continent = continentValue(up, uContinents);
+    if (ocean.landCulling != 0 && continent >= ocean.landContinent) discard;
     float pixelAngle = radiansPerPixel();
     // What the sag means along this ray.
     float cosIncidence = max(abs(dot(view, up)), 0.05);
@@ -165,4 +228,7 @@ void main() {
     SeaSurface surface = SeaSurface(up, waterDepth, teOffset, seaDistance, coverage, behindLand,
                                     mix(meshPath, depthPath, farness), teGridPoint);
     packSeaSurface(surface, outSeaSurface0, outSeaSurface1, outSeaSurface2);
+#if STENCIL_EXPORT
+    gl_FragStencilRefARB = openSea(view, up, continent, seaDistance, footprint, pixelAngle) ? OPEN_SEA_STENCIL : SEA_STENCIL;
+#endif
 }

@@ -47,6 +47,24 @@ vec3 oceanDisplacement(vec3 v, vec3 dv, float footprint, float waterDepth) {
 // 35/128: from afar a lighter band along the break, near foam lines on the crests running in.
 const float OCEAN_FOAM_CREST_MEAN = 35.0 / 128.0;
 
+// How far oceanNormalAndFoam's normal at `footprint` may lean from the vertical, as a tangent: each
+// wave the footprint resolves moves it sideways by lod A k cos(phase) along its travel (a unit
+// tangent) and shortens its vertical part by lod Q' A k sin(phase) (Q' <= |Q|; shoaling only lowers
+// A), so tan(tilt) <= sum lod A k / (1 - sum lod |Q| A k). 1e30 (any tilt) where that sum reaches 1.
+float oceanNormalTiltBound(float footprint) {
+    float sideways = 0.0;
+    float shortened = 0.0;
+    for (int i = 0; i < ocean.waveCount; ++i) {
+        OceanWave w = oceanWaves[i];
+        float lod = gerstnerLod(w, footprint);
+        if (lod <= 0.0) break;  // sorted longest first: the rest are shorter still
+        float ak = lod * w.shape.x * w.scale.x;
+        sideways += ak;
+        shortened += abs(w.shape.y) * ak;
+    }
+    return shortened < 1.0 ? sideways / (1.0 - shortened) : 1.0e30;
+}
+
 // Michelic Eq. 10's normal from the waves a pixel of `footprint` metres resolves; the
 // slopes of the waves it cannot resolve go into slopeVariance instead (the mean square
 // slope of a sine of amplitude A and wavenumber k is (A k)^2 / 2), which widens the sun's

@@ -33,6 +33,14 @@
 // and the far field's sphere; ocean/sea_surface.glsl), over the whole frame: a software renderer
 // shades a 4x4 block of pixels for every triangle touching it, and the mesh's fragments were two
 // to three times the sea's pixels.
+//
+// OPEN_SEA 1: the build for the pixels ocean/ocean.frag marked as the open sea (OceanPass::
+// kOpenSeaStencil: no land within reach of the reflected ray or the sun's), where the light's own
+// tests find the same: no terrain reflection to list, no terrain shadow, so none of their code
+// (a software renderer ran it for every pixel, masked: `orbit`, 1280x720, the light 31 -> 23 ms).
+#ifndef OPEN_SEA
+#define OPEN_SEA 0
+#endif
 #include "common/frame_uniforms.glsl"
 #define SUN_VISIBILITY_TERRAIN 1  // the terrain's shadows on the water (terrain/terrain_shadow.glsl)
 #include "atmosphere/interface.glsl"
@@ -165,6 +173,9 @@ void main() {
     // sea reflection pass (the clouds' change, but as a flat mirror, which has it) and the
     // terrain reflection pass, which searches the terrain where it may be reflected instead.
     outSeaReflection = vec4(reflected, coverage * fresnel);
+#if OPEN_SEA
+    vec2 reachKm = vec2(0.0);  // (the mark's: no land within reach of either)
+#else
     // How far the reflected ray (x) and the sun's (y) can still meet land near the pixel, km, both
     // at once (one continent value, one loop of turns).
     vec2 reachKm = terrainReachesBelowLandKm(up, ocean.seaLevel, vec2(dot(reflected, up), dot(up, sun)),
@@ -175,6 +186,7 @@ void main() {
         outSeaSkyReflection = vec4(sky, seaDistance);
         if (landOnScreen != 0u || TERRAIN_REFLECTION_SEARCH_ALL != 0) listPixel(pixel);
     }
+#endif
     // The sun's visibility from the water's surface (the clouds' shadows and the terrain's, the
     // march starting at sea level, not on the sea floor), formed once for the light into the
     // water and the glitter.
@@ -192,12 +204,15 @@ void main() {
         // not agree (a shadow's edge, the shore), and not here: the pixel is shaded as lit by the
         // terrain and listed (render/terrain_shadow_list.glsl), since a software renderer runs a
         // march's first turn for every pixel here, listed or not (README "Programs, not branches").
-        bool mayReach = terrainShadowMayReachSeaWithin(reachKm.y, ocean.seaLevel, ocean.continentLipschitz);
+        bool mayReach = OPEN_SEA == 0 && terrainShadowMayReachSeaWithin(reachKm.y, ocean.seaLevel, ocean.continentLipschitz);
         float clearance = 1.0;  // rad: lit, where no land is within reach
         // (Without shadows, or built without them, the march finds the sun clear.)
         marchLater = SUN_VISIBILITY_TERRAIN != 0 && mayReach && terrainShadows != 0;
 #if SUN_VISIBILITY_TERRAIN
-        bool agree = terrainClearanceFromSamples(terrainShadowSamples, pixel, 1, radius, clearance, meanClearance);
+        // (Where no land is within reach the pixel is lit, whatever the samples around it found: they
+        // lie at other points, whose reach may hold land.)
+        bool agree = mayReach && terrainClearanceFromSamples(terrainShadowSamples, pixel, 1, radius, clearance,
+                                                             meanClearance);
         if (OCEAN_TERRAIN_SHADOW_FROM_SAMPLES != 0 && terrainShadows != 0 && agree) marchLater = false;
 #endif
         if (!marchLater) sunVisibility *= terrainShadowDiscShare(clearance, radius);

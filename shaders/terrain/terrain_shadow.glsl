@@ -233,13 +233,12 @@ const int TERRAIN_REACH_TIGHTENINGS = 3;
 // for every group of pixels, and the two loops apart were twice that (orbit, 1280x720: the sea's
 // light 3-4 ms). A reach at 0 stays 0 through the turns the other takes (each turn's reach is at
 // most the last), so each is what it would be alone.
-vec2 terrainReachesBelowLandKm(vec3 up, float startM, vec2 sinRise, vec2 limitKm, float planetRadiusKm,
-                               float continentLipschitz, float sampleSlackRad, TerrainShape shape,
-                               samplerCube continents) {
+// `e`: the continent value at `up` (continentValue), where the caller has it already.
+vec2 terrainReachesBelowLandKmAt(float e, float startM, vec2 sinRise, vec2 limitKm, float planetRadiusKm,
+                                 float continentLipschitz, float sampleSlackRad, TerrainShape shape) {
     vec2 reach = vec2(min(terrainReachBelowHeightKm(shape.maxHeight, startM, sinRise.x, planetRadiusKm), limitKm.x),
                       min(terrainReachBelowHeightKm(shape.maxHeight, startM, sinRise.y, planetRadiusKm), limitKm.y));
     if (!(continentLipschitz > 0.0f)) return reach;
-    float e = continentValue(up, continents);
     // Until the reaches are 0 (no land near enough to rise into the rays): the open sea leaves
     // after the first turn, and a group of pixels all at open sea with it (a software renderer
     // runs a loop's turns while any pixel of the group is still in it; every turn here ran per
@@ -252,6 +251,13 @@ vec2 terrainReachesBelowLandKm(vec3 up, float startM, vec2 sinRise, vec2 limitKm
                                                          planetRadiusKm));
     }
     return reach;
+}
+vec2 terrainReachesBelowLandKm(vec3 up, float startM, vec2 sinRise, vec2 limitKm, float planetRadiusKm,
+                               float continentLipschitz, float sampleSlackRad, TerrainShape shape,
+                               samplerCube continents) {
+    float e = continentValue(up, continents);
+    return terrainReachesBelowLandKmAt(e, startM, sinRise, limitKm, planetRadiusKm, continentLipschitz,
+                                       sampleSlackRad, shape);
 }
 float terrainReachBelowLandKm(vec3 up, float startM, float sinRise, float limitKm, float planetRadiusKm,
                               float continentLipschitz, float sampleSlackRad, TerrainShape shape,

@@ -24,15 +24,25 @@ double seaRadiusM(const Scene& scene) { return scene.planetRadiusM() + scene.oce
 constexpr int kFlatMirrorMode = 1, kUnderWaterMode = 2, kSmoothMirrorMode = 3;
 constexpr int kGridFlatMirrorMode = 1, kGridSmoothMirrorMode = 2;  // the grid reflection program's modes
 constexpr int kGridReflectionGroup = 64;  // ocean/grid_reflection.comp's local_size_x
+
+// `sources` with `#define name 1` (none: as they are).
+gl::ShaderSources withDefine(const gl::ShaderSources& sources, const char* name) {
+    if (!name) return sources;
+    return {sources.root, sources.preamble + "#define " + name + " 1\n"};
+}
 }  // namespace
 
-OceanPass::OceanPass(const gl::ShaderSources& sources, const atmosphere::TableSizes& tables)
+OceanPass::OceanPass(const gl::ShaderSources& sources, const atmosphere::TableSizes& tables, bool stencilExport)
     : surface_(sources,
                gl::ProgramDesc{"ocean", {"ocean/ocean.vert", "ocean/ocean.tesc", "ocean/ocean.tese", "ocean/ocean.frag"}}),
-      farFieldSurface_(gl::ShaderSources{sources.root, sources.preamble + "#define OCEAN_FAR_FIELD 1\n"},
+      farFieldSurface_(withDefine(withDefine(sources, "OCEAN_FAR_FIELD"), stencilExport ? "STENCIL_EXPORT" : nullptr),
                        gl::ProgramDesc{"ocean, far field", {"common/fullscreen.vert", "ocean/ocean.frag"}}),
       light_(sources, tables, gl::ProgramDesc{"sea light", {"common/fullscreen.vert", "ocean/sea_light.frag"}},
              {"OCEAN_FLAT_MIRROR", "UNDER_WATER", "OCEAN_SMOOTH_MIRROR"}),
+      openSeaLight_(withDefine(sources, "OPEN_SEA"), tables,
+                    gl::ProgramDesc{"sea light, open sea", {"common/fullscreen.vert", "ocean/sea_light.frag"}},
+                    {"OCEAN_FLAT_MIRROR", "UNDER_WATER", "OCEAN_SMOOTH_MIRROR"}),
+      stencilExport_(stencilExport),
       gridReflectionProgram_(sources, tables, gl::ProgramDesc{"ocean grid reflection", {"ocean/grid_reflection.comp"}},
                              {"OCEAN_FLAT_MIRROR", "OCEAN_SMOOTH_MIRROR"}) {
     waves_.label("ocean waves");
@@ -202,6 +212,11 @@ void OceanPass::useLightProgram(const AtmosphereVariant& variant, bool underWate
     const int mode = underWater ? kUnderWaterMode : smoothMirror_ ? kSmoothMirrorMode : flatMirror_ ? kFlatMirrorMode : 0;
     if (mode == kFlatMirrorMode || mode == kSmoothMirrorMode) formGridReflection(variant);
     glUseProgram(light_.get(variant, mode).id());
+    lightMode_ = mode;
+}
+
+void OceanPass::useOpenSeaLightProgram(const AtmosphereVariant& variant) {
+    glUseProgram(openSeaLight_.get(variant, lightMode_).id());
 }
 
 }  // namespace planet

@@ -44,7 +44,9 @@ namespace planet {
 
 class OceanPass {
 public:
-    OceanPass(const gl::ShaderSources& sources, const atmosphere::TableSizes& tables);
+    // `stencilExport`: the GL has ARB_shader_stencil_export, and the far field's draw marks the open sea
+    // with each pixel's own stencil value (kOpenSeaStencil, ocean/ocean.frag).
+    OceanPass(const gl::ShaderSources& sources, const atmosphere::TableSizes& tables, bool stencilExport);
 
     // `continents`: the CPU map the GPU samples (the land culling's bounds are made from it
     // when it changes); `radiansPerPixel`: the angle of a pixel (the flat mirror's test); with
@@ -69,13 +71,19 @@ public:
     // triangle over the pixels drawSurface() marked. `underWater`: the camera under the sea (the
     // frame's PrepareReport), the surface seen from below.
     void useLightProgram(const AtmosphereVariant& variant, bool underWater);
+    // After useLightProgram: its OPEN_SEA build (ocean/sea_light.frag), for the pixels marked
+    // kOpenSeaStencil, in the same mode. Not under the sea (the light passes the sky on there).
+    void useOpenSeaLightProgram(const AtmosphereVariant& variant);
+    // Whether the last prepared frame's surface marks the open sea apart (kOpenSeaStencil): the far
+    // field's draw where the GL lets a fragment give its own stencil value; else all of it kSeaStencil.
+    bool marksOpenSea() const { return stencilExport_ && farField_; }
 
     // Binds the sea's parameters (the last prepare()'s OceanBlock) for a program other than this
     // pass's that reads them: the terrain shadow's samples of the sea's surface.
     void bindBlock() const;
 
     // Its programs that read the atmosphere's tables (the sea's light, and the grid's reflection).
-    std::vector<AtmosphereProgram*> atmospherePrograms() { return {&light_, &gridReflectionProgram_}; }
+    std::vector<AtmosphereProgram*> atmospherePrograms() { return {&light_, &openSeaLight_, &gridReflectionProgram_}; }
     // Those of their variants built so far, and the mesh's (hot reload).
     std::vector<gl::HotProgram*> builtPrograms();
 
@@ -101,6 +109,11 @@ public:
     // The stencil's value the mesh (or its far field's draw) leaves where a sea fragment is the nearest (not the terrain's,
     // which the same stencil held before the ocean pass cleared it: src/terrain/terrain_pass.h).
     static constexpr int kSeaStencil = 3;
+    // ...and where no land lies within reach of its reflected ray or its sun ray (ocean/ocean.frag's
+    // openSea), where the far field's draw marks it (marksOpenSea()): kSeaStencil's bits
+    // and one more, so that a test of kSeaStencil's bits alone finds every sea pixel.
+    static constexpr int kOpenSeaStencil = 7;
+    static constexpr unsigned kSeaStencilBits = 3, kOpenSeaStencilBits = 7;
     // Tests: the patches' stride forced (1, 2, 4 or 8), or 0 (the default) to let the grid's cells
     // on screen decide above the terrain detail's reach (grid/grid_stride.h); the last prepared frame's.
     void setStrideOverride(int stride) { strideOverride_ = stride; }
@@ -129,6 +142,9 @@ private:
     bool farField_ = false;
     bool farFieldAllowed_ = true;
     AtmosphereProgram light_;  // modes OCEAN_FLAT_MIRROR, UNDER_WATER (the surface seen from below), OCEAN_SMOOTH_MIRROR
+    AtmosphereProgram openSeaLight_;  // its OPEN_SEA build, the same modes
+    int lightMode_ = 0;               // the last useLightProgram's
+    bool stencilExport_;
     FlatMirror flatMirrorMode_ = FlatMirror::Auto;
     bool flatMirror_ = false;
     bool smoothMirror_ = false;

@@ -159,7 +159,7 @@ Renderer::Renderer(const std::filesystem::path& shaderRoot, const atmosphere::Ta
       surfaceLight_(sources_, programTables_,
                     gl::ProgramDesc{"surface light", {"common/fullscreen.vert", "render/surface_light.frag"}},
                     {"SEA_FLOOR_DARK", "SUN_CLEAR_OF_CLOUDS"}),
-      ocean_(sources_, programTables_),
+      ocean_(sources_, programTables_, stencilExport_),
       seaReflection_(sources_, programTables_,
                      gl::ProgramDesc{"sea reflection", {"common/fullscreen.vert", "ocean/sea_reflection.frag"}},
                      {"SEA_REFLECTION_COMPOSE", "SEA_REFLECTION_LIST_ALL"}),
@@ -323,7 +323,6 @@ std::vector<Renderer::Pass> Renderer::makePasses() {
                               drawScissored(lastPrepare_.groundBound, targets_.size());  // the sea lies within it
                           });
                           glEndQuery(GL_ANY_SAMPLES_PASSED);
-                          stencilTest(OceanPass::kSeaStencil);
                           glBindFramebuffer(GL_FRAMEBUFFER, targets_.oceanFramebuffer());
                           glBindTextureUnit(binding::UNIT_SEABED_RADIANCE, targets_.seabedRadiance().id());
                           glBindTextureUnit(binding::UNIT_TERRAIN_SHADOW, targets_.terrainShadowSamples().visibility.id());
@@ -351,7 +350,7 @@ std::vector<Renderer::Pass> Renderer::makePasses() {
                           // view the pass's own time went from 23-33 to 18-20 ms on llvmpipe; the frame's
                           // did not move measurably (the clear ran beside other work).
                           if (seaReflectionRuns(s)) targets_.clearSeaReflection();
-                          drawScissored(lastPrepare_.groundBound, targets_.size());  // the sea lies within it
+                          drawSeaLight(s);
                           glEndConditionalRender();
                           stencilOff();
                           // The terrain's shadow at the pixels the sea listed (a shadow's edge near land).
@@ -651,6 +650,24 @@ void Renderer::drawSkyMarch(const Scene& scene) {
     glUseProgram(skySparse_.get(variant, mode).id());
     drawScissored(blocks, sparse.size);
     stencilOff();
+}
+
+// The water's light (ocean/sea_light.frag) at the pixels the sea's mesh marked, the open sea's
+// (OceanPass::kOpenSeaStencil: no land within reach of its reflected or sun ray, ocean/ocean.frag)
+// by the OPEN_SEA build, the rest by the whole program, each kept off the other's pixels by the early
+// stencil test: a software renderer ran the terrain reflection's and shadow's code at every sea pixel,
+// masked (`orbit`, 1280x720 on llvmpipe: the light 31 -> 23 ms, the far field's draw that marks the open
+// sea 22-25 -> 26-27). Under the sea, where the light only passes the sky on, or where the surface marks
+// no open sea (the mesh, nearer than the far field), the whole program everywhere.
+void Renderer::drawSeaLight(const Scene& scene) {
+    const bool split = openSeaSplit_ && ocean_.marksOpenSea() && !lastPrepare_.underWater;
+    // (The whole program is bound: OceanPass::useLightProgram.)
+    stencilTest(OceanPass::kSeaStencil, split ? OceanPass::kOpenSeaStencilBits : OceanPass::kSeaStencilBits);
+    drawScissored(lastPrepare_.groundBound, targets_.size());  // the sea lies within it
+    if (!split) return;
+    stencilTest(OceanPass::kOpenSeaStencil, OceanPass::kOpenSeaStencilBits);
+    ocean_.useOpenSeaLightProgram(variantFor(scene));
+    drawScissored(lastPrepare_.groundBound, targets_.size());
 }
 
 // A frame where only the clock ran, the camera under or above the cloud layer: the pixels whose ray

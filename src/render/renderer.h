@@ -209,6 +209,9 @@ public:
     // Whether the sky march splits off the blocks whose ray meets no cloud (Renderer::drawSkyMarch;
     // tests: the same frame either way).
     void setSkyMarchSplit(bool on) { skyMarchSplit_ = on; }
+    // Tests: the sea's light on the open sea by its OPEN_SEA build (the default, where the GL lets the
+    // mesh mark it: OceanPass::marksOpenSea), or the whole program on every sea pixel.
+    void setOpenSeaSplit(bool on) { openSeaSplit_ = on; }
     // Whether the terrain leaves out the sea floor's dark depths where the sea covers them (on by
     // default), for the tests that compare the two.
     void setDarkFloorCulling(bool on) { darkFloorCulling_ = on; }
@@ -273,6 +276,7 @@ private:
     void drawSpaceAround(const ScreenRect& skyBound) const;
     void drawSkyMarch(const Scene& scene);
     void drawSkyTemporalSplit(const Scene& scene);
+    void drawSeaLight(const Scene& scene);
     // Rebuilds the programs that read the atmosphere tables when the tables' sizes changed
     // (a starter refined to its target). Returns whether it did.
     bool matchAtmosphereTables();
@@ -324,6 +328,7 @@ private:
     bool seaFloorDarkStencil_ = true;
     bool sunClearStencil_ = true;
     bool skyMarchSplit_ = true;
+    bool openSeaSplit_ = true;
     bool darkFloorCulling_ = true;
     bool seaReflectionSamples_ = true;
     bool screenBounds_ = true;
