@@ -126,6 +126,10 @@ public:
     // Counts the primitives the pass's tessellation emits (GL_PRIMITIVES_GENERATED) while on;
     // lastPrimitives() is the last drawn frame's count (read back at once: tests, bench).
     void setCountPrimitives(bool on) { countPrimitives_ = on; }
+    // Tests: the grid's reflection the last flat or smooth mirror's frame formed (N x N, RGBA32F; 0 at
+    // the points ocean/grid_reflection.comp did not march).
+    const gl::Texture& gridReflection() const { return gridReflection_; }
+    int gridSize() const { return mesh_.size(); }
     long long lastPrimitives() const { return lastPrimitives_; }
     // The bounds in use (land_cull.h): continent value, slope per radian.
     double landContinent() const { return landContinent_; }
