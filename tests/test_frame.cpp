@@ -268,6 +268,40 @@ TEST(FrameUniformsTest, JitterIsAHaltonSequenceInsideThePixel) {
     }
 }
 
+TEST(FrameUniformsTest, TheViewsSidePlanesPassThroughTheFramesEdges) {
+    // Points on the rays through the middles of the frame's four edges lie on one plane each (and
+    // inside the other three); the frame's centre lies inside all four, a point past the right edge
+    // outside that edge's plane alone. A plane off by a row or column of the matrix, or not
+    // normalised, breaks these (ocean/grid_reflection.comp culls by them, in metres).
+    Camera camera;
+    camera.position = glm::dvec3(6371.0e3 + 1500.0, 200.0, -300.0);
+    camera.orientation = orientationFromAxes({0, 1, 0}, {1, 0, 0}, glm::normalize(glm::dvec3(0.2, 0.1, -1.0)));
+    const glm::ivec2 size{64, 36};
+    const FrameUniforms u = makeFrameUniforms(Scene{}, camera, size, 3, std::nullopt, glm::dvec2(0.25, -0.375));
+    const glm::dmat4 viewFromClip(u.viewFromClip);
+    auto pointAt = [&](glm::dvec2 ndc, double distance) {  // camera-relative, world axes
+        const glm::dvec4 view = viewFromClip * glm::dvec4(ndc, 0.5, 1.0);
+        return distance * glm::normalize(camera.worldFromView() * (glm::dvec3(view) / view.w));
+    };
+    auto inside = [&](int k, glm::dvec3 p) { return glm::dot(glm::dvec3(u.viewSidePlanes[k]), p) + u.viewSidePlanes[k].w; };
+    const glm::dvec2 edges[4] = {{-1, 0}, {1, 0}, {0, -1}, {0, 1}};  // x = -w, x = w, y = -w, y = w
+    for (int k = 0; k < 4; ++k) {
+        EXPECT_NEAR(glm::length(glm::dvec3(u.viewSidePlanes[k])), 1.0, 1e-6);
+        for (double d : {10.0, 5000.0}) {
+            const glm::dvec3 p = pointAt(edges[k], d);
+            EXPECT_NEAR(inside(k, p), 0.0, 1e-5 * d) << "plane " << k << " at " << d << " m";
+            for (int other = 0; other < 4; ++other) {
+                if (other == k) continue;
+                EXPECT_GT(inside(other, p), 0.1 * d) << "plane " << other << " at edge " << k;
+            }
+            EXPECT_GT(inside(k, pointAt(glm::dvec2(0.0), d)), 0.1 * d);
+        }
+    }
+    const glm::dvec3 pastRight = pointAt({1.2, 0.0}, 1000.0);
+    EXPECT_LT(inside(1, pastRight), -10.0);
+    EXPECT_GT(inside(0, pastRight), 0.0);
+}
+
 namespace {
 
 // A block's binding, size and the offsets of some members, as the driver laid them out.
@@ -307,6 +341,7 @@ TEST_F(FrameTest, BlockMirrorsMatchTheDriversLayoutAndBindings) {
     EXPECT_EQ(frame.size, static_cast<GLint>(sizeof(FrameUniforms)));
     EXPECT_EQ(memberOffset(p, "FrameBlock.cameraDepthBelowSea"), static_cast<GLint>(offsetof(FrameUniforms, cameraDepthBelowSea)));
     EXPECT_EQ(memberOffset(p, "FrameBlock.nearPlane"), static_cast<GLint>(offsetof(FrameUniforms, nearPlane)));
+    EXPECT_EQ(memberOffset(p, "FrameBlock.viewSidePlanes[0]"), static_cast<GLint>(offsetof(FrameUniforms, viewSidePlanes)));
     const gl::Program seaLight = gl::buildProgram(sources, {"sea light", {"common/fullscreen.vert", "ocean/sea_light.frag"}});
     const BlockLayout atmosphereBlock = blockLayout(seaLight.id(), "AtmosphereBlock");
     EXPECT_EQ(atmosphereBlock.binding, binding::BLOCK_ATMOSPHERE);

@@ -30,6 +30,9 @@ layout(std140, binding = BLOCK_FRAME) uniform FrameBlock {
     float previousJitterY;       // ... and y
     float temporalRefineError;   // render.temporal_refine_error (render/sky_temporal.frag)
     float viewStillSincePrevious; // 1: the camera and the sun are the previous frame's (the clock and the jitter may have moved on)
+    // The view's side planes (x = -w, x = w, y = -w, y = w of its clip space), camera-relative world
+    // axes, formed in double on the CPU: dot(p.xyz, xyz) + w is how far (m) p lies inside each.
+    vec4 viewSidePlanes[4];
 } frame;
 
 // World-oriented direction of the view ray through a point in NDC (x, y in [-1, 1]).

@@ -29,28 +29,21 @@ layout(binding = IMAGE_OCEAN_GRID_REFLECTION, rgba32f) uniform writeonly image2D
 //    amplitudes. From orbit the grid reaches behind the camera and past the view's sides: 71 % of its
 //    points at 160 x 90 (tests/test_ocean_reflections.cpp).
 bool mayBeReadAround(int x, int y, int n) {
-    dvec3 centre = gridDirection(oceanGridPoints[y * n + x]);
-    mat4 clipFromWorld = frame.clipFromView * mat4(mat3(frame.viewFromWorld));
-    vec4 planes[4];
-    for (int k = 0; k < 4; ++k) {  // w + x, w - x, w + y, w - y >= 0 inside
-        int axis = k / 2;
-        float side = (k % 2 == 0) ? 1.0 : -1.0;
-        vec4 plane = vec4(clipFromWorld[0][3], clipFromWorld[1][3], clipFromWorld[2][3], clipFromWorld[3][3]) +
-                     side * vec4(clipFromWorld[0][axis], clipFromWorld[1][axis], clipFromWorld[2][axis],
-                                 clipFromWorld[3][axis]);
-        planes[k] = plane / length(plane.xyz);  // m from the plane
+    dvec3 directions[9];  // the point's and its eight neighbours' (the centre's is [4])
+    for (int k = 0; k < 9; ++k) {
+        ivec2 q = clamp(ivec2(x + k % 3 - 1, y + k / 3 - 1), ivec2(0), ivec2(n - 1));
+        directions[k] = gridDirection(oceanGridPoints[q.y * n + q.x]);
     }
-    vec4 farthestInside = vec4(-1.0e30);  // per plane, the most any point is inside it, m
+    vec4 farthestInside = vec4(-1.0e30);  // per side plane of the view (frame.viewSidePlanes), the most any point is inside it, m
     float reach = 0.0;  // rad
-    for (int dy = -1; dy <= 1; ++dy)
-        for (int dx = -1; dx <= 1; ++dx) {
-            ivec2 q = clamp(ivec2(x + dx, y + dy), ivec2(0), ivec2(n - 1));
-            dvec3 direction = gridDirection(oceanGridPoints[q.y * n + q.x]);
-            float chord = float(length(direction - centre));
-            reach = max(reach, 2.0 * asin(min(0.5 * chord, 1.0)));
-            vec3 point = cameraRelative(direction, gridSphereRadius());
-            for (int k = 0; k < 4; ++k) farthestInside[k] = max(farthestInside[k], dot(planes[k].xyz, point) + planes[k].w);
-        }
+    for (int k = 0; k < 9; ++k) {
+        float chord = float(length(directions[k] - directions[4]));
+        reach = max(reach, 2.0 * asin(min(0.5 * chord, 1.0)));
+        vec3 point = cameraRelative(directions[k], gridSphereRadius());
+        for (int s = 0; s < 4; ++s)
+            farthestInside[s] = max(farthestInside[s], dot(frame.viewSidePlanes[s].xyz, point) + frame.viewSidePlanes[s].w);
+    }
+    dvec3 centre = directions[4];
     float radius = float(gridSphereRadius());
     float widthM = 2.0 * reach * radius * float(max(grid.stride, 1));
     float margin = widthM * widthM / (8.0 * radius) + ocean.maxWaveHeight;

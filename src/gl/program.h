@@ -28,6 +28,11 @@ inline std::string shaderPreamble() { return "#version 450 core\n"; }
 struct ShaderSources {
     std::filesystem::path root;  // the shaders/ folder
     std::string preamble;        // #version line and shared #defines
+
+    // These sources with `#define name 1` added: a program's build of its own (`if (!on)`: as they are).
+    ShaderSources withDefine(const std::string& name, bool on = true) const {
+        return on ? ShaderSources{root, preamble + "#define " + name + " 1\n"} : *this;
+    }
 };
 
 struct Program {

@@ -24,22 +24,16 @@ double seaRadiusM(const Scene& scene) { return scene.planetRadiusM() + scene.oce
 constexpr int kFlatMirrorMode = 1, kUnderWaterMode = 2, kSmoothMirrorMode = 3;
 constexpr int kGridFlatMirrorMode = 1, kGridSmoothMirrorMode = 2;  // the grid reflection program's modes
 constexpr int kGridReflectionGroup = 64;  // ocean/grid_reflection.comp's local_size_x
-
-// `sources` with `#define name 1` (none: as they are).
-gl::ShaderSources withDefine(const gl::ShaderSources& sources, const char* name) {
-    if (!name) return sources;
-    return {sources.root, sources.preamble + "#define " + name + " 1\n"};
-}
 }  // namespace
 
 OceanPass::OceanPass(const gl::ShaderSources& sources, const atmosphere::TableSizes& tables, bool stencilExport)
     : surface_(sources,
                gl::ProgramDesc{"ocean", {"ocean/ocean.vert", "ocean/ocean.tesc", "ocean/ocean.tese", "ocean/ocean.frag"}}),
-      farFieldSurface_(withDefine(withDefine(sources, "OCEAN_FAR_FIELD"), stencilExport ? "STENCIL_EXPORT" : nullptr),
+      farFieldSurface_(sources.withDefine("OCEAN_FAR_FIELD").withDefine("STENCIL_EXPORT", stencilExport),
                        gl::ProgramDesc{"ocean, far field", {"common/fullscreen.vert", "ocean/ocean.frag"}}),
       light_(sources, tables, gl::ProgramDesc{"sea light", {"common/fullscreen.vert", "ocean/sea_light.frag"}},
              {"OCEAN_FLAT_MIRROR", "UNDER_WATER", "OCEAN_SMOOTH_MIRROR"}),
-      openSeaLight_(withDefine(sources, "OPEN_SEA"), tables,
+      openSeaLight_(sources.withDefine("OPEN_SEA"), tables,
                     gl::ProgramDesc{"sea light, open sea", {"common/fullscreen.vert", "ocean/sea_light.frag"}},
                     {"OCEAN_FLAT_MIRROR", "UNDER_WATER", "OCEAN_SMOOTH_MIRROR"}),
       stencilExport_(stencilExport),
@@ -207,16 +201,19 @@ void OceanPass::drawSurface(const std::function<void()>& drawFarField) {
     glDisable(GL_DEPTH_TEST);
 }
 
+int OceanPass::lightMode(bool underWater) const {
+    return underWater ? kUnderWaterMode : smoothMirror_ ? kSmoothMirrorMode : flatMirror_ ? kFlatMirrorMode : 0;
+}
+
 void OceanPass::useLightProgram(const AtmosphereVariant& variant, bool underWater) {
     bindWavesAndBlock();
-    const int mode = underWater ? kUnderWaterMode : smoothMirror_ ? kSmoothMirrorMode : flatMirror_ ? kFlatMirrorMode : 0;
+    const int mode = lightMode(underWater);
     if (mode == kFlatMirrorMode || mode == kSmoothMirrorMode) formGridReflection(variant);
     glUseProgram(light_.get(variant, mode).id());
-    lightMode_ = mode;
 }
 
 void OceanPass::useOpenSeaLightProgram(const AtmosphereVariant& variant) {
-    glUseProgram(openSeaLight_.get(variant, lightMode_).id());
+    glUseProgram(openSeaLight_.get(variant, lightMode(false)).id());
 }
 
 }  // namespace planet

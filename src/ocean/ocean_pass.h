@@ -113,7 +113,7 @@ public:
     // openSea), where the far field's draw marks it (marksOpenSea()): kSeaStencil's bits
     // and one more, so that a test of kSeaStencil's bits alone finds every sea pixel.
     static constexpr int kOpenSeaStencil = 7;
-    static constexpr unsigned kSeaStencilBits = 3, kOpenSeaStencilBits = 7;
+    static constexpr unsigned kSeaStencilBits = kSeaStencil, kOpenSeaStencilBits = kOpenSeaStencil;
     // Tests: the patches' stride forced (1, 2, 4 or 8), or 0 (the default) to let the grid's cells
     // on screen decide above the terrain detail's reach (grid/grid_stride.h); the last prepared frame's.
     void setStrideOverride(int stride) { strideOverride_ = stride; }
@@ -137,6 +137,8 @@ public:
 
 private:
     void uploadWaves(const Scene& scene, const Camera& camera);
+    // The light program's mode (the index in AtmosphereProgram::get): under the sea, else the mirror in use.
+    int lightMode(bool underWater) const;
     void bindWavesAndBlock() const;  // the waves' buffer and the OceanBlock, for the mesh's and the light's programs
     // ocean/grid_reflection.comp over the grid's points, for the program in the flat or smooth mode.
     void formGridReflection(const AtmosphereVariant& variant);
@@ -147,7 +149,6 @@ private:
     bool farFieldAllowed_ = true;
     AtmosphereProgram light_;  // modes OCEAN_FLAT_MIRROR, UNDER_WATER (the surface seen from below), OCEAN_SMOOTH_MIRROR
     AtmosphereProgram openSeaLight_;  // its OPEN_SEA build, the same modes
-    int lightMode_ = 0;               // the last useLightProgram's
     bool stencilExport_;
     FlatMirror flatMirrorMode_ = FlatMirror::Auto;
     bool flatMirror_ = false;

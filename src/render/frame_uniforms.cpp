@@ -3,6 +3,8 @@
 #include <cmath>
 #include <limits>
 
+#include <glm/gtc/matrix_access.hpp>
+
 #include "clouds/cloud_block.h"
 
 namespace planet {
@@ -32,6 +34,15 @@ glm::dvec2 stillSampleJitter(int sample, int samples) {
     for (int i = 0; i < samples; ++i) mean += element(i) / static_cast<double>(samples);
     return element(sample) - mean;
 }
+
+namespace {
+// One side plane of a view, w + side x (axis 0) or w + side y (axis 1) >= 0 of clip = clipFromWorld p
+// (Gribb & Hartmann's extraction), as (unit normal, offset in metres).
+glm::dvec4 sidePlane(const glm::dmat4& clipFromWorld, int axis, double side) {
+    const glm::dvec4 plane = glm::row(clipFromWorld, 3) + side * glm::row(clipFromWorld, axis);
+    return plane / glm::length(glm::dvec3(plane));
+}
+}  // namespace
 
 // The camera and the sun stood still between two frames: the camera moved by less than a
 // millimetre, and it and the sun turned by less than a microradian (a camera path between two
@@ -124,6 +135,8 @@ FrameUniforms makeFrameUniforms(const Scene& scene, const Camera& camera, glm::i
     u.cameraDepthBelowSea = static_cast<float>(cameraDepthBelowSeaM(scene, camera));
     const double beforeTime = previous ? previous->time_s : scene.time_s;
     u.cloudDriftSincePrevious = glm::vec3((clouds::windDriftKm(scene) - clouds::windDriftKm(scene, beforeTime)) * 1000.0);
+    const glm::dmat4 clipFromWorld = clipFromView * glm::dmat4(glm::transpose(camera.worldFromView()));
+    for (int k = 0; k < 4; ++k) u.viewSidePlanes[k] = glm::vec4(sidePlane(clipFromWorld, k / 2, k % 2 == 0 ? 1.0 : -1.0));
     return u;
 }
 

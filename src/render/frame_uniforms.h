@@ -57,6 +57,9 @@ struct FrameUniforms {
     float viewStillSincePrevious;     // 1: the camera and the sun are the previous frame's (the clock and the
                                       // anti-aliasing's sub-pixel jitter may have moved on)
     float padding[2];
+    // The view's four side planes (x = -w, x = w, y = -w, y = w of its clip space) in camera-relative
+    // world axes, each (unit normal pointing inside, offset): a point p is dot(n, p) + d metres inside.
+    glm::vec4 viewSidePlanes[4];
 };
 static_assert(offsetof(FrameUniforms, planetCenterFromCamera) == 320 && offsetof(FrameUniforms, cameraUp) == 336 &&
                   offsetof(FrameUniforms, sunDirection) == 352 && offsetof(FrameUniforms, cameraFromPrevious) == 368 &&
@@ -64,7 +67,8 @@ static_assert(offsetof(FrameUniforms, planetCenterFromCamera) == 320 && offsetof
                   offsetof(FrameUniforms, nearPlane) == 408 && offsetof(FrameUniforms, frameIndex) == 416 &&
                   offsetof(FrameUniforms, cloudDriftSincePrevious) == 432 &&
                   offsetof(FrameUniforms, temporalRefineError) == 448 &&
-                  offsetof(FrameUniforms, viewStillSincePrevious) == 452 && sizeof(FrameUniforms) == 464,
+                  offsetof(FrameUniforms, viewStillSincePrevious) == 452 &&
+                  offsetof(FrameUniforms, viewSidePlanes) == 464 && sizeof(FrameUniforms) == 528,
               "FrameUniforms must match the std140 block in shaders/common/frame_uniforms.glsl");
 
 // The camera a previous frame was rendered with, kept in double for reprojection.

@@ -49,7 +49,7 @@ bool lightShafts(const Scene& s) { return s.terrain.light_shafts && s.terrain.sh
 // The surface light's marks (render/surface_marks.frag) in one pass where the GL lets a fragment give its own
 // stencil value (STENCIL_EXPORT), else a pass per mark.
 gl::ShaderSources surfaceMarksSources(const gl::ShaderSources& sources, bool stencilExport) {
-    return {sources.root, sources.preamble + (stencilExport ? "#define STENCIL_EXPORT 1\n" : "")};
+    return sources.withDefine("STENCIL_EXPORT", stencilExport);
 }
 
 // One invocation of the bound compute program per pixel of `list` (render/pixel_list.glsl),
@@ -182,7 +182,7 @@ Renderer::Renderer(const std::filesystem::path& shaderRoot, const atmosphere::Ta
       skyRefine_(sources_, programTables_, gl::ProgramDesc{"sky refine", {"render/sky_refine.comp"}}, {"STILL_FRAME"}),
       skySpace_(withAtmosphere(sources_, programTables_), "sky space", "render/sky_space.frag"),
       skyNoCloud_(sources_, "sky meeting no cloud", "render/sky_no_cloud.frag"),
-      skySparseNoCloud_(gl::ShaderSources{sources_.root, sources_.preamble + "#define SPARSE_LATTICE 1\n"},
+      skySparseNoCloud_(sources_.withDefine("SPARSE_LATTICE"),
                         "sky march meeting no cloud", "render/sky_no_cloud.frag"),
       antialias_(sources_, "antialias", "render/antialias.frag"),
       tonemap_(sources_, "tonemap", "render/tonemap.frag"),

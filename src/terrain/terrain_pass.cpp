@@ -98,8 +98,7 @@ void TerrainPass::prepare(const Scene& scene, const Camera& camera, const noise:
         detailLostVariance_ = baked.lostSlopeVariance;
     }
     if (scene.terrain.detail && !detailed_)
-        detailed_.emplace(gl::ShaderSources{sources_.root, sources_.preamble + "#define TERRAIN_DETAIL 1\n" +
-                                                               (nearGridOn_ ? "#define TERRAIN_NEAR_GRID 1\n" : "")},
+        detailed_.emplace(sources_.withDefine("TERRAIN_DETAIL").withDefine("TERRAIN_NEAR_GRID", nearGridOn_),
                           materialProgram(nearGridOn_ ? "ground material (TERRAIN_DETAIL, TERRAIN_NEAR_GRID)"
                                                       : "ground material (TERRAIN_DETAIL)"));
     if (scene.terrain.detail && nearGridOn_ && !nearGrid_) nearGrid_.emplace(sources_);
