@@ -198,6 +198,23 @@ TEST_F(CliTest, BenchWritesTableCsvAndPlot) {
     EXPECT_GT(w, 100);
 }
 
+TEST_F(CliTest, BenchShowsItsLinesWhileItRunsIntoAPipe) {
+    // Into a pipe (`planet bench ... | tee log`) the bench's lines come as they are written, not all at
+    // its end: its first line (written before it builds the renderer, compiles its programs and renders
+    // its frames: seconds on llvmpipe) reaches the reader well before the pipe closes. Fully buffered,
+    // every line comes at the exit, a few milliseconds before the end.
+    const std::string times = (dir / "times").string();
+    const auto r = runCommand(planet("bench --size 48x27 --frames 2 --warmup 1 --views '" PLANET_SOURCE_DIR
+                                     "/assets/views/orbit.toml' --csv '' --plot ''") +
+                              " | { IFS= read -r line; date +%s.%N > '" + times + "'; cat > /dev/null; date +%s.%N >> '" +
+                              times + "'; }");
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    std::ifstream in(times);
+    double firstLine = 0.0, end = 0.0;
+    ASSERT_TRUE(in >> firstLine >> end);
+    EXPECT_GT(end - firstLine, 0.5) << "the bench's first line reached the pipe only as it ended";
+}
+
 TEST_F(CliTest, BenchAntialiasTimesTheExplorersFrames) {
     // --antialias: each frame jittered and blended as the explorer does, so the pass "antialias"
     // runs and is timed (the bench's frames are otherwise unjittered, without it).

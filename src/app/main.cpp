@@ -1,4 +1,5 @@
 // planet: command-line front end (CLI11). See README.md for every command.
+#include <cstdio>
 #include <CLI/CLI.hpp>
 
 #include <cctype>
@@ -78,6 +79,9 @@ void addCommon(CLI::App& cmd, planet::CommonOptions& o) {
 }  // namespace
 
 int main(int argc, char** argv) {
+    // Progress and table rows a line at a time even into a file or a pipe (`planet bench ... | tee log`):
+    // a long suite would otherwise show nothing until it ends.
+    std::setvbuf(stdout, nullptr, _IOLBF, 0);
     CLI::App app{"planet " PLANET_VERSION ": real-time procedural planets on OpenGL 4.5.\n"
                  "Run with no command to open the explorer (or render a still when there is no display)."};
     app.set_version_flag("--version", std::string("planet ") + PLANET_VERSION);
