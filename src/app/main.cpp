@@ -1,9 +1,9 @@
 // planet: command-line front end (CLI11). See README.md for every command.
-#include <cstdio>
 #include <CLI/CLI.hpp>
 
 #include <cctype>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <functional>
 #include <iostream>
