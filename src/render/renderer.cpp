@@ -46,12 +46,6 @@ std::string historyKey(const Scene& scene) {
 // The sky passes' program variant with the terrain's shadows in the air (atmosphere_program.h).
 bool lightShafts(const Scene& s) { return s.terrain.light_shafts && s.terrain.shadows; }
 
-// The surface light's marks (render/surface_marks.frag) in one pass where the GL lets a fragment give its own
-// stencil value (STENCIL_EXPORT), else a pass per mark.
-gl::ShaderSources surfaceMarksSources(const gl::ShaderSources& sources, bool stencilExport) {
-    return sources.withDefine("STENCIL_EXPORT", stencilExport);
-}
-
 // One invocation of the bound compute program per pixel of `list` (render/pixel_list.glsl),
 // dispatched indirectly with the group count its listing left (none when it listed none); what
 // the invocations stored is then visible to texture reads, draws and image loads.
@@ -154,8 +148,10 @@ Renderer::Renderer(const std::filesystem::path& shaderRoot, const atmosphere::Ta
       terrain_(sources_),
       terrainShadow_(withAtmosphere(sources_, programTables_), "terrain shadow", "render/terrain_shadow.frag"),
       stencilExport_(epoxy_has_gl_extension("GL_ARB_shader_stencil_export")),
-      surfaceMarks_(withAtmosphere(surfaceMarksSources(sources_, stencilExport_), programTables_), "surface light marks",
-                    "render/surface_marks.frag"),
+      // The surface light's marks (render/surface_marks.frag) in one pass where the GL lets a fragment
+      // give its own stencil value (STENCIL_EXPORT), else a pass per mark.
+      surfaceMarks_(withAtmosphere(sources_.withDefine("STENCIL_EXPORT", stencilExport_), programTables_),
+                    "surface light marks", "render/surface_marks.frag"),
       surfaceLight_(sources_, programTables_,
                     gl::ProgramDesc{"surface light", {"common/fullscreen.vert", "render/surface_light.frag"}},
                     {"SEA_FLOOR_DARK", "SUN_CLEAR_OF_CLOUDS"}),
@@ -902,7 +898,8 @@ void Renderer::tonemapRadiance(const ImageRGBAF& radiance) {
 
 void Renderer::setStencilExport(bool on) {
     stencilExport_ = on && epoxy_has_gl_extension("GL_ARB_shader_stencil_export");
-    surfaceMarks_.program().setSources(withAtmosphere(surfaceMarksSources(sources_, stencilExport_), programTables_));
+    surfaceMarks_.program().setSources(
+        withAtmosphere(sources_.withDefine("STENCIL_EXPORT", stencilExport_), programTables_));
     surfaceMarks_.program().reloadIfChanged(true);
     if (!surfaceMarks_.program().error().empty()) throw std::runtime_error(surfaceMarks_.program().error());
 }
@@ -931,7 +928,7 @@ bool Renderer::matchAtmosphereTables() {
     const auto started = std::chrono::steady_clock::now();
     programTables_ = sizes;
     terrainShadow_.program().setSources(withAtmosphere(sources_, sizes));
-    surfaceMarks_.program().setSources(withAtmosphere(surfaceMarksSources(sources_, stencilExport_), sizes));
+    surfaceMarks_.program().setSources(withAtmosphere(sources_.withDefine("STENCIL_EXPORT", stencilExport_), sizes));
     std::vector<gl::HotProgram*> rebuilt{&terrainShadow_.program(), &surfaceMarks_.program()};
     std::vector<AtmosphereProgram*> withTables = ocean_.atmospherePrograms();
     for (AtmosphereProgram* p : {&surfaceLight_, &terrainShadowMarches_, &terrainShadowListed_, &seaReflection_,
