@@ -148,10 +148,7 @@ Renderer::Renderer(const std::filesystem::path& shaderRoot, const atmosphere::Ta
       terrain_(sources_),
       terrainShadow_(withAtmosphere(sources_, programTables_), "terrain shadow", "render/terrain_shadow.frag"),
       stencilExport_(epoxy_has_gl_extension("GL_ARB_shader_stencil_export")),
-      // The surface light's marks (render/surface_marks.frag) in one pass where the GL lets a fragment
-      // give its own stencil value (STENCIL_EXPORT), else a pass per mark.
-      surfaceMarks_(withAtmosphere(sources_.withDefine("STENCIL_EXPORT", stencilExport_), programTables_),
-                    "surface light marks", "render/surface_marks.frag"),
+      surfaceMarks_(surfaceMarksSources(programTables_), "surface light marks", "render/surface_marks.frag"),
       surfaceLight_(sources_, programTables_,
                     gl::ProgramDesc{"surface light", {"common/fullscreen.vert", "render/surface_light.frag"}},
                     {"SEA_FLOOR_DARK", "SUN_CLEAR_OF_CLOUDS"}),
@@ -896,10 +893,13 @@ void Renderer::tonemapRadiance(const ImageRGBAF& radiance) {
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
 }
 
+gl::ShaderSources Renderer::surfaceMarksSources(const atmosphere::TableSizes& sizes) const {
+    return withAtmosphere(sources_.withDefine("STENCIL_EXPORT", stencilExport_), sizes);
+}
+
 void Renderer::setStencilExport(bool on) {
     stencilExport_ = on && epoxy_has_gl_extension("GL_ARB_shader_stencil_export");
-    surfaceMarks_.program().setSources(
-        withAtmosphere(sources_.withDefine("STENCIL_EXPORT", stencilExport_), programTables_));
+    surfaceMarks_.program().setSources(surfaceMarksSources(programTables_));
     surfaceMarks_.program().reloadIfChanged(true);
     if (!surfaceMarks_.program().error().empty()) throw std::runtime_error(surfaceMarks_.program().error());
 }
@@ -928,7 +928,7 @@ bool Renderer::matchAtmosphereTables() {
     const auto started = std::chrono::steady_clock::now();
     programTables_ = sizes;
     terrainShadow_.program().setSources(withAtmosphere(sources_, sizes));
-    surfaceMarks_.program().setSources(withAtmosphere(sources_.withDefine("STENCIL_EXPORT", stencilExport_), sizes));
+    surfaceMarks_.program().setSources(surfaceMarksSources(sizes));
     std::vector<gl::HotProgram*> rebuilt{&terrainShadow_.program(), &surfaceMarks_.program()};
     std::vector<AtmosphereProgram*> withTables = ocean_.atmospherePrograms();
     for (AtmosphereProgram* p : {&surfaceLight_, &terrainShadowMarches_, &terrainShadowListed_, &seaReflection_,

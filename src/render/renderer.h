@@ -273,6 +273,9 @@ private:
     float clearSkyDepth(const Scene& scene, const Camera& camera, glm::ivec2 size, double clearKm) const;
     double clearAxisKm(const Camera& camera) const;
     void drawSurfaceLight(const Scene& scene);
+    // The surface light's marks' sources for tables of `sizes` (render/surface_marks.frag): one pass where
+    // the GL lets a fragment give its own stencil value (STENCIL_EXPORT), else a pass per mark.
+    gl::ShaderSources surfaceMarksSources(const atmosphere::TableSizes& sizes) const;
     void drawSpaceAround(const ScreenRect& skyBound) const;
     void drawSkyMarch(const Scene& scene);
     void drawSkyTemporalSplit(const Scene& scene);
