@@ -54,9 +54,23 @@ TEST(CloudModel, HeightSignalIsZeroAtTheBoundsAndOneInTheMiddle) {  // Michelic 
     EXPECT_DOUBLE_EQ(glsl::CloudHeightSignal(6362.5, 6361.0, 6364.0), 1.0);
     EXPECT_DOUBLE_EQ(glsl::CloudHeightSignal(6361.75, 6361.0, 6364.0), 0.75);  // 1 - (-0.5)^2
     EXPECT_DOUBLE_EQ(glsl::CloudHeightSignal(6000.0, 6361.0, 6364.0), 0.0);    // clamped below
-    // Eq. 14: negative texture values stay the "no cloud" marker, others scale by h.
-    EXPECT_DOUBLE_EQ(glsl::CloudDensityFromTexture(-0.3, 0.8), -1.0);
-    EXPECT_DOUBLE_EQ(glsl::CloudDensityFromTexture(0.5, 0.8), 0.4);
+    // Eq. 14 under the whole coverage: negative texture values stay the "no cloud" marker, others
+    // scale by h.
+    EXPECT_DOUBLE_EQ(glsl::CloudDensityFromTextureAndCoverage(-0.3, 0.8, 1.0), -1.0);
+    EXPECT_DOUBLE_EQ(glsl::CloudDensityFromTextureAndCoverage(0.5, 0.8, 1.0), 0.4);
+}
+
+// Eq. 14 with the weather's coverage (CloudDensityFromTextureAndCoverage): the remap after the height
+// signal, so that a cloud narrows towards its bottom and top instead of ending in a wall under a lid.
+TEST(CloudModel, UnderAPartialCoverageACloudNarrowsTowardsItsBottomAndTop) {
+    // Under a partial coverage the remap comes after h: at mid-height (h = 1) the coverage keeps the
+    // values above 1 - coverage, stretched to [0, 1] ((0.9 - 0.5) / 0.5); lower in the profile the
+    // same value is cloud no longer ((0.9 x 0.5 - 0.5) / 0.5 < 0: clamped), where h x remap(value)
+    // kept 0.5 x 0.8 = 0.4 (the wall under a flat lid); a higher one is, thinner ((1 x 0.6 - 0.5) / 0.5).
+    EXPECT_DOUBLE_EQ(glsl::CloudDensityFromTextureAndCoverage(0.9, 1.0, 0.5), 0.8);
+    EXPECT_DOUBLE_EQ(glsl::CloudDensityFromTextureAndCoverage(0.9, 0.5, 0.5), 0.0);
+    EXPECT_NEAR(glsl::CloudDensityFromTextureAndCoverage(1.0, 0.6, 0.5), 0.2, 1e-12);
+    EXPECT_DOUBLE_EQ(glsl::CloudDensityFromTextureAndCoverage(-0.3, 0.5, 0.5), -1.0);
     EXPECT_DOUBLE_EQ(glsl::CloudCoverageRemap(0.9, 0.0), 0.0);
     EXPECT_DOUBLE_EQ(glsl::CloudCoverageRemap(0.9, 1.0), 0.9);
     EXPECT_DOUBLE_EQ(glsl::CloudCoverageRemap(-1.0, 0.5), -1.0);

@@ -99,7 +99,7 @@ Number CloudDensityAndClearAt(vec3 point, Length footprintKm, INOUT(bool) weathe
 #if CLOUD_FAR_FIELD_ONLY
     return farDensity * clouds.densityScale;
 #else
-    Number near = max(CloudDensityFromTexture(CloudCoverageRemap(value, coverage), h), 0.0);  // Eq. 14
+    Number near = max(CloudDensityFromTextureAndCoverage(value, h, coverage), 0.0);  // Eq. 14
     return mix(near, farDensity, far) * clouds.densityScale;
 #endif
 }

@@ -28,12 +28,6 @@ Number CloudHeightSignal(Length r, Length bottom_radius, Length top_radius) {
     return 1.0 - x * x;
 }
 
-// Michelic Eq. 14: the density of a texture value at height signal h; -1 (no cloud, a
-// large step is safe) where the texture says so.
-Number CloudDensityFromTexture(Number texture_value, Number height_signal) {
-    return texture_value < 0.0 ? Number(-1.0) : height_signal * texture_value;
-}
-
 // Coverage applied to a texture value in [0, 1]: the value's top `coverage` fraction is
 // kept and stretched back to [0, 1] (Schneider's remap), so coverage 0 leaves no cloud and
 // coverage 1 the texture as baked. Negative values (empty space) pass through.
@@ -41,6 +35,21 @@ Number CloudCoverageRemap(Number texture_value, Number coverage) {
     if (texture_value < 0.0) return texture_value;
     if (coverage <= 0.0) return Number(0.0);
     return clamp((texture_value - (1.0 - coverage)) / coverage, Number(0.0), Number(1.0));
+}
+
+// The density of a texture value at height signal h under the local coverage: Eq. 14's h x value,
+// remapped by the coverage (CloudCoverageRemap) after h rather than before, as Schneider's clouds take
+// their height gradient. Where h is small (towards a cloud's bottom and top) a value must be high to
+// stay cloud, so a cloud narrows towards its top and bottom, and where a weather field ends (the
+// coverage falling) its flanks round off. The first form, h x remap(value), kept a cloud's cross-section
+// the same at every height: each field ended in a wall as tall as its profile, under a flat lid (at
+// 40 per km even the profile's faint top is opaque), a bank with vertical sides seen from the side (the
+// `mountains` view). With the whole coverage (1) it is Eq. 14 exactly; a narrower cloud than the volume's
+// where the coverage is partial, whose cross-section at mid-height (h = 1) is the first form's. -1 (no
+// cloud, a large step is safe) where the texture says so.
+Number CloudDensityFromTextureAndCoverage(Number texture_value, Number height_signal, Number coverage) {
+    if (texture_value < 0.0) return Number(-1.0);
+    return CloudCoverageRemap(height_signal * texture_value, coverage);
 }
 
 // The coverage at a place: the weather map's coverage there (mean 1/2 over the sphere)
